@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs the Debian packages aerobreak needs (only those missing) and builds it into build/.
+# Idempotent and quiet when everything is already there. Usage: scripts/setup.sh [--no-build]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  cmake g++ make pkg-config git ca-certificates
+  libopenmpi-dev openmpi-bin
+  libhdf5-dev hdf5-tools
+  libsqlite3-dev
+  nlohmann-json3-dev
+  libcpp-httplib-dev
+  catch2
+  libcli11-dev
+  libeigen3-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install packages" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+[[ "${1:-}" == "--no-build" ]] && exit 0
+
+build_dir=${AEROBREAK_BUILD_DIR:-build}
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build_dir" -j"$(nproc)"
+echo "setup: built $build_dir/aerobreak"
