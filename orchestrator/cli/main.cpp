@@ -4,7 +4,7 @@
 #include <iostream>
 #include <string>
 
-#include "engine/version.hpp"
+#include "engine/core/version.hpp"
 
 namespace {
 

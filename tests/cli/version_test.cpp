@@ -6,7 +6,7 @@
 #include <regex>
 #include <string>
 
-#include "engine/version.hpp"
+#include "engine/core/version.hpp"
 
 namespace {
 
