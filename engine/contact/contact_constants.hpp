@@ -1,0 +1,50 @@
+#pragma once
+
+namespace aerobreak {
+
+// Constants of one contact, fixed when the contact forms (radii, masses and materials do not
+// change during a run). The normal law fills the adhesion fields; every other law only reads.
+struct ContactConstants {
+  double radius = 0.0;            // R* = Ri Rj / (Ri + Rj); R_i for a wall
+  double mass = 0.0;              // m* = mi mj / (mi + mj); m_i for a wall
+  double modulus = 0.0;           // E*
+  double shear = 0.0;             // G*
+  double work_of_adhesion = 0.0;  // w
+
+  // Filled by the normal law:
+  double hertz_coefficient = 0.0;  // K = (4/3) E* sqrt(R*): Hertz force K delta^(3/2)
+  double equilibrium_radius = 0.0; // a0, eq 4 (JKR reference radius; 0 without adhesion)
+  double pull_off_force = 0.0;     // F_c, eq 5 (JKR), pi gamma d analogue (DMT), 0 (Hertz)
+  double critical_overlap = 0.0;   // delta_c, eq 3
+  double break_overlap = 0.0;      // the contact ends when delta < -break_overlap
+};
+
+// What the normal law hands to the other slots (DESIGN.md "Style": explicit, no shared state).
+struct NormalResponse {
+  double force = 0.0;           // elastic normal force, > 0 repulsive
+  double contact_radius = 0.0;  // a
+  double coulomb_load = 0.0;    // load that sets the friction and twisting limits, >= 0
+  double energy = 0.0;          // elastic energy stored in the normal deformation
+};
+
+}  // namespace aerobreak
+
+namespace aerobreak {
+
+// Effective radius and mass of two spheres (DESIGN.md: R* = RiRj/(Ri+Rj), m* likewise).
+inline ContactConstants sphere_pair_constants(double radius_i, double mass_i, double radius_j, double mass_j) {
+  ContactConstants c;
+  c.radius = radius_i * radius_j / (radius_i + radius_j);
+  c.mass = mass_i * mass_j / (mass_i + mass_j);
+  return c;
+}
+
+// A wall is a sphere of infinite radius and mass: R* = R_i, m* = m_i.
+inline ContactConstants sphere_wall_constants(double radius_i, double mass_i) {
+  ContactConstants c;
+  c.radius = radius_i;
+  c.mass = mass_i;
+  return c;
+}
+
+}  // namespace aerobreak

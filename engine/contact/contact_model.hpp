@@ -1,0 +1,71 @@
+#pragma once
+#include "engine/contact/contact_state.hpp"
+#include "engine/contact/dissipation.hpp"
+#include "engine/contact/tangential_mindlin.hpp"
+
+namespace aerobreak {
+
+// Relative motion of the two bodies at a contact. For a wall, j's velocities are zero.
+struct ContactMotion {
+  Vec3 normal;             // unit vector from i towards j (into the wall for a wall contact)
+  double overlap = 0.0;    // delta = Ri + Rj - r (> 0 when pressed together)
+  Vec3 velocity;           // v_i - v_j
+  Vec3 spin_i;             // w_i
+  Vec3 spin_j;             // w_j
+  // Distances from the centres to the contact point. They add up to the centre distance
+  // (R_i - delta/2 and R_j - delta/2; R_i - delta for a wall), so that the tangential force
+  // exerts no net torque on the pair and angular momentum is conserved.
+  double lever_i = 0.0;
+  double lever_j = 0.0;
+};
+
+struct ContactLoad {
+  Vec3 force_i;   // force on i; j receives -force_i
+  Vec3 torque_i;
+  Vec3 torque_j;
+};
+
+// One contact law assembled from its slots (DESIGN.md "Style"); the combination is a type, chosen
+// once per run, so the pair loop holds no model switches.
+template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
+struct ContactModel {
+  Normal normal;
+  Damping damping;
+  Tangential tangential;
+  Rolling rolling;
+  Twisting twisting;
+
+  // Fills the adhesion constants of a contact that has just formed at radius a(overlap).
+  void open(ContactState& s, double overlap) const {
+    normal.complete(s.constants);
+    s.contact_radius = normal.respond(overlap, s.constants).contact_radius;
+  }
+
+  // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
+  ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
+    const ContactConstants& c = s.constants;
+    const NormalResponse response = normal.respond(m.overlap, c);
+    const Vec3 contact_velocity = m.velocity + cross(m.lever_i * m.spin_i + m.lever_j * m.spin_j, m.normal);
+    const double approach_rate = dot(contact_velocity, m.normal);
+    const double eta = damping.coefficient(response, c);
+    tally.damping += eta * approach_rate * approach_rate * dt;
+    // eq 12: elastic (eq 5) plus viscous normal force, > 0 pushing the bodies apart
+    const double normal_force = response.force + eta * approach_rate;
+
+    const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load};
+    double energy = response.energy;
+    const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
+    const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, energy, tally);
+    const Vec3 relative_spin = m.spin_i - m.spin_j;
+    const Vec3 resistance = rolling.torque(s.rolling_displacement, relative_spin, spring, c, energy, tally) +
+                            twisting.torque(s.twist_angle, relative_spin, spring, c, energy, tally);
+    s.contact_radius = response.contact_radius;
+    s.stored_energy = energy;
+
+    const Vec3 lever_torque = cross(m.normal, tangential_force);
+    return {tangential_force - normal_force * m.normal, m.lever_i * lever_torque + resistance,
+            m.lever_j * lever_torque - resistance};
+  }
+};
+
+}  // namespace aerobreak

@@ -1,0 +1,23 @@
+#pragma once
+#include <cstdint>
+
+#include "engine/contact/contact_constants.hpp"
+#include "engine/core/vec3.hpp"
+
+namespace aerobreak {
+
+// Everything one live contact remembers between steps. Contacts live in a pool, so their history
+// survives neighbour-list rebuilds untouched.
+struct ContactState {
+  ContactConstants constants;
+  Vec3 tangential_stretch;     // Mindlin spring (eqs 11-14)
+  Vec3 rolling_displacement;   // xi (eq 18)
+  double twist_angle = 0.0;    // phi (eq 17)
+  double contact_radius = 0.0; // a at the last evaluation
+  double stored_energy = 0.0;  // elastic energy of all springs at the last evaluation
+  std::uint32_t i = 0;         // particle
+  std::uint32_t j = 0;         // second particle, or the wall index for a wall contact
+  bool with_wall = false;
+};
+
+}  // namespace aerobreak

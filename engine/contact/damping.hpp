@@ -1,0 +1,48 @@
+#pragma once
+#include <cmath>
+#include <numbers>
+
+#include "engine/contact/contact_constants.hpp"
+
+namespace aerobreak {
+
+// Normal damping laws: each returns the coefficient eta of the force eta * d(delta)/dt that is
+// added to the elastic normal force.
+
+struct NoDamping {
+  double coefficient(const NormalResponse&, const ContactConstants&) const { return 0.0; }
+};
+
+// Visco-elastic damping (Brilliantov et al. 1996; report eq 8): F = (3/2) A K sqrt(delta) d(delta)/dt
+// for a Hertz contact, i.e. eta = 2 A E* a with a = sqrt(R* delta). For adhesive contacts the
+// contact radius a of the normal law is used, so the damping acts in tension as well.
+// A (a time) is the material's dissipative constant, set by its bulk and shear viscosities.
+struct ViscoElasticDamping {
+  double dissipative_time = 0.0;  // A
+
+  double coefficient(const NormalResponse& n, const ContactConstants& c) const {
+    return 2.0 * dissipative_time * c.modulus * n.contact_radius;
+  }
+};
+
+// Tsuji damping (Tsuji, Tanaka & Ishida 1992; report eq 9): eta = alpha sqrt(m* K) delta^(1/4),
+// K = (4/3) E* sqrt(R*). delta^(1/4) is taken at the Hertz overlap a^2/R* of the current contact
+// radius, so that it stays defined in tension for adhesive contacts.
+struct TsujiDamping {
+  double alpha = 0.0;
+
+  double coefficient(const NormalResponse& n, const ContactConstants& c) const {
+    const double hertz_overlap = n.contact_radius * n.contact_radius / c.radius;
+    return alpha * std::sqrt(c.mass * c.hertz_coefficient * std::sqrt(hertz_overlap));
+  }
+};
+
+// alpha for a target coefficient of restitution e of a Hertz contact with Tsuji damping:
+// alpha = sqrt(5) |ln e| / sqrt(ln^2 e + pi^2), the form used with Hertz-Mindlin models
+// (e.g. Tsuji et al. 1992's alpha(e) curve is close to it). e is velocity independent for this law.
+inline double tsuji_alpha(double restitution) {
+  const double log_e = std::log(restitution);
+  return std::sqrt(5.0) * -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
+}
+
+}  // namespace aerobreak

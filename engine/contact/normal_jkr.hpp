@@ -1,0 +1,83 @@
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "engine/contact/contact_constants.hpp"
+
+namespace aerobreak {
+
+// Where a JKR contact in tension lets go (DESIGN.md "Contact physics").
+enum class JkrSeparation {
+  displacement,  // at delta = -delta_c (eq 3), the report's rule and the default
+  force,         // at a = a0 / 4^(1/3), where F = -F_c: the rule of some DEM codes
+};
+
+// Contact radius ratio x = a/a0 on the stable JKR branch for the overlap ratio D = delta R*/a0^2.
+// Eq 2 in these variables reads y^4 - (2/3) y - D = 0 with y = sqrt(x). Adding 2 m y^2 + m^2 to
+// both sides makes the right side a perfect square when m solves the resolvent cubic
+// m^3 + D m - 1/18 = 0; then y = [sqrt(2m) + sqrt(2 sqrt(2) / (3 sqrt(m)) - 2m)] / 2.
+// The cubic has one real root for D > -1/(2 6^(1/3)) (= -delta_c R*/a0^2); Cardano's form is
+// rearranged as m = (u^3 - v^3) / (u^2 + u v + v^2) with u^3 - v^3 = 1/18, which has no
+// cancellation for any D. Closed form: no iteration in the pair loop.
+inline double jkr_radius_ratio(double overlap_ratio) {
+  const double d = overlap_ratio;
+  const double s = std::sqrt(std::max(0.0, 1.0 / 1296.0 + d * d * d / 27.0));
+  const double u = std::cbrt(1.0 / 36.0 + s);
+  const double v = d / (3.0 * u);
+  const double m = (1.0 / 18.0) / (u * u + u * v + v * v);
+  const double root_m = std::sqrt(m);
+  const double inner = std::max(0.0, 2.0 * std::numbers::sqrt2 / (3.0 * root_m) - 2.0 * m);
+  const double y = 0.5 * (std::numbers::sqrt2 * root_m + std::sqrt(inner));
+  return y * y;
+}
+
+// Overlap ratio delta R*/a0^2 of the radius ratio x (eq 2 with eq 3 inserted).
+inline double jkr_overlap_ratio(double x) { return x * x - (2.0 / 3.0) * std::sqrt(x); }
+
+// Normal JKR law (Johnson, Kendall & Roberts 1971; report eqs 1-5) in the general form of
+// DESIGN.md: F(a) = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3), delta(a) = a^2/R* - sqrt(2 pi w a/E*).
+struct JkrNormal {
+  JkrSeparation separation = JkrSeparation::displacement;
+
+  static constexpr bool adhesive = true;
+
+  void complete(ContactConstants& c) const {
+    c.hertz_coefficient = 4.0 / 3.0 * c.modulus * std::sqrt(c.radius);
+    // eq 4: a0 = (9 pi w R*^2 / (2 E*))^(1/3)
+    c.equilibrium_radius =
+        std::cbrt(9.0 * std::numbers::pi * c.work_of_adhesion * c.radius * c.radius / (2.0 * c.modulus));
+    // eq 5: F_c = 1.5 pi w R* (= 3 pi gamma d / 4 for identical spheres)
+    c.pull_off_force = 1.5 * std::numbers::pi * c.work_of_adhesion * c.radius;
+    const double a0_squared_over_r = c.equilibrium_radius * c.equilibrium_radius / c.radius;
+    // eq 3: delta_c = a0^2 / (2 6^(1/3) R*) (= 2 a0^2 / (d 6^(1/3)) for identical spheres)
+    c.critical_overlap = a0_squared_over_r / (2.0 * std::cbrt(6.0));
+    c.break_overlap = separation == JkrSeparation::displacement
+                          ? c.critical_overlap
+                          : -a0_squared_over_r * jkr_overlap_ratio(std::pow(4.0, -1.0 / 3.0));
+  }
+
+  NormalResponse respond(double delta, const ContactConstants& c) const {
+    const double a0 = c.equilibrium_radius;
+    const double x = jkr_radius_ratio(delta * c.radius / (a0 * a0));
+    const double x_three_halves = x * std::sqrt(x);
+    NormalResponse r;
+    // eq 5: F / F_c = 4 [(a/a0)^3 - (a/a0)^(3/2)]
+    r.force = 4.0 * c.pull_off_force * (x * x * x - x_three_halves);
+    r.contact_radius = a0 * x;
+    // eq 14: the friction limit is mu (F_n + 2 F_c)
+    r.coulomb_load = std::max(0.0, r.force + 2.0 * c.pull_off_force);
+    r.energy = 4.0 * c.pull_off_force * a0 * a0 / c.radius * (energy_primitive(x) - energy_primitive(touch_ratio()));
+    return r;
+  }
+
+  // Work done against F along eq 2, from touching (delta = 0) to the radius ratio x:
+  // U = integral F d(delta) = 4 F_c a0^2/R* [P(x) - P(x_touch)], P = (2/5)x^5 - (2/3)x^(7/2) + x^2/6.
+  static double energy_primitive(double x) {
+    return 0.4 * x * x * x * x * x - (2.0 / 3.0) * x * x * x * std::sqrt(x) + x * x / 6.0;
+  }
+  // a/a0 at delta = 0: x^(3/2) = 2/3.
+  static double touch_ratio() { return std::cbrt(4.0 / 9.0); }
+};
+
+}  // namespace aerobreak

@@ -1,0 +1,48 @@
+#pragma once
+#include <cmath>
+
+#include "engine/contact/tangential_mindlin.hpp"
+
+namespace aerobreak {
+
+struct NoRolling {
+  Vec3 torque(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
+    return {};
+  }
+};
+
+// Rolling resistance of sintered contacts (report section 2.2, eq 18, after Zhao & Marshall 2008
+// and Marshall 2009): rolling displacement xi accumulated from the rolling velocity
+// v_L = -R* (w_i - w_j) x n, rolling stiffness k_r = 4 F_c (a/a0)^(3/2), torque on i
+// M = k_r n x xi with |M| <= k_r xi_crit: xi is held at length xi_crit while the contact rolls on.
+// The spring energy is k_r |xi|^2 / (2 R*), so that M does the work of the spring exactly.
+struct RollingResistance {
+  double critical_displacement = 0.0;  // xi_crit
+
+  Vec3 torque(Vec3& displacement, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
+              double& energy, DissipationTally& tally) const {
+    if (c.pull_off_force <= 0.0) return {};
+    displacement = rotate_into_plane(displacement, s.normal);
+    const double stiffness = rolling_stiffness(s.contact_radius, c);
+    const double previous_stiffness = rolling_stiffness(s.previous_radius, c);
+    const double compliance = 0.5 / c.radius;
+    tally.stiffness_work += compliance * (stiffness - previous_stiffness) * norm2(displacement);
+    const Vec3 before = displacement;
+    const Vec3 increment = -c.radius * cross(relative_spin, s.normal) * s.dt;
+    displacement += increment;
+    const double length2 = norm2(displacement);
+    if (length2 > critical_displacement * critical_displacement) {
+      displacement *= critical_displacement / std::sqrt(length2);
+      tally.rolling += slip_dissipation(2.0 * compliance * stiffness, before, increment, displacement);
+    }
+    energy += compliance * stiffness * norm2(displacement);
+    return stiffness * cross(s.normal, displacement);
+  }
+
+  static double rolling_stiffness(double a, const ContactConstants& c) {
+    const double x = a / c.equilibrium_radius;
+    return 4.0 * c.pull_off_force * x * std::sqrt(x);
+  }
+};
+
+}  // namespace aerobreak

@@ -1,0 +1,54 @@
+#pragma once
+#include <cmath>
+
+#include "engine/contact/contact_constants.hpp"
+#include "engine/contact/dissipation.hpp"
+#include "engine/contact/spring.hpp"
+
+namespace aerobreak {
+
+// What a tangential, rolling or twisting law reads of the current contact.
+struct SpringContext {
+  Vec3 normal;                  // unit normal, from i to j
+  double dt = 0.0;
+  double contact_radius = 0.0;  // a, this step
+  double previous_radius = 0.0; // a, last step (for the stiffness change)
+  double coulomb_load = 0.0;    // F_n + 2 F_c (eq 14), from the normal law
+};
+
+struct NoTangential {
+  Vec3 force(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
+    return {};
+  }
+};
+
+// Mindlin no-slip spring with Coulomb slip (report eqs 10-14). k_t = 8 G* a, which is eq 11,
+// k_t = 2G/(2-nu) sqrt(d delta), for identical spheres with a = sqrt(R* delta). The spring
+// stretch is the contact history; |F_t| <= mu (F_n + 2 F_c) (eq 14). Tangential damping: none
+// (as in the report).
+struct MindlinTangential {
+  double friction = 0.0;  // mu
+
+  // stretch: the history; slip_velocity: tangential velocity of i's contact point relative to j's.
+  // Returns the tangential force on i; adds the spring's energy to `energy`.
+  Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s, const ContactConstants& c,
+             double& energy, DissipationTally& tally) const {
+    stretch = rotate_into_plane(stretch, s.normal);
+    const double stiffness = 8.0 * c.shear * s.contact_radius;
+    const double previous_stiffness = 8.0 * c.shear * s.previous_radius;
+    tally.stiffness_work += 0.5 * (stiffness - previous_stiffness) * norm2(stretch);
+    const Vec3 before = stretch;
+    const Vec3 increment = slip_velocity * s.dt;
+    stretch += increment;
+    const double limit = friction * s.coulomb_load;
+    const double trial = stiffness * std::sqrt(norm2(stretch));
+    if (trial > limit) {
+      stretch *= trial > 0.0 ? limit / trial : 0.0;
+      tally.friction += slip_dissipation(stiffness, before, increment, stretch);
+    }
+    energy += 0.5 * stiffness * norm2(stretch);
+    return -stiffness * stretch;
+  }
+};
+
+}  // namespace aerobreak

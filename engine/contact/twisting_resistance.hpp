@@ -1,0 +1,42 @@
+#pragma once
+#include <cmath>
+
+#include "engine/contact/spring.hpp"
+#include "engine/contact/tangential_mindlin.hpp"
+
+namespace aerobreak {
+
+struct NoTwisting {
+  Vec3 torque(double&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
+    return {};
+  }
+};
+
+// Twisting resistance (report section 2.2, eq 17, after Marshall 2009): a torsion spring on the
+// relative twist angle phi about the normal, with stiffness k_tw = k_t a^2 / 2 = 4 G* a^3 (the
+// Mindlin stiffness k_t = 8 G* a spread over the contact disk, whose polar second moment per unit
+// area is a^2/2), and the slip limit |M_t| <= (2/3) mu a (F_n + 2 F_c) of eq 17.
+struct TwistingResistance {
+  double friction = 0.0;  // mu
+
+  Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
+              double& energy, DissipationTally& tally) const {
+    const double a = s.contact_radius;
+    const double stiffness = 4.0 * c.shear * a * a * a;
+    const double a_prev = s.previous_radius;
+    tally.stiffness_work += 0.5 * (stiffness - 4.0 * c.shear * a_prev * a_prev * a_prev) * angle * angle;
+    const double before = angle;
+    const double increment = dot(relative_spin, s.normal) * s.dt;
+    angle += increment;
+    const double limit = 2.0 / 3.0 * friction * a * s.coulomb_load;
+    const double trial = stiffness * std::fabs(angle);
+    if (trial > limit) {
+      angle = trial > 0.0 ? std::copysign(limit / stiffness, angle) : 0.0;
+      tally.twisting += slip_dissipation(stiffness, {before, 0.0, 0.0}, {increment, 0.0, 0.0}, {angle, 0.0, 0.0});
+    }
+    energy += 0.5 * stiffness * angle * angle;
+    return -stiffness * angle * s.normal;
+  }
+};
+
+}  // namespace aerobreak

@@ -1,0 +1,176 @@
+#include "engine/dem/contact_forces.hpp"
+
+#include <cmath>
+#include <variant>
+
+#include "engine/contact/contact_model.hpp"
+#include "engine/contact/damping.hpp"
+#include "engine/contact/normal_dmt.hpp"
+#include "engine/contact/normal_hertz.hpp"
+#include "engine/contact/normal_jkr.hpp"
+#include "engine/contact/rolling_resistance.hpp"
+#include "engine/contact/tangential_mindlin.hpp"
+#include "engine/contact/twisting_resistance.hpp"
+
+namespace aerobreak {
+namespace {
+
+template <class Model>
+class ContactForcesFor final : public ContactForces {
+ public:
+  explicit ContactForcesFor(Model model) : model_(model) {}
+
+  void complete(ContactConstants& constants) const override { model_.normal.complete(constants); }
+  NormalResponse normal_response(double overlap, const ContactConstants& constants) const override {
+    return model_.normal.respond(overlap, constants);
+  }
+
+  void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
+                       double formation_gap, ContactLedger ledger) const override {
+    const Vec3* position = p.position.data();
+    const Vec3* velocity = p.velocity.data();
+    const Vec3* spin = p.angular_velocity.data();
+    const double* radius = p.radius.data();
+    Vec3* force = p.force.data();
+    Vec3* torque = p.torque.data();
+    const std::size_t n = pairs.particles();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Vec3 position_i = position[i];
+      const double radius_i = radius[i];
+      for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
+        const std::uint32_t j = pairs.neighbor[k];
+        const Vec3 separation = position[j] - position_i;
+        const double distance2 = norm2(separation);
+        const double touching = radius_i + radius[j];
+        std::int32_t& slot = pairs.contact[k];
+        if (slot < 0) {
+          // A contact forms when the spheres touch (delta >= 0).
+          const double reach = touching + formation_gap;
+          if (distance2 >= reach * reach) continue;
+          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), ledger);
+        }
+        ContactState& state = ledger.pool[slot];
+        const double distance = std::sqrt(distance2);
+        const double overlap = touching - distance;
+        if (overlap < -state.constants.break_overlap) {
+          close(slot, ledger);
+          continue;
+        }
+        const ContactMotion motion{separation / distance, overlap, velocity[i] - velocity[j], spin[i], spin[j],
+                                   radius_i - 0.5 * overlap, radius[j] - 0.5 * overlap};
+        const ContactLoad load = model_.evaluate(state, motion, dt, ledger.tally);
+        force[i] += load.force_i;
+        force[j] -= load.force_i;
+        torque[i] += load.torque_i;
+        torque[j] += load.torque_j;
+      }
+    }
+  }
+
+  void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
+                       const MaterialTable& materials, double dt, ContactLedger ledger) const override {
+    const std::size_t n = p.size();
+    const Vec3 into_wall = -wall.normal;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double overlap = p.radius[i] - wall.gap(p.position[i]);
+      std::int32_t& slot = slots[i];
+      if (slot < 0) {
+        if (overlap <= 0.0) continue;
+        ContactState state;
+        state.constants = sphere_wall_constants(p.radius[i], p.mass[i]);
+        set_material(state.constants, materials.pair(p.material[i], wall.material));
+        state.i = i;
+        state.j = wall_index;
+        state.with_wall = true;
+        model_.open(state, overlap);
+        slot = ledger.pool.open(state);
+        ++ledger.events.made;
+      }
+      ContactState& state = ledger.pool[slot];
+      if (overlap < -state.constants.break_overlap) {
+        close(slot, ledger);
+        continue;
+      }
+      const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
+                                 p.radius[i] - overlap, 0.0};
+      const ContactLoad load = model_.evaluate(state, motion, dt, ledger.tally);
+      p.force[i] += load.force_i;
+      p.torque[i] += load.torque_i;
+    }
+  }
+
+ private:
+  static void set_material(ContactConstants& c, const PairMaterial& m) {
+    c.modulus = m.modulus;
+    c.shear = m.shear;
+    c.work_of_adhesion = m.work_of_adhesion;
+  }
+
+  std::int32_t open_pair(const Particles& p, const MaterialTable& materials, std::uint32_t i, std::uint32_t j,
+                         double overlap, ContactLedger& ledger) const {
+    ContactState state;
+    state.constants = sphere_pair_constants(p.radius[i], p.mass[i], p.radius[j], p.mass[j]);
+    set_material(state.constants, materials.pair(p.material[i], p.material[j]));
+    state.i = i;
+    state.j = j;
+    model_.open(state, overlap);
+    ++ledger.events.made;
+    return ledger.pool.open(state);
+  }
+
+  // The energy still stored in a contact when it lets go is lost to the system (for JKR, the
+  // work of the loading/unloading hysteresis).
+  static void close(std::int32_t& slot, ContactLedger& ledger) {
+    ledger.tally.breaking += ledger.pool[slot].stored_energy;
+    ledger.pool.close(slot);
+    slot = -1;
+    ++ledger.events.broken;
+  }
+
+  Model model_;
+};
+
+using NormalChoice = std::variant<JkrNormal, DmtNormal, HertzNormal>;
+using DampingChoice = std::variant<NoDamping, ViscoElasticDamping, TsujiDamping>;
+using TangentialChoice = std::variant<NoTangential, MindlinTangential>;
+using RollingChoice = std::variant<NoRolling, RollingResistance>;
+using TwistingChoice = std::variant<NoTwisting, TwistingResistance>;
+
+NormalChoice choose_normal(const ContactModelSpec& spec, NormalLaw law) {
+  switch (law) {
+    case NormalLaw::jkr: return JkrNormal{spec.separation};
+    case NormalLaw::dmt: return DmtNormal{};
+    case NormalLaw::hertz: return HertzNormal{};
+  }
+  return JkrNormal{spec.separation};
+}
+
+DampingChoice choose_damping(const ContactModelSpec& spec) {
+  switch (spec.damping) {
+    case DampingLaw::none: return NoDamping{};
+    case DampingLaw::viscoelastic: return ViscoElasticDamping{spec.dissipative_time};
+    case DampingLaw::tsuji: return TsujiDamping{tsuji_alpha(spec.restitution)};
+  }
+  return NoDamping{};
+}
+
+}  // namespace
+
+std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal) {
+  spec.validate();
+  const TangentialChoice tangential =
+      spec.tangential ? TangentialChoice{MindlinTangential{spec.friction}} : TangentialChoice{NoTangential{}};
+  const RollingChoice rolling = spec.rolling && normal != NormalLaw::hertz
+                                    ? RollingChoice{RollingResistance{spec.critical_rolling}}
+                                    : RollingChoice{NoRolling{}};
+  const TwistingChoice twisting =
+      spec.twisting ? TwistingChoice{TwistingResistance{spec.friction}} : TwistingChoice{NoTwisting{}};
+  return std::visit(
+      [](auto n, auto d, auto t, auto r, auto w) -> std::unique_ptr<ContactForces> {
+        using Model = ContactModel<decltype(n), decltype(d), decltype(t), decltype(r), decltype(w)>;
+        return std::make_unique<ContactForcesFor<Model>>(Model{n, d, t, r, w});
+      },
+      choose_normal(spec, normal), choose_damping(spec), tangential, rolling, twisting);
+}
+
+}  // namespace aerobreak

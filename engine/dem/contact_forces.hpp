@@ -1,0 +1,51 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/contact/dissipation.hpp"
+#include "engine/contact/model_spec.hpp"
+#include "engine/core/material_table.hpp"
+#include "engine/core/particles.hpp"
+#include "engine/dem/contact_pool.hpp"
+#include "engine/dem/wall.hpp"
+#include "engine/neighbor/pair_list.hpp"
+
+namespace aerobreak {
+
+struct ContactEvents {
+  std::uint64_t made = 0;
+  std::uint64_t broken = 0;
+};
+
+// What one force pass reads and writes besides the particles.
+struct ContactLedger {
+  ContactPool& pool;
+  DissipationTally& tally;
+  ContactEvents& events;
+};
+
+// The contact force loops of one compiled law combination. Chosen once per run by
+// make_contact_forces; the loops themselves contain no model switches.
+class ContactForces {
+ public:
+  virtual ~ContactForces() = default;
+
+  // Particle-particle contacts: forms, evaluates and breaks the contacts of every listed pair.
+  // A contact forms where the surfaces are closer than formation_gap (0: where they touch).
+  virtual void add_pair_forces(Particles& particles, PairList& pairs, const MaterialTable& materials, double dt,
+                               double formation_gap, ContactLedger ledger) const = 0;
+  // Contacts of every particle with one wall; slots[i] is particle i's contact with it, or -1.
+  virtual void add_wall_forces(Particles& particles, const Wall& wall, std::uint32_t wall_index,
+                               std::vector<std::int32_t>& slots, const MaterialTable& materials, double dt,
+                               ContactLedger ledger) const = 0;
+  // Adhesion constants the normal law gives a contact with these effective properties.
+  virtual void complete(ContactConstants& constants) const = 0;
+  // The normal law's response at this overlap (for time-step estimates and diagnostics).
+  virtual NormalResponse normal_response(double overlap, const ContactConstants& constants) const = 0;
+};
+
+// `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).
+std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal);
+
+}  // namespace aerobreak

@@ -1,0 +1,39 @@
+#include "engine/dem/neighbor_list.hpp"
+
+#include <algorithm>
+
+namespace aerobreak {
+
+VerletNeighborList::VerletNeighborList(std::unique_ptr<NeighborSearch> search, double margin, double skin)
+    : search_(std::move(search)), margin_(margin), skin_(skin) {}
+
+std::vector<std::int32_t> VerletNeighborList::update(const Particles& particles, const ContactPool& pool) {
+  std::vector<std::int32_t> lost;
+  const double limit2 = 0.25 * skin_ * skin_;
+  bool stale = built_at_.size() != particles.size();
+  for (std::size_t i = 0; i < particles.size() && !stale; ++i)
+    stale = norm2(particles.position[i] - built_at_[i]) > limit2;
+  if (stale) rebuild(particles, pool, lost);
+  return lost;
+}
+
+void VerletNeighborList::rebuild(const Particles& particles, const ContactPool& pool, std::vector<std::int32_t>& lost) {
+  search_->find_pairs(particles.position, particles.radius, margin_ + skin_, pairs_);
+  built_at_ = particles.position;
+  ++builds_;
+  // Hand every live particle-particle contact its slot in the new list (rows are sorted by j).
+  for (std::size_t slot = 0; slot < pool.capacity(); ++slot) {
+    if (!pool.live(slot)) continue;
+    const ContactState& c = pool[static_cast<std::int32_t>(slot)];
+    if (c.with_wall) continue;
+    const auto first = pairs_.neighbor.begin() + pairs_.row_start[c.i];
+    const auto last = pairs_.neighbor.begin() + pairs_.row_start[c.i + 1];
+    const auto at = std::lower_bound(first, last, c.j);
+    if (at != last && *at == c.j)
+      pairs_.contact[at - pairs_.neighbor.begin()] = static_cast<std::int32_t>(slot);
+    else
+      lost.push_back(static_cast<std::int32_t>(slot));
+  }
+}
+
+}  // namespace aerobreak

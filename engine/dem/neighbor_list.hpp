@@ -1,0 +1,38 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/core/particles.hpp"
+#include "engine/dem/contact_pool.hpp"
+#include "engine/neighbor/neighbor_search.hpp"
+
+namespace aerobreak {
+
+// Verlet list with a skin: pairs within R_i + R_j + margin + skin are listed, and the list is
+// rebuilt only when some particle has moved more than skin/2 since the last build, so no pair
+// can come within `margin` unlisted. Live contacts keep their pool slots across rebuilds.
+class VerletNeighborList {
+ public:
+  VerletNeighborList(std::unique_ptr<NeighborSearch> search, double margin, double skin);
+
+  // Rebuilds if needed; returns the contacts whose pair is no longer listed (none unless the
+  // particles moved further than the skin allows), for the caller to close.
+  std::vector<std::int32_t> update(const Particles& particles, const ContactPool& pool);
+  void rebuild(const Particles& particles, const ContactPool& pool, std::vector<std::int32_t>& lost);
+
+  PairList& pairs() { return pairs_; }
+  const PairList& pairs() const { return pairs_; }
+  std::uint64_t builds() const { return builds_; }
+  double skin() const { return skin_; }
+
+ private:
+  std::unique_ptr<NeighborSearch> search_;
+  double margin_;
+  double skin_;
+  PairList pairs_;
+  std::vector<Vec3> built_at_;
+  std::uint64_t builds_ = 0;
+};
+
+}  // namespace aerobreak

@@ -1,0 +1,76 @@
+#include "engine/dem/relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "engine/dem/simulation.hpp"
+
+namespace aerobreak {
+namespace {
+
+// Constants of a contact between two of the largest spheres, as the normal law fills them.
+ContactConstants typical_contact(const Particles& p, const Material& material, const ContactModelSpec& spec) {
+  const std::size_t big = std::max_element(p.radius.begin(), p.radius.end()) - p.radius.begin();
+  ContactConstants c = sphere_pair_constants(p.radius[big], p.mass[big], p.radius[big], p.mass[big]);
+  const PairMaterial pm = combine(material, material);
+  c.modulus = pm.modulus;
+  c.shear = pm.shear;
+  c.work_of_adhesion = pm.work_of_adhesion;
+  make_contact_forces(spec, spec.normal)->complete(c);
+  return c;
+}
+
+}  // namespace
+
+RelaxationResult relax_cluster(Particles particles, const std::vector<Material>& materials,
+                               const ContactModelSpec& model, const RelaxationSettings& settings) {
+  if (particles.size() == 0) throw std::invalid_argument("relax: no particles");
+  if (materials.empty()) throw std::invalid_argument("relax: no materials");
+  ContactModelSpec spec;
+  spec.normal = model.normal;
+  spec.separation = model.separation;
+  spec.tangential = false;
+
+  const ContactConstants c = typical_contact(particles, materials[particles.material[0]], spec);
+  const double energy_scale = std::max(c.pull_off_force * c.critical_overlap, 1e-300);
+  // Equilibrium stiffness of a JKR contact, dF/d(delta) at a = a0: 3.6 F_c R* / a0^2 (eqs 2, 5).
+  const double stiffness = c.equilibrium_radius > 0.0
+                               ? 3.6 * c.pull_off_force * c.radius / (c.equilibrium_radius * c.equilibrium_radius)
+                               : c.hertz_coefficient * std::sqrt(c.radius);
+  const double critical = 2.0 * std::sqrt(stiffness * c.mass);
+  spec.damping = DampingLaw::viscoelastic;
+  spec.dissipative_time = critical / (2.0 * c.modulus * std::max(c.equilibrium_radius, 1e-3 * c.radius));
+
+  for (auto& v : particles.velocity) v = {};
+  for (auto& w : particles.angular_velocity) w = {};
+  SimulationSettings run;
+  run.initial_bond_gap = settings.bond_gap;
+  run.speed_scale = std::sqrt(4.0 * energy_scale / c.mass);
+  // Drag relaxation time of one contact period: zeta = m / tau, per unit diameter.
+  const double period = 2.0 * std::numbers::pi * std::sqrt(c.mass / stiffness);
+  run.body.langevin.drag_per_diameter = 2.0 * c.mass / period / (2.0 * c.radius * 2.0);
+  Simulation sim(std::move(particles), materials, {}, spec, run);
+
+  RelaxationResult result;
+  const double limit = settings.kinetic_tolerance * energy_scale * static_cast<double>(sim.particles().size());
+  while (sim.step_count() < settings.max_steps) {
+    sim.run(500);
+    if (sim.energy().kinetic() < limit) {
+      result.converged = true;
+      break;
+    }
+  }
+  result.steps = sim.step_count();
+  result.kinetic_per_particle = sim.energy().kinetic() / energy_scale / static_cast<double>(sim.particles().size());
+  result.contacts = sim.contacts().size();
+  result.contacts_broken = sim.pair_events().broken;
+  result.particles = sim.particles();
+  for (auto& v : result.particles.velocity) v = {};
+  for (auto& w : result.particles.angular_velocity) w = {};
+  result.particles.clear_forces();
+  return result;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,34 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "engine/contact/model_spec.hpp"
+#include "engine/core/material.hpp"
+#include "engine/core/particles.hpp"
+
+namespace aerobreak {
+
+struct RelaxationSettings {
+  double bond_gap = 1e-6;            // surfaces closer than this (in d) start bonded
+  double kinetic_tolerance = 1e-12;  // converged when kinetic energy per particle < this x F_c delta_c
+  std::int64_t max_steps = 5'000'000;
+};
+
+struct RelaxationResult {
+  Particles particles;               // relaxed positions, zero velocities
+  std::int64_t steps = 0;
+  bool converged = false;
+  double kinetic_per_particle = 0.0; // at the end, in units of F_c delta_c
+  std::size_t contacts = 0;          // particle-particle contacts at the end
+  std::uint64_t contacts_broken = 0; // during relaxation (0 for a cluster that holds together)
+};
+
+// Brings a cluster built at touching distance to mechanical equilibrium (DESIGN.md "Clusters"):
+// contacts at their equilibrium overlap, internal kinetic energy ~0. It runs the model's normal
+// law only (so no tangential, rolling or twisting spring is left stretched), with near-critical
+// visco-elastic damping of the contacts and a drag on every particle, which also stills the
+// floppy modes of the open fractal network that contact damping cannot reach.
+RelaxationResult relax_cluster(Particles particles, const std::vector<Material>& materials,
+                               const ContactModelSpec& model, const RelaxationSettings& settings = {});
+
+}  // namespace aerobreak

@@ -1,0 +1,190 @@
+#include "engine/dem/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace aerobreak {
+namespace {
+
+void validate_particles(const Particles& p, std::size_t material_count) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::string which = "particle " + std::to_string(i);
+    if (!(p.radius[i] > 0.0) || !std::isfinite(p.radius[i])) throw std::invalid_argument(which + ": radius must be > 0");
+    if (!(p.mass[i] > 0.0) || !std::isfinite(p.mass[i])) throw std::invalid_argument(which + ": mass must be > 0");
+    if (p.material[i] >= material_count) throw std::invalid_argument(which + ": unknown material index");
+    const Vec3& x = p.position[i];
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
+      throw std::invalid_argument(which + ": position is not finite");
+  }
+}
+
+Wall normalised(Wall wall, std::size_t index, std::size_t material_count) {
+  const double length = norm(wall.normal);
+  const std::string which = "wall " + std::to_string(index);
+  if (!(length > 0.0) || !std::isfinite(length)) throw std::invalid_argument(which + ": normal must be non-zero");
+  if (wall.material >= material_count) throw std::invalid_argument(which + ": unknown material index");
+  wall.normal = wall.normal / length;
+  return wall;
+}
+
+}  // namespace
+
+Simulation::Simulation(Particles particles, std::vector<Material> materials, std::vector<Wall> walls,
+                       ContactModelSpec model, SimulationSettings settings)
+    : particles_(std::move(particles)), materials_(std::move(materials)), spec_(model), settings_(settings) {
+  validate_particles(particles_, materials_.size());
+  if (!(settings_.initial_bond_gap >= 0.0)) throw std::invalid_argument("simulation: initial_bond_gap must be >= 0");
+  for (std::size_t w = 0; w < walls.size(); ++w) walls_.push_back(normalised(walls[w], w, materials_.size()));
+  pair_forces_ = make_contact_forces(spec_, spec_.normal);
+  for (const Wall& wall : walls_) {
+    wall_forces_.push_back(make_contact_forces(spec_, wall.adhesive ? spec_.normal : NormalLaw::hertz));
+    wall_slots_.emplace_back(particles_.size(), -1);
+  }
+
+  if (settings_.time_step > 0.0) {
+    dt_ = settings_.time_step;
+    estimate_.time_step = dt_;
+  } else if (particles_.size() > 0) {
+    estimate_ = recommend_time_step(particles_, materials_, walls_, spec_, speed_scale(), settings_.steps_per_period);
+    dt_ = estimate_.time_step;
+  } else {
+    throw std::invalid_argument("simulation: no particles and no time step");
+  }
+
+  double skin = settings_.skin;
+  if (skin <= 0.0 && particles_.size() > 0)
+    skin = 0.2 * *std::min_element(particles_.radius.begin(), particles_.radius.end());
+  std::unique_ptr<NeighborSearch> search;
+  if (settings_.brute_force_neighbors)
+    search = std::make_unique<BruteForceSearch>();
+  else
+    search = std::make_unique<CellListSearch>();
+  neighbors_ = std::make_unique<VerletNeighborList>(std::move(search),
+                                                    std::max(interaction_margin(), settings_.initial_bond_gap), skin);
+  compute_forces(settings_.initial_bond_gap);
+}
+
+double Simulation::speed_scale() const {
+  if (settings_.speed_scale > 0.0) return settings_.speed_scale;
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    fastest = std::max(fastest, norm(particles_.velocity[i]) + norm(particles_.angular_velocity[i]) * particles_.radius[i]);
+  const Langevin& l = settings_.body.langevin;
+  if (l.enabled()) {
+    const double lightest = *std::min_element(particles_.mass.begin(), particles_.mass.end());
+    fastest += 4.0 * std::sqrt(3.0 * l.temperature / lightest);
+  }
+  return fastest;
+}
+
+// Pairs must be listed out to the farthest distance at which they can still interact: the JKR
+// break-off overlap of the largest spheres (delta_c grows as R*^(1/3)) or the van der Waals cut-off.
+double Simulation::interaction_margin() const {
+  double margin = spec_.van_der_waals ? spec_.hamaker.cutoff : 0.0;
+  if (particles_.size() == 0) return margin;
+  const auto largest = std::max_element(particles_.radius.begin(), particles_.radius.end()) - particles_.radius.begin();
+  std::set<std::uint16_t> present(particles_.material.begin(), particles_.material.end());
+  for (auto a : present)
+    for (auto b : present) {
+      ContactConstants c = sphere_pair_constants(particles_.radius[largest], particles_.mass[largest],
+                                                 particles_.radius[largest], particles_.mass[largest]);
+      const PairMaterial& m = materials_.pair(a, b);
+      c.modulus = m.modulus;
+      c.shear = m.shear;
+      c.work_of_adhesion = m.work_of_adhesion;
+      pair_forces_->complete(c);
+      margin = std::max(margin, c.break_overlap);
+    }
+  return margin;
+}
+
+void Simulation::step() {
+  const std::size_t n = particles_.size();
+  Particles& p = particles_;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.velocity[i] += (0.5 * dt_ / p.mass[i]) * p.force[i];
+    p.angular_velocity[i] += (0.5 * dt_ / p.inertia[i]) * p.torque[i];
+    p.position[i] += dt_ * p.velocity[i];
+  }
+  time_ += dt_;
+  ++steps_;
+  compute_forces();
+  for (std::size_t i = 0; i < n; ++i) {
+    p.velocity[i] += (0.5 * dt_ / p.mass[i]) * p.force[i];
+    p.angular_velocity[i] += (0.5 * dt_ / p.inertia[i]) * p.torque[i];
+  }
+}
+
+void Simulation::run(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) step();
+}
+
+void Simulation::compute_forces(double formation_gap) {
+  particles_.clear_forces();
+  close_lost_contacts(neighbors_->update(particles_, pool_));
+  pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
+                                {pool_, tally_, pair_events_});
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    wall_forces_[w]->add_wall_forces(particles_, walls_[w], static_cast<std::uint32_t>(w), wall_slots_[w], materials_,
+                                     dt_, {pool_, tally_, wall_events_});
+  if (spec_.van_der_waals) add_van_der_waals();
+  external_work_ += add_body_forces(particles_, settings_.body, steps_, dt_);
+}
+
+void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
+  for (std::int32_t slot : lost) {
+    tally_.breaking += pool_[slot].stored_energy;
+    pool_.close(slot);
+    ++pair_events_.broken;
+  }
+}
+
+void Simulation::add_van_der_waals() {
+  const VanDerWaals& law = spec_.hamaker;
+  Particles& p = particles_;
+  const PairList& pairs = neighbors_->pairs();
+  double energy = 0.0;
+  for (std::uint32_t i = 0; i < pairs.particles(); ++i)
+    for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
+      if (pairs.contact[k] >= 0) continue;
+      const std::uint32_t j = pairs.neighbor[k];
+      const Vec3 separation = p.position[j] - p.position[i];
+      const double distance = norm(separation);
+      const double reduced = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+      const auto r = law.at_gap(distance - p.radius[i] - p.radius[j], reduced);
+      const Vec3 pull = (r.attraction / distance) * separation;
+      p.force[i] += pull;
+      p.force[j] -= pull;
+      energy += r.energy;
+    }
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (!walls_[w].adhesive) continue;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (wall_slots_[w][i] >= 0) continue;
+      const auto r = law.at_gap(walls_[w].gap(p.position[i]) - p.radius[i], p.radius[i]);
+      p.force[i] -= r.attraction * walls_[w].normal;
+      energy += r.energy;
+    }
+  }
+  van_der_waals_energy_ = energy;
+}
+
+EnergyBudget Simulation::energy() const {
+  EnergyBudget e;
+  const Particles& p = particles_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    e.translational_kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]);
+    e.rotational_kinetic += 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
+  }
+  pool_.for_each([&](const ContactState& c) { e.contact_elastic += c.stored_energy; });
+  e.van_der_waals = van_der_waals_energy_;
+  e.gravitational = gravitational_energy(p, settings_.body.gravity);
+  e.dissipation = tally_;
+  e.external_work = external_work_;
+  return e;
+}
+
+}  // namespace aerobreak

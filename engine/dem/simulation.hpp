@@ -1,0 +1,88 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/contact/model_spec.hpp"
+#include "engine/core/material_table.hpp"
+#include "engine/core/particles.hpp"
+#include "engine/dem/body_forces.hpp"
+#include "engine/dem/contact_forces.hpp"
+#include "engine/dem/energy_budget.hpp"
+#include "engine/dem/neighbor_list.hpp"
+#include "engine/dem/time_step.hpp"
+#include "engine/dem/wall.hpp"
+
+namespace aerobreak {
+
+struct SimulationSettings {
+  double time_step = 0.0;          // 0: automatic, from recommend_time_step
+  double steps_per_period = 50.0;  // safety factor of the automatic step
+  double speed_scale = 0.0;        // largest speed the automatic step must resolve; 0: from the initial state
+  double skin = 0.0;               // Verlet skin; 0: 0.2 x the smallest radius
+  bool brute_force_neighbors = false;
+  // Pairs whose surfaces are closer than this at the start are in contact from the start: a
+  // cluster built at touching distance is bonded whatever the round-off in its coordinates.
+  double initial_bond_gap = 0.0;
+  BodyForces body;
+};
+
+// A DEM run: spheres, walls, one contact model, velocity-Verlet integration of translation and
+// rotation. Forces at step n+1 use the positions x(n+1) and the half-step velocities v(n+1/2).
+class Simulation {
+ public:
+  Simulation(Particles particles, std::vector<Material> materials, std::vector<Wall> walls, ContactModelSpec model,
+             SimulationSettings settings = {});
+
+  void step();
+  void run(std::int64_t steps);
+
+  const Particles& particles() const { return particles_; }
+  // Velocities and angular velocities may be changed between steps (e.g. to launch an impact);
+  // positions may not: build a new Simulation for a new configuration.
+  Particles& particles() { return particles_; }
+
+  double time_step() const { return dt_; }
+  const TimeStepEstimate& time_step_estimate() const { return estimate_; }
+  double time() const { return time_; }
+  std::int64_t step_count() const { return steps_; }
+
+  EnergyBudget energy() const;
+  const ContactPool& contacts() const { return pool_; }
+  const ContactEvents& pair_events() const { return pair_events_; }
+  const ContactEvents& wall_events() const { return wall_events_; }
+  std::uint64_t neighbor_builds() const { return neighbors_->builds(); }
+  std::size_t neighbor_pairs() const { return neighbors_->pairs().pairs(); }
+  const std::vector<Wall>& walls() const { return walls_; }
+  const ContactModelSpec& model() const { return spec_; }
+  const MaterialTable& materials() const { return materials_; }
+
+ private:
+  void compute_forces(double formation_gap = 0.0);
+  void add_van_der_waals();
+  void close_lost_contacts(const std::vector<std::int32_t>& lost);
+  double interaction_margin() const;
+  double speed_scale() const;
+
+  Particles particles_;
+  MaterialTable materials_;
+  std::vector<Wall> walls_;
+  ContactModelSpec spec_;
+  SimulationSettings settings_;
+  std::unique_ptr<ContactForces> pair_forces_;
+  std::vector<std::unique_ptr<ContactForces>> wall_forces_;
+  std::vector<std::vector<std::int32_t>> wall_slots_;
+  std::unique_ptr<VerletNeighborList> neighbors_;
+  ContactPool pool_;
+  ContactEvents pair_events_;
+  ContactEvents wall_events_;
+  DissipationTally tally_;
+  TimeStepEstimate estimate_;
+  double dt_ = 0.0;
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  double external_work_ = 0.0;
+  double van_der_waals_energy_ = 0.0;
+};
+
+}  // namespace aerobreak
