@@ -11,6 +11,7 @@ namespace aerobreak {
 struct RelaxationSettings {
   double bond_gap = 1e-6;            // surfaces closer than this (in d) start bonded
   double kinetic_tolerance = 1e-12;  // converged when kinetic energy per particle < this x F_c delta_c
+  double force_tolerance = 1e-6;     // ... and no particle feels a net force above this x F_c
   std::int64_t max_steps = 5'000'000;
 };
 
@@ -19,6 +20,7 @@ struct RelaxationResult {
   std::int64_t steps = 0;
   bool converged = false;
   double kinetic_per_particle = 0.0; // at the end, in units of F_c delta_c
+  double largest_force = 0.0;        // largest net force on a particle at the end, in units of F_c
   std::size_t contacts = 0;          // particle-particle contacts at the end
   std::uint64_t contacts_broken = 0; // during relaxation (0 for a cluster that holds together)
 };

@@ -54,9 +54,13 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
     throw std::invalid_argument("simulation: no particles and no time step");
   }
 
+  // Automatic skin: a particle at the expected speed crosses half of it in about 20 steps, within
+  // [0.2, 1] smallest radius (a fractal cluster has few pairs per particle, so a wide skin is cheap).
   double skin = settings_.skin;
-  if (skin <= 0.0 && particles_.size() > 0)
-    skin = 0.2 * *std::min_element(particles_.radius.begin(), particles_.radius.end());
+  if (skin <= 0.0 && particles_.size() > 0) {
+    const double smallest = *std::min_element(particles_.radius.begin(), particles_.radius.end());
+    skin = std::clamp(40.0 * speed_scale() * dt_, 0.2 * smallest, smallest);
+  }
   std::unique_ptr<NeighborSearch> search;
   if (settings_.brute_force_neighbors)
     search = std::make_unique<BruteForceSearch>();

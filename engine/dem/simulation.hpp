@@ -19,7 +19,7 @@ struct SimulationSettings {
   double time_step = 0.0;          // 0: automatic, from recommend_time_step
   double steps_per_period = 50.0;  // safety factor of the automatic step
   double speed_scale = 0.0;        // largest speed the automatic step must resolve; 0: from the initial state
-  double skin = 0.0;               // Verlet skin; 0: 0.2 x the smallest radius
+  double skin = 0.0;               // Verlet skin; 0: automatic, from the speed scale and time step
   bool brute_force_neighbors = false;
   // Pairs whose surfaces are closer than this at the start are in contact from the start: a
   // cluster built at touching distance is bonded whatever the round-off in its coordinates.

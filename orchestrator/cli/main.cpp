@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/version.hpp"
+#include "orchestrator/cli/bench_command.hpp"
 
 namespace {
 
@@ -45,7 +46,7 @@ int main(int argc, char** argv) {
   add_planned(app, "study", "Submit, inspect or cancel studies on a running service", exit_code);
   add_planned(app, "impact", "Run one impact case from a case JSON file", exit_code);
   add_planned(app, "cluster", "Generate, analyse or convert fractal clusters", exit_code);
-  add_planned(app, "bench", "Measure engine speed in particle-steps per second", exit_code);
+  aerobreak::add_bench_command(app);
 
   try {
     app.parse(argc, argv);

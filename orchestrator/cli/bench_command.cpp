@@ -1,0 +1,122 @@
+#include "orchestrator/cli/bench_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/cluster/ballistic_aggregation.hpp"
+#include "engine/cluster/random_stream.hpp"
+#include "engine/core/units.hpp"
+#include "engine/core/version.hpp"
+#include "engine/dem/impact_placement.hpp"
+#include "engine/dem/relaxation.hpp"
+#include "engine/dem/simulation.hpp"
+#include "engine/io/xyz.hpp"
+
+namespace aerobreak {
+namespace {
+
+struct BenchOptions {
+  std::vector<std::size_t> sizes{1000, 4000};
+  double seconds = 5.0;
+  double speed = 0.1;
+  double gamma_over_kn = 0.001;
+  double poisson = 0.3;
+  double friction = 0.5;
+  double critical_rolling = 0.01;
+  double dissipative_time = 0.05;
+  bool wall_adhesion = true;
+  std::uint64_t seed = 1;
+  std::string export_dir;
+};
+
+ContactModelSpec full_model(const BenchOptions& o) {
+  ContactModelSpec spec;
+  spec.normal = NormalLaw::jkr;
+  spec.damping = DampingLaw::viscoelastic;
+  spec.dissipative_time = o.dissipative_time;
+  spec.tangential = true;
+  spec.friction = o.friction;
+  spec.rolling = true;
+  spec.critical_rolling = o.critical_rolling;
+  spec.twisting = true;
+  return spec;
+}
+
+void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
+  const std::filesystem::path dir(o.export_dir);
+  std::filesystem::create_directories(dir);
+  const std::string stem = "bench_N" + std::to_string(n);
+  write_xyz_cluster(dir / (stem + ".xyz"), cluster_from_particles(sim.particles()));
+  const nlohmann::json params = {
+      {"primaries", n},          {"time_step", sim.time_step()},         {"speed", o.speed},
+      {"gamma_over_kn", o.gamma_over_kn}, {"poisson_ratio", o.poisson},  {"friction", o.friction},
+      {"critical_rolling", o.critical_rolling}, {"dissipative_time", o.dissipative_time},
+      {"wall_adhesion", o.wall_adhesion},       {"skin", 0.2 * 0.5},     {"seed", o.seed}};
+  std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
+}
+
+void run_bench(const BenchOptions& o) {
+  const Material material = reduced_material(o.gamma_over_kn, o.poisson);
+  std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; JKR + visco-elastic damping "
+              "+ Mindlin + rolling + twisting; gamma/k_n = %g; one core\n",
+              std::string(version()).c_str(), o.speed, o.gamma_over_kn);
+  std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s\n", "N", "contacts", "steps", "dt [tau]", "seconds",
+              "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds");
+  for (std::size_t n : o.sizes) {
+    const Cluster cluster = ballistic_cluster_cluster_aggregation({n, 1.0, 1.0}, o.seed);
+    const RelaxationResult relaxed =
+        relax_cluster(particles_from_cluster(cluster, material.density), {material}, full_model(o));
+    RandomStream orientation(o.seed + 1);
+    Wall wall;
+    wall.adhesive = o.wall_adhesion;
+    Particles placed = place_for_impact(relaxed.particles, orientation.rotation(), wall, 0.01, {0.0, 0.0, -o.speed});
+    SimulationSettings settings;
+    settings.initial_bond_gap = 1e-6;
+    settings.speed_scale = o.speed;
+    Simulation sim(std::move(placed), {material}, {wall}, full_model(o), settings);
+    if (!o.export_dir.empty()) export_case(o, sim, n);
+
+    sim.run(100);  // warm-up: caches, first contacts with the wall
+    const auto rebuilds0 = sim.neighbor_builds();
+    const auto start = std::chrono::steady_clock::now();
+    std::int64_t steps = 0;
+    double elapsed = 0.0;
+    while (elapsed < o.seconds) {
+      sim.run(200);
+      steps += 200;
+      elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const double rate = static_cast<double>(n) * static_cast<double>(steps) / elapsed;
+    std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu\n", n, sim.contacts().size(),
+                static_cast<long long>(steps), sim.time_step(), elapsed, rate, 1e9 / rate,
+                static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
+                static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0));
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto options = std::make_shared<BenchOptions>();
+  auto* bench = app.add_subcommand("bench", "Measure engine speed in particle-steps per second");
+  bench->add_option("--sizes", options->sizes, "Cluster sizes (primaries)")->delimiter(',')->capture_default_str();
+  bench->add_option("--seconds", options->seconds, "Timed seconds per size")->check(CLI::PositiveNumber)->capture_default_str();
+  bench->add_option("--speed", options->speed, "Impact speed, d/tau (tau = sqrt(m/k_n))")->check(CLI::PositiveNumber)->capture_default_str();
+  bench->add_option("--gamma-over-kn", options->gamma_over_kn, "Surface energy over normal stiffness (eq 7)")->check(CLI::PositiveNumber)->capture_default_str();
+  bench->add_option("--friction", options->friction, "Friction coefficient mu")->check(CLI::NonNegativeNumber)->capture_default_str();
+  bench->add_option("--xi-crit", options->critical_rolling, "Critical rolling displacement, d")->check(CLI::PositiveNumber)->capture_default_str();
+  bench->add_option("--damping", options->dissipative_time, "Visco-elastic dissipative time A, tau")->check(CLI::NonNegativeNumber)->capture_default_str();
+  bench->add_flag("!--no-wall-adhesion", options->wall_adhesion, "Wall without adhesion (Hertz)");
+  bench->add_option("--seed", options->seed, "Seed of the cluster and its orientation")->capture_default_str();
+  bench->add_option("--export", options->export_dir, "Write each placed cluster (XYZ) and its parameters (JSON) here, for the LAMMPS peer run");
+  bench->callback([options] { run_bench(*options); });
+}
+
+}  // namespace aerobreak
