@@ -23,7 +23,9 @@ struct ContactConstants {
 struct NormalResponse {
   double force = 0.0;           // elastic normal force, > 0 repulsive
   double contact_radius = 0.0;  // a
-  double coulomb_load = 0.0;    // load that sets the friction and twisting limits, >= 0
+  // Load that sets the friction and twisting limits, >= 0: F_n + 2 F_c for JKR (eq 14), the
+  // Hertz part F_n + F_c for DMT, F_n for Hertz.
+  double coulomb_load = 0.0;
   double energy = 0.0;          // elastic energy stored in the normal deformation
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 #include "engine/contact/contact_state.hpp"
 #include "engine/contact/dissipation.hpp"
+#include "engine/contact/rolling_resistance.hpp"
 #include "engine/contact/tangential_mindlin.hpp"
 
 namespace aerobreak {
@@ -18,6 +19,15 @@ struct ContactMotion {
   double lever_i = 0.0;
   double lever_j = 0.0;
 };
+
+// Energy a contact takes with it when it lets go: what its springs stored at the last evaluation,
+// plus the elastic work over the final step, trapezoidal as velocity Verlet applies it with the
+// force falling to zero; and the last damping force's work over its final half step.
+inline void book_release(const ContactState& s, double overlap, double approach_rate, double dt,
+                         DissipationTally& tally) {
+  tally.breaking += s.stored_energy + 0.5 * s.elastic_force * (overlap - s.overlap);
+  tally.damping += 0.5 * s.damping_force * approach_rate * dt;
+}
 
 struct ContactLoad {
   Vec3 force_i;   // force on i; j receives -force_i
@@ -39,6 +49,8 @@ struct ContactModel {
   void open(ContactState& s, double overlap) const {
     normal.complete(s.constants);
     s.contact_radius = normal.respond(overlap, s.constants).contact_radius;
+    s.overlap = overlap;
+    if (s.constants.pull_off_force > 0.0) s.rolling_stiffness = RollingResistance::rolling_stiffness(s.contact_radius, s.constants);
   }
 
   // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
@@ -47,20 +59,25 @@ struct ContactModel {
     const NormalResponse response = normal.respond(m.overlap, c);
     const Vec3 contact_velocity = m.velocity + cross(m.lever_i * m.spin_i + m.lever_j * m.spin_j, m.normal);
     const double approach_rate = dot(contact_velocity, m.normal);
-    const double eta = damping.coefficient(response, c);
-    tally.damping += eta * approach_rate * approach_rate * dt;
+    const double damping_force = damping.coefficient(response, c) * approach_rate;
+    // Work of the damping force over the last step, trapezoidal in the force as velocity Verlet
+    // applies it: the previous force acted from v(n-1/2) to v(n+1/2), this one from v(n+1/2) on.
+    tally.damping += 0.5 * (s.damping_force + damping_force) * approach_rate * dt;
+    s.damping_force = damping_force;
     // eq 12: elastic (eq 5) plus viscous normal force, > 0 pushing the bodies apart
-    const double normal_force = response.force + eta * approach_rate;
+    const double normal_force = response.force + damping_force;
 
     const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load};
     double energy = response.energy;
     const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
     const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, energy, tally);
     const Vec3 relative_spin = m.spin_i - m.spin_j;
-    const Vec3 resistance = rolling.torque(s.rolling_displacement, relative_spin, spring, c, energy, tally) +
+    const Vec3 resistance = rolling.torque(s.rolling_displacement, s.rolling_stiffness, relative_spin, spring, c, energy, tally) +
                             twisting.torque(s.twist_angle, relative_spin, spring, c, energy, tally);
     s.contact_radius = response.contact_radius;
     s.stored_energy = energy;
+    s.overlap = m.overlap;
+    s.elastic_force = response.force;
 
     const Vec3 lever_torque = cross(m.normal, tangential_force);
     return {tangential_force - normal_force * m.normal, m.lever_i * lever_torque + resistance,

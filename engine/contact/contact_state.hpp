@@ -15,6 +15,10 @@ struct ContactState {
   double twist_angle = 0.0;    // phi (eq 17)
   double contact_radius = 0.0; // a at the last evaluation
   double stored_energy = 0.0;  // elastic energy of all springs at the last evaluation
+  double overlap = 0.0;        // delta at the last evaluation
+  double elastic_force = 0.0;  // elastic normal force at the last evaluation
+  double damping_force = 0.0;  // normal damping force at the last evaluation (for its work)
+  double rolling_stiffness = 0.0;  // k_r at the last evaluation (eq 18)
   std::uint32_t i = 0;         // particle
   std::uint32_t j = 0;         // second particle, or the wall index for a wall contact
   bool with_wall = false;

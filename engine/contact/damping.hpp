@@ -38,8 +38,9 @@ struct TsujiDamping {
 };
 
 // alpha for a target coefficient of restitution e of a Hertz contact with Tsuji damping:
-// alpha = sqrt(5) |ln e| / sqrt(ln^2 e + pi^2), the form used with Hertz-Mindlin models
-// (e.g. Tsuji et al. 1992's alpha(e) curve is close to it). e is velocity independent for this law.
+// alpha = sqrt(5) |ln e| / sqrt(ln^2 e + pi^2). Exact for Hertz: with d(tau) = delta^(1/4) dt the
+// Hertz-Tsuji impact becomes a linear damped oscillator in delta^(5/4), whose restitution is
+// exp(-pi beta / sqrt(1 - beta^2)); hence e is also independent of the impact speed.
 inline double tsuji_alpha(double restitution) {
   const double log_e = std::log(restitution);
   return std::sqrt(5.0) * -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);

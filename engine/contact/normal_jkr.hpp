@@ -20,7 +20,8 @@ enum class JkrSeparation {
 // The cubic has one real root for D > -1/(2 6^(1/3)) (= -delta_c R*/a0^2); Cardano's form is
 // rearranged as m = (u^3 - v^3) / (u^2 + u v + v^2) with u^3 - v^3 = 1/18, which has no
 // cancellation for any D. Closed form: no iteration in the pair loop.
-inline double jkr_radius_ratio(double overlap_ratio) {
+// Returns y = sqrt(a/a0); jkr_radius_ratio gives x = a/a0 = y^2.
+inline double jkr_root_radius_ratio(double overlap_ratio) {
   const double d = overlap_ratio;
   const double s = std::sqrt(std::max(0.0, 1.0 / 1296.0 + d * d * d / 27.0));
   const double u = std::cbrt(1.0 / 36.0 + s);
@@ -28,7 +29,11 @@ inline double jkr_radius_ratio(double overlap_ratio) {
   const double m = (1.0 / 18.0) / (u * u + u * v + v * v);
   const double root_m = std::sqrt(m);
   const double inner = std::max(0.0, 2.0 * std::numbers::sqrt2 / (3.0 * root_m) - 2.0 * m);
-  const double y = 0.5 * (std::numbers::sqrt2 * root_m + std::sqrt(inner));
+  return 0.5 * (std::numbers::sqrt2 * root_m + std::sqrt(inner));
+}
+
+inline double jkr_radius_ratio(double overlap_ratio) {
+  const double y = jkr_root_radius_ratio(overlap_ratio);
   return y * y;
 }
 
@@ -59,25 +64,28 @@ struct JkrNormal {
 
   NormalResponse respond(double delta, const ContactConstants& c) const {
     const double a0 = c.equilibrium_radius;
-    const double x = jkr_radius_ratio(delta * c.radius / (a0 * a0));
-    const double x_three_halves = x * std::sqrt(x);
+    const double y = jkr_root_radius_ratio(delta * c.radius / (a0 * a0));
+    const double x = y * y;
+    const double x_three_halves = x * y;
     NormalResponse r;
     // eq 5: F / F_c = 4 [(a/a0)^3 - (a/a0)^(3/2)]
     r.force = 4.0 * c.pull_off_force * (x * x * x - x_three_halves);
     r.contact_radius = a0 * x;
     // eq 14: the friction limit is mu (F_n + 2 F_c)
     r.coulomb_load = std::max(0.0, r.force + 2.0 * c.pull_off_force);
-    r.energy = 4.0 * c.pull_off_force * a0 * a0 / c.radius * (energy_primitive(x) - energy_primitive(touch_ratio()));
+    r.energy = 4.0 * c.pull_off_force * a0 * a0 / c.radius * (energy_primitive(x, y) - kTouchPrimitive);
     return r;
   }
 
-  // Work done against F along eq 2, from touching (delta = 0) to the radius ratio x:
+  // Work done against F along eq 2, from touching (delta = 0) to the radius ratio x = y^2:
   // U = integral F d(delta) = 4 F_c a0^2/R* [P(x) - P(x_touch)], P = (2/5)x^5 - (2/3)x^(7/2) + x^2/6.
-  static double energy_primitive(double x) {
-    return 0.4 * x * x * x * x * x - (2.0 / 3.0) * x * x * x * std::sqrt(x) + x * x / 6.0;
+  static double energy_primitive(double x, double y) {
+    return 0.4 * x * x * x * x * x - (2.0 / 3.0) * x * x * x * y + x * x / 6.0;
   }
-  // a/a0 at delta = 0: x^(3/2) = 2/3.
-  static double touch_ratio() { return std::cbrt(4.0 / 9.0); }
+  // a/a0 at delta = 0 solves x^(3/2) = 2/3, so x^3 = 4/9 and P there is
+  // x^2 [(2/5)(4/9) - (2/3)(2/3) + 1/6] = -(1/10) x^2.
+  static constexpr double kTouchRatioSquared = 0.582386976490865913;  // (4/9)^(2/3)
+  static constexpr double kTouchPrimitive = -0.1 * kTouchRatioSquared;
 };
 
 }  // namespace aerobreak

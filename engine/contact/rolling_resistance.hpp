@@ -6,7 +6,8 @@
 namespace aerobreak {
 
 struct NoRolling {
-  Vec3 torque(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
+  Vec3 torque(Vec3&, double&, const Vec3&, const SpringContext&, const ContactConstants&, double&,
+              DissipationTally&) const {
     return {};
   }
 };
@@ -19,12 +20,12 @@ struct NoRolling {
 struct RollingResistance {
   double critical_displacement = 0.0;  // xi_crit
 
-  Vec3 torque(Vec3& displacement, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
-              double& energy, DissipationTally& tally) const {
+  // previous_stiffness: k_r of the last step, replaced by this step's.
+  Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin, const SpringContext& s,
+              const ContactConstants& c, double& energy, DissipationTally& tally) const {
     if (c.pull_off_force <= 0.0) return {};
     displacement = rotate_into_plane(displacement, s.normal);
     const double stiffness = rolling_stiffness(s.contact_radius, c);
-    const double previous_stiffness = rolling_stiffness(s.previous_radius, c);
     const double compliance = 0.5 / c.radius;
     tally.stiffness_work += compliance * (stiffness - previous_stiffness) * norm2(displacement);
     const Vec3 before = displacement;
@@ -36,6 +37,7 @@ struct RollingResistance {
       tally.rolling += slip_dissipation(2.0 * compliance * stiffness, before, increment, displacement);
     }
     energy += compliance * stiffness * norm2(displacement);
+    previous_stiffness = stiffness;
     return stiffness * cross(s.normal, displacement);
   }
 

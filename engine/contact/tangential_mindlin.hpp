@@ -13,7 +13,7 @@ struct SpringContext {
   double dt = 0.0;
   double contact_radius = 0.0;  // a, this step
   double previous_radius = 0.0; // a, last step (for the stiffness change)
-  double coulomb_load = 0.0;    // F_n + 2 F_c (eq 14), from the normal law
+  double coulomb_load = 0.0;    // from the normal law: F_n + 2 F_c for JKR (eq 14)
 };
 
 struct NoTangential {

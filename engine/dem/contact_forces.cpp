@@ -52,11 +52,13 @@ class ContactForcesFor final : public ContactForces {
         ContactState& state = ledger.pool[slot];
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
+        const Vec3 normal = separation / distance;
+        const Vec3 relative_velocity = velocity[i] - velocity[j];
         if (overlap < -state.constants.break_overlap) {
-          close(slot, ledger);
+          close(slot, overlap, dot(relative_velocity, normal), dt, ledger);
           continue;
         }
-        const ContactMotion motion{separation / distance, overlap, velocity[i] - velocity[j], spin[i], spin[j],
+        const ContactMotion motion{normal, overlap, relative_velocity, spin[i], spin[j],
                                    radius_i - 0.5 * overlap, radius[j] - 0.5 * overlap};
         const ContactLoad load = model_.evaluate(state, motion, dt, ledger.tally);
         force[i] += load.force_i;
@@ -85,10 +87,11 @@ class ContactForcesFor final : public ContactForces {
         model_.open(state, overlap);
         slot = ledger.pool.open(state);
         ++ledger.events.made;
+        hand_over(ledger, -overlap, state.constants.radius, +1.0);
       }
       ContactState& state = ledger.pool[slot];
       if (overlap < -state.constants.break_overlap) {
-        close(slot, ledger);
+        close(slot, overlap, dot(p.velocity[i], into_wall), dt, ledger);
         continue;
       }
       const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
@@ -115,16 +118,24 @@ class ContactForcesFor final : public ContactForces {
     state.j = j;
     model_.open(state, overlap);
     ++ledger.events.made;
+    hand_over(ledger, -overlap, state.constants.radius, +1.0);
     return ledger.pool.open(state);
   }
 
   // The energy still stored in a contact when it lets go is lost to the system (for JKR, the
   // work of the loading/unloading hysteresis).
-  static void close(std::int32_t& slot, ContactLedger& ledger) {
-    ledger.tally.breaking += ledger.pool[slot].stored_energy;
+  static void close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) {
+    const ContactState& state = ledger.pool[slot];
+    book_release(state, overlap, approach_rate, dt, ledger.tally);
+    hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
     slot = -1;
     ++ledger.events.broken;
+  }
+
+  // A pair entering contact leaves the van der Waals sum (sign +1); one leaving re-enters it (-1).
+  static void hand_over(ContactLedger& ledger, double gap, double reduced_radius, double sign) {
+    if (ledger.van_der_waals) ledger.tally.van_der_waals_handover += sign * ledger.van_der_waals->at_gap(gap, reduced_radius).energy;
   }
 
   Model model_;

@@ -23,6 +23,7 @@ struct ContactLedger {
   ContactPool& pool;
   DissipationTally& tally;
   ContactEvents& events;
+  const VanDerWaals* van_der_waals = nullptr;  // set when the long-range law is on for these contacts
 };
 
 // The contact force loops of one compiled law combination. Chosen once per run by

@@ -17,7 +17,8 @@ struct EnergyBudget {
   double kinetic() const { return translational_kinetic + rotational_kinetic; }
   double mechanical() const { return kinetic() + contact_elastic + van_der_waals + gravitational; }
   double balance() const {
-    return mechanical() + dissipation.dissipated() - dissipation.stiffness_work - external_work;
+    return mechanical() + dissipation.dissipated() + dissipation.van_der_waals_handover - dissipation.stiffness_work -
+           external_work;
   }
 };
 

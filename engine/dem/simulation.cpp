@@ -1,5 +1,7 @@
 #include "engine/dem/simulation.hpp"
 
+#include "engine/contact/contact_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -129,18 +131,25 @@ void Simulation::run(std::int64_t steps) {
 void Simulation::compute_forces(double formation_gap) {
   particles_.clear_forces();
   close_lost_contacts(neighbors_->update(particles_, pool_));
+  const VanDerWaals* long_range = spec_.van_der_waals ? &spec_.hamaker : nullptr;
   pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
-                                {pool_, tally_, pair_events_});
+                                {pool_, tally_, pair_events_, long_range});
   for (std::size_t w = 0; w < walls_.size(); ++w)
     wall_forces_[w]->add_wall_forces(particles_, walls_[w], static_cast<std::uint32_t>(w), wall_slots_[w], materials_,
-                                     dt_, {pool_, tally_, wall_events_});
+                                     dt_, {pool_, tally_, wall_events_, walls_[w].adhesive ? long_range : nullptr});
   if (spec_.van_der_waals) add_van_der_waals();
   external_work_ += add_body_forces(particles_, settings_.body, steps_, dt_);
 }
 
 void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
   for (std::int32_t slot : lost) {
-    tally_.breaking += pool_[slot].stored_energy;
+    const ContactState& c = pool_[slot];
+    const Vec3 separation = particles_.position[c.j] - particles_.position[c.i];
+    const double distance = norm(separation);
+    const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
+    const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
+    book_release(c, -gap, approach, dt_, tally_);
+    if (spec_.van_der_waals) tally_.van_der_waals_handover -= spec_.hamaker.at_gap(gap, c.constants.radius).energy;
     pool_.close(slot);
     ++pair_events_.broken;
   }
