@@ -118,26 +118,21 @@ TEST_CASE("the energy ledger closes when a cluster hits a wall with every dissip
     p.position[i].z += 0.55 - lowest;
     p.velocity[i] = {0.05, 0.0, -0.5};
   }
-  double error[2];
-  for (int k = 0; k < 2; ++k) {
-    SimulationSettings settings = testing::bonded();
-    settings.steps_per_period = k == 0 ? 50.0 : 200.0;
-    Simulation sim(p, {testing::unit_material(0.01)}, {Wall{}}, full_model(), settings);
-    const double e0 = sim.energy().balance();
-    const double kinetic0 = sim.energy().kinetic();
-    sim.run(k == 0 ? 30000 : 120000);
-    const EnergyBudget e = sim.energy();
-    REQUIRE(e.dissipation.damping > 0.0);
-    REQUIRE(e.dissipation.breaking > 0.0);
-    REQUIRE(e.dissipation.friction > 0.0);
-    REQUIRE(e.dissipation.rolling > 0.0);
-    REQUIRE(e.dissipation.twisting > 0.0);
-    CHECK(e.kinetic() < 0.5 * kinetic0);
-    error[k] = std::fabs(e.balance() - e0) / kinetic0;
-  }
-  // What left the kinetic and stored energy is in the dissipation channels up to a first-order
-  // error: JKR contacts snap in and let go between steps (O(F_c v dt) each) and the damping work
-  // is a one-step quadrature. Measured: 1.0% of the impact energy at 50 steps per contact period.
-  CHECK(error[0] < 0.02);
-  CHECK(error[1] < 0.4 * error[0]);
+  Simulation sim(p, {testing::unit_material(0.01)}, {Wall{}}, full_model(), testing::bonded());
+  const double e0 = sim.energy().balance();
+  const double kinetic0 = sim.energy().kinetic();
+  sim.run(30000);
+  const EnergyBudget e = sim.energy();
+  REQUIRE(e.dissipation.damping > 0.0);
+  REQUIRE(e.dissipation.breaking > 0.0);
+  REQUIRE(e.dissipation.friction > 0.0);
+  REQUIRE(e.dissipation.rolling > 0.0);
+  REQUIRE(e.dissipation.twisting > 0.0);
+  CHECK(e.kinetic() < 0.5 * kinetic0);
+  // What left the kinetic and stored energy is in the dissipation channels. Every channel books
+  // the work its force does as velocity Verlet applies it (trapezoidal), so what remains is the
+  // formation of JKR contacts between steps, an error of O(F_c v dt) per contact with zero mean
+  // (where in the step the spheres touched is random). Measured: 1e-4 of the impact energy over
+  // ~150 contact events; a channel booked to first order only would be off by ~1e-2.
+  CHECK(std::fabs(e.balance() - e0) < 2e-3 * kinetic0);
 }
