@@ -54,7 +54,7 @@ struct ContactModel {
   }
 
   // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
-  ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
+  [[gnu::always_inline]] ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
     const ContactConstants& c = s.constants;
     const NormalResponse response = normal.respond(m.overlap, c);
     const Vec3 contact_velocity = m.velocity + cross(m.lever_i * m.spin_i + m.lever_j * m.spin_j, m.normal);

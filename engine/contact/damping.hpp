@@ -20,7 +20,7 @@ struct NoDamping {
 struct ViscoElasticDamping {
   double dissipative_time = 0.0;  // A
 
-  double coefficient(const NormalResponse& n, const ContactConstants& c) const {
+  [[gnu::always_inline]] double coefficient(const NormalResponse& n, const ContactConstants& c) const {
     return 2.0 * dissipative_time * c.modulus * n.contact_radius;
   }
 };
@@ -31,7 +31,7 @@ struct ViscoElasticDamping {
 struct TsujiDamping {
   double alpha = 0.0;
 
-  double coefficient(const NormalResponse& n, const ContactConstants& c) const {
+  [[gnu::always_inline]] double coefficient(const NormalResponse& n, const ContactConstants& c) const {
     const double hertz_overlap = n.contact_radius * n.contact_radius / c.radius;
     return alpha * std::sqrt(c.mass * c.hertz_coefficient * std::sqrt(hertz_overlap));
   }

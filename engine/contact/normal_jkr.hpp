@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "engine/contact/contact_constants.hpp"
+#include "engine/core/fast_math.hpp"
 
 namespace aerobreak {
 
@@ -21,10 +22,10 @@ enum class JkrSeparation {
 // rearranged as m = (u^3 - v^3) / (u^2 + u v + v^2) with u^3 - v^3 = 1/18, which has no
 // cancellation for any D. Closed form: no iteration in the pair loop.
 // Returns y = sqrt(a/a0); jkr_radius_ratio gives x = a/a0 = y^2.
-inline double jkr_root_radius_ratio(double overlap_ratio) {
+[[gnu::always_inline]] inline double jkr_root_radius_ratio(double overlap_ratio) {
   const double d = overlap_ratio;
   const double s = std::sqrt(std::max(0.0, 1.0 / 1296.0 + d * d * d / 27.0));
-  const double u = std::cbrt(1.0 / 36.0 + s);
+  const double u = cube_root(1.0 / 36.0 + s);
   const double v = d / (3.0 * u);
   const double m = (1.0 / 18.0) / (u * u + u * v + v * v);
   const double root_m = std::sqrt(m);
@@ -62,7 +63,7 @@ struct JkrNormal {
                           : -a0_squared_over_r * jkr_overlap_ratio(std::pow(4.0, -1.0 / 3.0));
   }
 
-  NormalResponse respond(double delta, const ContactConstants& c) const {
+  [[gnu::always_inline]] NormalResponse respond(double delta, const ContactConstants& c) const {
     const double a0 = c.equilibrium_radius;
     const double y = jkr_root_radius_ratio(delta * c.radius / (a0 * a0));
     const double x = y * y;

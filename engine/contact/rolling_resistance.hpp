@@ -21,7 +21,7 @@ struct RollingResistance {
   double critical_displacement = 0.0;  // xi_crit
 
   // previous_stiffness: k_r of the last step, replaced by this step's.
-  Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin, const SpringContext& s,
+  [[gnu::always_inline]] Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin, const SpringContext& s,
               const ContactConstants& c, double& energy, DissipationTally& tally) const {
     if (c.pull_off_force <= 0.0) return {};
     displacement = rotate_into_plane(displacement, s.normal);

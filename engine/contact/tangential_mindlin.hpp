@@ -31,7 +31,7 @@ struct MindlinTangential {
 
   // stretch: the history; slip_velocity: tangential velocity of i's contact point relative to j's.
   // Returns the tangential force on i; adds the spring's energy to `energy`.
-  Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s, const ContactConstants& c,
+  [[gnu::always_inline]] Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s, const ContactConstants& c,
              double& energy, DissipationTally& tally) const {
     stretch = rotate_into_plane(stretch, s.normal);
     const double stiffness = 8.0 * c.shear * s.contact_radius;

@@ -19,7 +19,7 @@ struct NoTwisting {
 struct TwistingResistance {
   double friction = 0.0;  // mu
 
-  Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
+  [[gnu::always_inline]] Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
               double& energy, DissipationTally& tally) const {
     const double a = s.contact_radius;
     const double stiffness = 4.0 * c.shear * a * a * a;

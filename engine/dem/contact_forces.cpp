@@ -34,6 +34,10 @@ class ContactForcesFor final : public ContactForces {
     Vec3* force = p.force.data();
     Vec3* torque = p.torque.data();
     const std::size_t n = pairs.particles();
+    // A local tally: written through the ledger's reference it could alias the force arrays and
+    // would be reloaded and stored at every contact.
+    DissipationTally tally;
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -47,7 +51,7 @@ class ContactForcesFor final : public ContactForces {
           // A contact forms when the spheres touch (delta >= 0).
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
-          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), ledger);
+          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
         }
         ContactState& state = ledger.pool[slot];
         const double distance = std::sqrt(distance2);
@@ -55,24 +59,27 @@ class ContactForcesFor final : public ContactForces {
         const Vec3 normal = separation / distance;
         const Vec3 relative_velocity = velocity[i] - velocity[j];
         if (overlap < -state.constants.break_overlap) {
-          close(slot, overlap, dot(relative_velocity, normal), dt, ledger);
+          close(slot, overlap, dot(relative_velocity, normal), dt, local);
           continue;
         }
         const ContactMotion motion{normal, overlap, relative_velocity, spin[i], spin[j],
                                    radius_i - 0.5 * overlap, radius[j] - 0.5 * overlap};
-        const ContactLoad load = model_.evaluate(state, motion, dt, ledger.tally);
+        const ContactLoad load = model_.evaluate(state, motion, dt, tally);
         force[i] += load.force_i;
         force[j] -= load.force_i;
         torque[i] += load.torque_i;
         torque[j] += load.torque_j;
       }
     }
+    ledger.tally += tally;
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
                        const MaterialTable& materials, double dt, ContactLedger ledger) const override {
     const std::size_t n = p.size();
     const Vec3 into_wall = -wall.normal;
+    DissipationTally tally;
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
     for (std::uint32_t i = 0; i < n; ++i) {
       const double overlap = p.radius[i] - wall.gap(p.position[i]);
       std::int32_t& slot = slots[i];
@@ -87,19 +94,20 @@ class ContactForcesFor final : public ContactForces {
         model_.open(state, overlap);
         slot = ledger.pool.open(state);
         ++ledger.events.made;
-        hand_over(ledger, -overlap, state.constants.radius, +1.0);
+        hand_over(local, -overlap, state.constants.radius, +1.0);
       }
       ContactState& state = ledger.pool[slot];
       if (overlap < -state.constants.break_overlap) {
-        close(slot, overlap, dot(p.velocity[i], into_wall), dt, ledger);
+        close(slot, overlap, dot(p.velocity[i], into_wall), dt, local);
         continue;
       }
       const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
                                  p.radius[i] - overlap, 0.0};
-      const ContactLoad load = model_.evaluate(state, motion, dt, ledger.tally);
+      const ContactLoad load = model_.evaluate(state, motion, dt, tally);
       p.force[i] += load.force_i;
       p.torque[i] += load.torque_i;
     }
+    ledger.tally += tally;
   }
 
  private:

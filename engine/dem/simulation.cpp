@@ -58,6 +58,11 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
 
   // Automatic skin: a particle at the expected speed crosses half of it in about 20 steps, within
   // [0.2, 1] smallest radius (a fractal cluster has few pairs per particle, so a wide skin is cheap).
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    half_step_per_mass_.push_back(0.5 * dt_ / particles_.mass[i]);
+    half_step_per_inertia_.push_back(0.5 * dt_ / particles_.inertia[i]);
+  }
+
   double skin = settings_.skin;
   if (skin <= 0.0 && particles_.size() > 0) {
     const double smallest = *std::min_element(particles_.radius.begin(), particles_.radius.end());
@@ -111,16 +116,16 @@ void Simulation::step() {
   const std::size_t n = particles_.size();
   Particles& p = particles_;
   for (std::size_t i = 0; i < n; ++i) {
-    p.velocity[i] += (0.5 * dt_ / p.mass[i]) * p.force[i];
-    p.angular_velocity[i] += (0.5 * dt_ / p.inertia[i]) * p.torque[i];
+    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
+    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
     p.position[i] += dt_ * p.velocity[i];
   }
   time_ += dt_;
   ++steps_;
   compute_forces();
   for (std::size_t i = 0; i < n; ++i) {
-    p.velocity[i] += (0.5 * dt_ / p.mass[i]) * p.force[i];
-    p.angular_velocity[i] += (0.5 * dt_ / p.inertia[i]) * p.torque[i];
+    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
+    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
   }
 }
 

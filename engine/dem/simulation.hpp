@@ -82,6 +82,8 @@ class Simulation {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double external_work_ = 0.0;
+  std::vector<double> half_step_per_mass_;     // dt / (2 m_i)
+  std::vector<double> half_step_per_inertia_;  // dt / (2 I_i)
   double van_der_waals_energy_ = 0.0;
 };
 
