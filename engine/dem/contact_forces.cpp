@@ -1,5 +1,6 @@
 #include "engine/dem/contact_forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -38,6 +39,7 @@ class ContactForcesFor final : public ContactForces {
     // would be reloaded and stored at every contact.
     DissipationTally tally;
     ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
+    double deepest = ledger.events.deepest_overlap_ratio;
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -48,7 +50,7 @@ class ContactForcesFor final : public ContactForces {
         const double touching = radius_i + radius[j];
         std::int32_t& slot = pairs.contact[k];
         if (slot < 0) {
-          // A contact forms when the spheres touch (delta >= 0).
+          // A contact forms when the spheres overlap (delta > 0), or come within formation_gap.
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
           slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
@@ -65,6 +67,7 @@ class ContactForcesFor final : public ContactForces {
         const ContactMotion motion{normal, overlap, relative_velocity, spin[i], spin[j],
                                    radius_i - 0.5 * overlap, radius[j] - 0.5 * overlap};
         const ContactLoad load = model_.evaluate(state, motion, dt, tally);
+        deepest = std::max(deepest, overlap / state.constants.radius);
         force[i] += load.force_i;
         force[j] -= load.force_i;
         torque[i] += load.torque_i;
@@ -72,6 +75,7 @@ class ContactForcesFor final : public ContactForces {
       }
     }
     ledger.tally += tally;
+    ledger.events.deepest_overlap_ratio = deepest;
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
@@ -80,6 +84,7 @@ class ContactForcesFor final : public ContactForces {
     const Vec3 into_wall = -wall.normal;
     DissipationTally tally;
     ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
+    double deepest = ledger.events.deepest_overlap_ratio;
     for (std::uint32_t i = 0; i < n; ++i) {
       const double overlap = p.radius[i] - wall.gap(p.position[i]);
       std::int32_t& slot = slots[i];
@@ -104,10 +109,12 @@ class ContactForcesFor final : public ContactForces {
       const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
                                  p.radius[i] - overlap, 0.0};
       const ContactLoad load = model_.evaluate(state, motion, dt, tally);
+      deepest = std::max(deepest, overlap / state.constants.radius);
       p.force[i] += load.force_i;
       p.torque[i] += load.torque_i;
     }
     ledger.tally += tally;
+    ledger.events.deepest_overlap_ratio = deepest;
   }
 
  private:

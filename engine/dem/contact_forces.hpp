@@ -16,6 +16,8 @@ namespace aerobreak {
 struct ContactEvents {
   std::uint64_t made = 0;
   std::uint64_t broken = 0;
+  // Deepest overlap seen, over R*: Hertz and JKR theory assume small strains (delta << R*).
+  double deepest_overlap_ratio = 0.0;
 };
 
 // What one force pass reads and writes besides the particles.

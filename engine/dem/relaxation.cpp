@@ -33,8 +33,12 @@ RelaxationResult relax_cluster(Particles particles, const std::vector<Material>&
   spec.separation = model.separation;
   spec.tangential = false;
 
+  if (model.normal == NormalLaw::hertz)
+    throw std::invalid_argument("relax: a cluster without adhesion (Hertz law) has no equilibrium to relax to");
   const ContactConstants c = typical_contact(particles, materials[particles.material[0]], spec);
-  const double energy_scale = std::max(c.pull_off_force * c.critical_overlap, 1e-300);
+  // Energy scale of a bond: F_c times the overlap scale a0^2/R* (JKR: 2 6^(1/3) delta_c; DMT has
+  // no delta_c).
+  const double energy_scale = c.pull_off_force * c.equilibrium_radius * c.equilibrium_radius / c.radius;
   // Equilibrium stiffness of a JKR contact, dF/d(delta) at a = a0: 3.6 F_c R* / a0^2 (eqs 2, 5).
   const double stiffness = c.equilibrium_radius > 0.0
                                ? 3.6 * c.pull_off_force * c.radius / (c.equilibrium_radius * c.equilibrium_radius)

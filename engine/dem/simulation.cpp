@@ -23,6 +23,23 @@ void validate_particles(const Particles& p, std::size_t material_count) {
   }
 }
 
+// An adhesive normal law divides by the work of adhesion: every pair it meets needs w > 0.
+void require_adhesion(const ContactModelSpec& spec, const MaterialTable& materials, const Particles& p,
+                      const std::vector<Wall>& walls) {
+  if (spec.normal == NormalLaw::hertz) return;
+  std::set<std::uint16_t> present(p.material.begin(), p.material.end());
+  auto check = [&](std::uint16_t a, std::uint16_t b, const std::string& what) {
+    if (!(materials.pair(a, b).work_of_adhesion > 0.0))
+      throw std::invalid_argument(what + ": the " + std::string(spec.normal == NormalLaw::jkr ? "JKR" : "DMT") +
+                                  " law needs a positive surface energy; use the Hertz law without adhesion");
+  };
+  for (auto a : present)
+    for (auto b : present) check(a, b, "materials " + std::to_string(a) + " and " + std::to_string(b));
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    if (walls[w].adhesive)
+      for (auto a : present) check(a, walls[w].material, "wall " + std::to_string(w) + " (adhesive)");
+}
+
 Wall normalised(Wall wall, std::size_t index, std::size_t material_count) {
   const double length = norm(wall.normal);
   const std::string which = "wall " + std::to_string(index);
@@ -40,6 +57,8 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
   validate_particles(particles_, materials_.size());
   if (!(settings_.initial_bond_gap >= 0.0)) throw std::invalid_argument("simulation: initial_bond_gap must be >= 0");
   for (std::size_t w = 0; w < walls.size(); ++w) walls_.push_back(normalised(walls[w], w, materials_.size()));
+  spec_.validate();
+  require_adhesion(spec_, materials_, particles_, walls_);
   pair_forces_ = make_contact_forces(spec_, spec_.normal);
   for (const Wall& wall : walls_) {
     wall_forces_.push_back(make_contact_forces(spec_, wall.adhesive ? spec_.normal : NormalLaw::hertz));
@@ -83,6 +102,17 @@ double Simulation::speed_scale() const {
   double fastest = 0.0;
   for (std::size_t i = 0; i < particles_.size(); ++i)
     fastest = std::max(fastest, norm(particles_.velocity[i]) + norm(particles_.angular_velocity[i]) * particles_.radius[i]);
+  // Gravity can accelerate a particle over the height of the system (plus one diameter).
+  const double g = norm(settings_.body.gravity);
+  if (g > 0.0) {
+    Vec3 low = particles_.position[0], high = particles_.position[0];
+    for (const Vec3& x : particles_.position) {
+      low = {std::min(low.x, x.x), std::min(low.y, x.y), std::min(low.z, x.z)};
+      high = {std::max(high.x, x.x), std::max(high.y, x.y), std::max(high.z, x.z)};
+    }
+    const double largest = *std::max_element(particles_.radius.begin(), particles_.radius.end());
+    fastest += std::sqrt(2.0 * g * (norm(high - low) + 2.0 * largest));
+  }
   const Langevin& l = settings_.body.langevin;
   if (l.enabled()) {
     const double lightest = *std::min_element(particles_.mass.begin(), particles_.mass.end());

@@ -40,7 +40,7 @@ TimeStepEstimate recommend_time_step(const Particles& p, const MaterialTable& ma
   if (p.size() == 0) throw std::invalid_argument("time step: no particles");
   if (!(steps_per_period >= 1.0)) throw std::invalid_argument("time step: steps_per_period must be >= 1");
 
-  // The extreme radii and masses of each material present.
+  // The extreme radii and masses over all particles, combined with every pair of materials present.
   std::set<std::uint16_t> present(p.material.begin(), p.material.end());
   std::vector<std::pair<double, double>> spheres;  // radius, mass
   for (std::size_t i = 0; i < p.size(); ++i) spheres.push_back({p.radius[i], p.mass[i]});
@@ -92,7 +92,11 @@ TimeStepEstimate recommend_time_step(const Particles& p, const MaterialTable& ma
         const double kn = normal_stiffness(*law, c, overlap);
         const double a = law->normal_response(overlap, c).contact_radius;
         const double kt = spec.tangential ? 3.5 * 8.0 * c.shear * a : 0.0;
-        stiffness = std::max({stiffness, kn, kt});
+        // Rolling mode: torsional stiffness k_r R* over the relative moment of inertia, at least
+        // (2/5) m* R*^2 (a sphere on a wall); as a translational stiffness, 2.5 k_r / R*.
+        const double x = c.equilibrium_radius > 0.0 ? a / c.equilibrium_radius : 0.0;
+        const double kr = spec.rolling ? 2.5 * 4.0 * c.pull_off_force * x * std::sqrt(x) / c.radius : 0.0;
+        stiffness = std::max({stiffness, kn, kt, kr});
       }
     if (stiffness <= 0.0) continue;
     const double period = 2.0 * std::numbers::pi * std::sqrt(c.mass / stiffness);

@@ -22,8 +22,8 @@ struct TimeStepEstimate {
 // The stiffest contact the run can reach: each pair of extreme radii (and each wall) is loaded
 // by the kinetic energy of the largest relative speed (2 v_max between particles, v_max against
 // a wall) plus twice its adhesion work 2 F_c delta_c; its normal stiffness dF/ddelta there and at
-// equilibrium, and its tangential stiffness 8 G* a (times 7/2, the mass factor of a rolling
-// sphere's tangential mode), give the period 2 pi sqrt(m*/k). The step is the shortest period
+// equilibrium, its tangential stiffness 8 G* a (times 7/2, the mass factor of a rolling sphere's
+// tangential mode) and, with rolling resistance, its rolling mode give the period 2 pi sqrt(m*/k). The step is the shortest period
 // divided by steps_per_period (default 50, well inside the report's dt < sqrt(m/k_n)).
 TimeStepEstimate recommend_time_step(const Particles& particles, const MaterialTable& materials,
                                      const std::vector<Wall>& walls, const ContactModelSpec& spec, double max_speed,

@@ -24,7 +24,7 @@ namespace {
 struct BenchOptions {
   std::vector<std::size_t> sizes{1000, 4000};
   std::int64_t steps = 2000;
-  double speed = 0.1;
+  double speed = 0.02;
   double gamma_over_kn = 0.001;
   double poisson = 0.3;
   double friction = 0.5;

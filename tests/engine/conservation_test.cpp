@@ -97,15 +97,17 @@ TEST_CASE("a JKR contact alone conserves mechanical energy to second order in dt
     Simulation sim(p, {testing::unit_material(0.01)}, {}, spec, k == 0 ? coarse : fine);
     const double e0 = sim.energy().mechanical();
     double worst = 0.0;
+    double oscillation = 0.0;  // the energy in play: the peak kinetic energy of the oscillation
     while (sim.time() < 200.0) {
       sim.step();
       worst = std::max(worst, std::fabs(sim.energy().mechanical() - e0));
+      oscillation = std::max(oscillation, sim.energy().kinetic());
     }
     REQUIRE(sim.pair_events().made == 1);
     REQUIRE(sim.pair_events().broken == 0);
-    error[k] = worst / e0;
+    error[k] = worst / oscillation;
   }
-  CHECK(error[0] < 1e-3);
+  CHECK(error[0] < 5e-3);  // measured 2.0e-3 at 50 steps per contact period
   // Halving the step divides a second-order error by four.
   CHECK(error[1] / error[0] == Approx(0.25).margin(0.05));
 }
