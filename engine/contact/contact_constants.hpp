@@ -17,6 +17,7 @@ struct ContactConstants {
   double pull_off_force = 0.0;     // F_c, eq 5 (JKR), pi gamma d analogue (DMT), 0 (Hertz)
   double critical_overlap = 0.0;   // delta_c, eq 3
   double break_overlap = 0.0;      // the contact ends when delta < -break_overlap
+  double overlap_scale = 1.0;      // delta times this is the overlap the law solves for (JKR: R*/a0^2)
 };
 
 // What the normal law hands to the other slots (DESIGN.md "Style": explicit, no shared state).
@@ -27,6 +28,7 @@ struct NormalResponse {
   // Hertz part F_n + F_c for DMT, F_n for Hertz.
   double coulomb_load = 0.0;
   double energy = 0.0;          // elastic energy stored in the normal deformation
+  double radius_ratio_three_halves = 0.0;  // (a/a0)^(3/2), for the rolling stiffness (eq 18)
 };
 
 }  // namespace aerobreak

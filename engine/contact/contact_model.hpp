@@ -39,6 +39,8 @@ struct ContactLoad {
 // once per run, so the pair loop holds no model switches.
 template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
 struct ContactModel {
+  using normal_type = Normal;
+
   Normal normal;
   Damping damping;
   Tangential tangential;
@@ -54,9 +56,15 @@ struct ContactModel {
   }
 
   // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
-  [[gnu::always_inline]] ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
+  ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
+    return evaluate_solved(s, m, Normal::solve(m.overlap * s.constants.overlap_scale), dt, tally);
+  }
+
+  // The same, with the normal law's equation already solved for this overlap (Normal::solve).
+  [[gnu::always_inline]] ContactLoad evaluate_solved(ContactState& s, const ContactMotion& m, double solved, double dt,
+                                                     DissipationTally& tally) const {
     const ContactConstants& c = s.constants;
-    const NormalResponse response = normal.respond(m.overlap, c);
+    const NormalResponse response = normal.respond_solved(solved, c);
     const Vec3 contact_velocity = m.velocity + cross(m.lever_i * m.spin_i + m.lever_j * m.spin_j, m.normal);
     const double approach_rate = dot(contact_velocity, m.normal);
     const double damping_force = damping.coefficient(response, c) * approach_rate;
@@ -67,7 +75,8 @@ struct ContactModel {
     // eq 12: elastic (eq 5) plus viscous normal force, > 0 pushing the bodies apart
     const double normal_force = response.force + damping_force;
 
-    const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load};
+    const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load,
+                               response.radius_ratio_three_halves};
     double energy = response.energy;
     const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
     const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, energy, tally);

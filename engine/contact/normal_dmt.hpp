@@ -23,7 +23,10 @@ struct DmtNormal {
     c.break_overlap = 0.0;
   }
 
-  NormalResponse respond(double delta, const ContactConstants& c) const {
+  static double solve(double delta) { return delta; }
+  NormalResponse respond(double delta, const ContactConstants& c) const { return respond_solved(delta, c); }
+
+  NormalResponse respond_solved(double delta, const ContactConstants& c) const {
     const double overlap = std::max(0.0, delta);
     const double root = std::sqrt(overlap);
     const double hertz = c.hertz_coefficient * overlap * root;
@@ -32,6 +35,8 @@ struct DmtNormal {
     r.contact_radius = std::sqrt(c.radius * overlap);
     r.coulomb_load = hertz;
     r.energy = 0.4 * hertz * overlap - c.pull_off_force * overlap;
+    const double x = r.contact_radius / c.equilibrium_radius;
+    r.radius_ratio_three_halves = x * std::sqrt(x);
     return r;
   }
 };

@@ -19,7 +19,10 @@ struct HertzNormal {
     c.break_overlap = 0.0;
   }
 
-  NormalResponse respond(double delta, const ContactConstants& c) const {
+  static double solve(double delta) { return delta; }
+  NormalResponse respond(double delta, const ContactConstants& c) const { return respond_solved(delta, c); }
+
+  NormalResponse respond_solved(double delta, const ContactConstants& c) const {
     const double overlap = std::max(0.0, delta);
     NormalResponse r;
     r.force = c.hertz_coefficient * overlap * std::sqrt(overlap);

@@ -19,18 +19,23 @@ enum class JkrSeparation {
 // both sides makes the right side a perfect square when m solves the resolvent cubic
 // m^3 + D m - 1/18 = 0; then y = [sqrt(2m) + sqrt(2 sqrt(2) / (3 sqrt(m)) - 2m)] / 2.
 // The cubic has one real root for D > -1/(2 6^(1/3)) (= -delta_c R*/a0^2); Cardano's form is
-// rearranged as m = (u^3 - v^3) / (u^2 + u v + v^2) with u^3 - v^3 = 1/18, which has no
-// cancellation for any D. Closed form: no iteration in the pair loop.
+// rearranged as m = (u^3 - v^3) / (u^2 + u v + v^2) = 1 / (18 q), q = u^2 + u v + v^2, with
+// u = (1/36 + s)^(1/3), v = D / (3u), s = sqrt(1/1296 + D^3/27): no cancellation for any D.
+// With w = sqrt(18 q) = 1/sqrt(m): y = [sqrt(2)/w + sqrt((2 sqrt(2)/3) w - 2/w^2)] / 2.
+// Closed form: three square roots and one division (the cube root is an inlined elementary
+// function); no iteration on eq 2 in the pair loop.
 // Returns y = sqrt(a/a0); jkr_radius_ratio gives x = a/a0 = y^2.
 [[gnu::always_inline]] inline double jkr_root_radius_ratio(double overlap_ratio) {
   const double d = overlap_ratio;
   const double s = std::sqrt(std::max(0.0, 1.0 / 1296.0 + d * d * d / 27.0));
-  const double u = cube_root(1.0 / 36.0 + s);
-  const double v = d / (3.0 * u);
-  const double m = (1.0 / 18.0) / (u * u + u * v + v * v);
-  const double root_m = std::sqrt(m);
-  const double inner = std::max(0.0, 2.0 * std::numbers::sqrt2 / (3.0 * root_m) - 2.0 * m);
-  return 0.5 * (std::numbers::sqrt2 * root_m + std::sqrt(inner));
+  const double t = 1.0 / 36.0 + s;
+  const double inverse_u = inverse_cube_root(t);
+  const double u = t * inverse_u * inverse_u;
+  const double v = d * inverse_u * (1.0 / 3.0);
+  const double w = std::sqrt(18.0 * (u * u + u * v + v * v));
+  const double inverse_w = 1.0 / w;
+  const double inner = std::max(0.0, 2.0 * std::numbers::sqrt2 / 3.0 * w - 2.0 * inverse_w * inverse_w);
+  return 0.5 * (std::numbers::sqrt2 * inverse_w + std::sqrt(inner));
 }
 
 inline double jkr_radius_ratio(double overlap_ratio) {
@@ -61,17 +66,27 @@ struct JkrNormal {
     c.break_overlap = separation == JkrSeparation::displacement
                           ? c.critical_overlap
                           : -a0_squared_over_r * jkr_overlap_ratio(std::pow(4.0, -1.0 / 3.0));
+    c.overlap_scale = 1.0 / a0_squared_over_r;
   }
 
+  // The pair loop solves eq 2 for a whole batch of contacts first (solve), then builds each
+  // response from its solution (respond_solved); respond does both for one contact.
+  [[gnu::always_inline]] static double solve(double scaled_overlap) { return jkr_root_radius_ratio(scaled_overlap); }
+
   [[gnu::always_inline]] NormalResponse respond(double delta, const ContactConstants& c) const {
+    return respond_solved(solve(delta * c.overlap_scale), c);
+  }
+
+  // y = sqrt(a/a0) from solve.
+  [[gnu::always_inline]] NormalResponse respond_solved(double y, const ContactConstants& c) const {
     const double a0 = c.equilibrium_radius;
-    const double y = jkr_root_radius_ratio(delta * c.radius / (a0 * a0));
     const double x = y * y;
     const double x_three_halves = x * y;
     NormalResponse r;
     // eq 5: F / F_c = 4 [(a/a0)^3 - (a/a0)^(3/2)]
     r.force = 4.0 * c.pull_off_force * (x * x * x - x_three_halves);
     r.contact_radius = a0 * x;
+    r.radius_ratio_three_halves = x_three_halves;
     // eq 14: the friction limit is mu (F_n + 2 F_c)
     r.coulomb_load = std::max(0.0, r.force + 2.0 * c.pull_off_force);
     r.energy = 4.0 * c.pull_off_force * a0 * a0 / c.radius * (energy_primitive(x, y) - kTouchPrimitive);

@@ -25,7 +25,7 @@ struct RollingResistance {
               const ContactConstants& c, double& energy, DissipationTally& tally) const {
     if (c.pull_off_force <= 0.0) return {};
     displacement = rotate_into_plane(displacement, s.normal);
-    const double stiffness = rolling_stiffness(s.contact_radius, c);
+    const double stiffness = 4.0 * c.pull_off_force * s.radius_ratio_three_halves;
     const double compliance = 0.5 / c.radius;
     tally.stiffness_work += compliance * (stiffness - previous_stiffness) * norm2(displacement);
     const Vec3 before = displacement;

@@ -14,6 +14,7 @@ struct SpringContext {
   double contact_radius = 0.0;  // a, this step
   double previous_radius = 0.0; // a, last step (for the stiffness change)
   double coulomb_load = 0.0;    // from the normal law: F_n + 2 F_c for JKR (eq 14)
+  double radius_ratio_three_halves = 0.0;  // (a/a0)^(3/2), from the normal law
 };
 
 struct NoTangential {

@@ -9,12 +9,18 @@ namespace aerobreak {
 // x^(-1/3), four division-free Newton steps r <- r (4 - x r^3) / 3 (quadratic convergence from
 // ~3% to below 1e-16), then y = x r^2 with one Newton polish in the forward form. A fixed
 // sequence of arithmetic, like any elementary-function implementation: no data-dependent loop.
-inline double cube_root(double x) {
+// x^(-1/3) for positive, finite, normal x: the division-free part of cube_root below.
+[[gnu::always_inline]] inline double inverse_cube_root(double x) {
   double r = std::bit_cast<double>(0x553ef0ff289dd796ULL - std::bit_cast<std::uint64_t>(x) / 3);
   r = r * (4.0 - x * r * r * r) * (1.0 / 3.0);
   r = r * (4.0 - x * r * r * r) * (1.0 / 3.0);
   r = r * (4.0 - x * r * r * r) * (1.0 / 3.0);
   r = r * (4.0 - x * r * r * r) * (1.0 / 3.0);
+  return r;
+}
+
+inline double cube_root(double x) {
+  const double r = inverse_cube_root(x);
   const double y = x * r * r;
   return y - (y * y * y - x) / (3.0 * y * y);
 }

@@ -26,6 +26,10 @@ class ContactForcesFor final : public ContactForces {
     return model_.normal.respond(overlap, constants);
   }
 
+  // Three passes: (1) geometry and bookkeeping (contacts form and break), collecting the live
+  // contacts; (2) the normal law's equation (eq 2 for JKR) for all of them, a tight loop whose
+  // independent solutions overlap in the processor instead of each waiting on the last;
+  // (3) the remaining laws and the force and torque sums.
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
                        double formation_gap, ContactLedger ledger) const override {
     const Vec3* position = p.position.data();
@@ -40,6 +44,8 @@ class ContactForcesFor final : public ContactForces {
     DissipationTally tally;
     ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
     double deepest = ledger.events.deepest_overlap_ratio;
+
+    live_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -55,24 +61,30 @@ class ContactForcesFor final : public ContactForces {
           if (distance2 >= reach * reach) continue;
           slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
         }
-        ContactState& state = ledger.pool[slot];
+        const ContactState& state = ledger.pool[slot];
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
         const Vec3 normal = separation / distance;
-        const Vec3 relative_velocity = velocity[i] - velocity[j];
         if (overlap < -state.constants.break_overlap) {
-          close(slot, overlap, dot(relative_velocity, normal), dt, local);
+          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
           continue;
         }
-        const ContactMotion motion{normal, overlap, relative_velocity, spin[i], spin[j],
-                                   radius_i - 0.5 * overlap, radius[j] - 0.5 * overlap};
-        const ContactLoad load = model_.evaluate(state, motion, dt, tally);
-        deepest = std::max(deepest, overlap / state.constants.radius);
-        force[i] += load.force_i;
-        force[j] -= load.force_i;
-        torque[i] += load.torque_i;
-        torque[j] += load.torque_j;
+        live_.push_back({normal, overlap, overlap * state.constants.overlap_scale, i, j, slot});
       }
+    }
+
+    for (LiveContact& c : live_) c.solved = Model::normal_type::solve(c.solved);
+
+    for (const LiveContact& c : live_) {
+      ContactState& state = ledger.pool[c.slot];
+      const ContactMotion motion{c.normal, c.overlap, velocity[c.i] - velocity[c.j], spin[c.i], spin[c.j],
+                                 radius[c.i] - 0.5 * c.overlap, radius[c.j] - 0.5 * c.overlap};
+      const ContactLoad load = model_.evaluate_solved(state, motion, c.solved, dt, tally);
+      deepest = std::max(deepest, c.overlap / state.constants.radius);
+      force[c.i] += load.force_i;
+      force[c.j] -= load.force_i;
+      torque[c.i] += load.torque_i;
+      torque[c.j] += load.torque_j;
     }
     ledger.tally += tally;
     ledger.events.deepest_overlap_ratio = deepest;
@@ -153,7 +165,16 @@ class ContactForcesFor final : public ContactForces {
     if (ledger.van_der_waals) ledger.tally.van_der_waals_handover += sign * ledger.van_der_waals->at_gap(gap, reduced_radius).energy;
   }
 
+  struct LiveContact {
+    Vec3 normal;
+    double overlap;
+    double solved;  // the scaled overlap, then the normal law's solution for it
+    std::uint32_t i, j;
+    std::int32_t slot;
+  };
+
   Model model_;
+  mutable std::vector<LiveContact> live_;  // scratch of add_pair_forces, kept to reuse its memory
 };
 
 using NormalChoice = std::variant<JkrNormal, DmtNormal, HertzNormal>;
