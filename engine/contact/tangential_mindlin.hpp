@@ -42,9 +42,9 @@ struct MindlinTangential {
     const Vec3 increment = slip_velocity * s.dt;
     stretch += increment;
     const double limit = friction * s.coulomb_load;
-    const double trial = stiffness * std::sqrt(norm2(stretch));
-    if (trial > limit) {
-      stretch *= trial > 0.0 ? limit / trial : 0.0;
+    const double trial2 = stiffness * stiffness * norm2(stretch);  // squared: no root unless it slides
+    if (trial2 > limit * limit) {
+      stretch *= limit / std::sqrt(trial2);
       tally.friction += slip_dissipation(stiffness, before, increment, stretch);
     }
     energy += 0.5 * stiffness * norm2(stretch);

@@ -19,7 +19,8 @@ constexpr Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
 constexpr Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
 constexpr Vec3 operator*(Vec3 a, double s) { return a *= s; }
 constexpr Vec3 operator*(double s, Vec3 a) { return a *= s; }
-constexpr Vec3 operator/(const Vec3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
+// One division and three multiplications (the compiler may not rewrite a / s as a * (1/s) itself).
+constexpr Vec3 operator/(const Vec3& a, double s) { return a * (1.0 / s); }
 constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};

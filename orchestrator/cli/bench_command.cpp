@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,7 @@ struct BenchOptions {
   double critical_rolling = 0.01;
   double dissipative_time = 0.05;
   bool wall_adhesion = true;
+  JkrSeparation separation = JkrSeparation::displacement;
   std::uint64_t seed = 1;
   std::string export_dir;
 };
@@ -38,6 +40,7 @@ struct BenchOptions {
 ContactModelSpec full_model(const BenchOptions& o) {
   ContactModelSpec spec;
   spec.normal = NormalLaw::jkr;
+  spec.separation = o.separation;
   spec.damping = DampingLaw::viscoelastic;
   spec.dissipative_time = o.dissipative_time;
   spec.tangential = true;
@@ -57,7 +60,7 @@ void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
       {"primaries", n},          {"time_step", sim.time_step()},         {"speed", o.speed},
       {"gamma_over_kn", o.gamma_over_kn}, {"poisson_ratio", o.poisson},  {"friction", o.friction},
       {"critical_rolling", o.critical_rolling}, {"dissipative_time", o.dissipative_time},
-      {"wall_adhesion", o.wall_adhesion},       {"steps", o.steps},      {"seed", o.seed}};
+      {"wall_adhesion", o.wall_adhesion}, {"separation", o.separation == JkrSeparation::force ? "force" : "displacement"},       {"steps", o.steps},      {"seed", o.seed}};
   std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
 }
 
@@ -110,6 +113,11 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--xi-crit", options->critical_rolling, "Critical rolling displacement, d")->check(CLI::PositiveNumber)->capture_default_str();
   bench->add_option("--damping", options->dissipative_time, "Visco-elastic dissipative time A, tau")->check(CLI::NonNegativeNumber)->capture_default_str();
   bench->add_flag("!--no-wall-adhesion", options->wall_adhesion, "Wall without adhesion (Hertz)");
+  bench->add_option("--separation", options->separation,
+                    "Where JKR contacts let go: displacement (at -delta_c, eq 3) or force (at F = -F_c, as LAMMPS)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, JkrSeparation>{
+          {"displacement", JkrSeparation::displacement}, {"force", JkrSeparation::force}}))
+      ->capture_default_str();
   bench->add_option("--seed", options->seed, "Seed of the cluster and its orientation")->capture_default_str();
   bench->add_option("--export", options->export_dir, "Write each placed cluster (XYZ) and its parameters (JSON) here, for the LAMMPS peer run");
   bench->callback([options] { run_bench(*options); });
