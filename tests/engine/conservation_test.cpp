@@ -13,17 +13,6 @@ using namespace aerobreak;
 
 namespace {
 
-ContactModelSpec full_model() {
-  ContactModelSpec spec;
-  spec.damping = DampingLaw::viscoelastic;
-  spec.dissipative_time = 0.5;
-  spec.friction = 0.3;
-  spec.rolling = true;
-  spec.critical_rolling = 0.01;
-  spec.twisting = true;
-  return spec;
-}
-
 // Random translational and rotational velocities of the given scale.
 void stir(Particles& p, double speed, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -45,7 +34,7 @@ double magnitude_scale(const Particles& p) {
 TEST_CASE("linear and angular momentum are conserved in free space with the full model") {
   Particles p = testing::relaxed_cluster(40, 7);
   stir(p, 0.3, 11);  // fast enough to break and remake contacts
-  Simulation sim(std::move(p), {testing::unit_material(0.01)}, {}, full_model(), testing::bonded());
+  Simulation sim(std::move(p), {testing::unit_material(0.01)}, {}, testing::full_model(), testing::bonded());
   const Vec3 momentum0 = testing::linear_momentum(sim.particles());
   const Vec3 angular0 = testing::angular_momentum(sim.particles());
   sim.run(20000);
@@ -120,7 +109,7 @@ TEST_CASE("the energy ledger closes when a cluster hits a wall with every dissip
     p.position[i].z += 0.55 - lowest;
     p.velocity[i] = {0.05, 0.0, -0.5};
   }
-  Simulation sim(p, {testing::unit_material(0.01)}, {Wall{}}, full_model(), testing::bonded());
+  Simulation sim(p, {testing::unit_material(0.01)}, {Wall{}}, testing::full_model(), testing::bonded());
   const double e0 = sim.energy().balance();
   const double kinetic0 = sim.energy().kinetic();
   sim.run(30000);

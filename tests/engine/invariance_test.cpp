@@ -11,17 +11,6 @@ using namespace aerobreak;
 
 namespace {
 
-ContactModelSpec full_model() {
-  ContactModelSpec spec;
-  spec.damping = DampingLaw::viscoelastic;
-  spec.dissipative_time = 0.5;
-  spec.friction = 0.3;
-  spec.rolling = true;
-  spec.critical_rolling = 0.01;
-  spec.twisting = true;
-  return spec;
-}
-
 // Rotation by `angle` about the unit axis `u` (Rodrigues).
 Vec3 rotate(const Vec3& v, const Vec3& u, double angle) {
   return std::cos(angle) * v + std::sin(angle) * cross(u, v) + (1.0 - std::cos(angle)) * dot(u, v) * u;
@@ -41,8 +30,8 @@ TEST_CASE("exchanging i and j gives the same trajectories") {
   ab.angular_velocity = {wa, wb};
   ba.velocity = {vb, va};
   ba.angular_velocity = {wb, wa};
-  Simulation first(std::move(ab), {testing::unit_material(0.01)}, {}, full_model());
-  Simulation second(std::move(ba), {testing::unit_material(0.01)}, {}, full_model());
+  Simulation first(std::move(ab), {testing::unit_material(0.01)}, {}, testing::full_model());
+  Simulation second(std::move(ba), {testing::unit_material(0.01)}, {}, testing::full_model());
   first.run(5000);
   second.run(5000);
   REQUIRE(first.contacts().size() == 1);
@@ -70,8 +59,8 @@ TEST_CASE("a rigid rotation of the whole system, wall included, rotates the resu
   }
   Wall floor;
   Wall tilted{rotate(floor.point, axis, angle), rotate(floor.normal, axis, angle)};
-  Simulation straight(std::move(p), {testing::unit_material(0.01)}, {floor}, full_model(), testing::bonded());
-  Simulation rotated(std::move(turned), {testing::unit_material(0.01)}, {tilted}, full_model(), testing::bonded());
+  Simulation straight(std::move(p), {testing::unit_material(0.01)}, {floor}, testing::full_model(), testing::bonded());
+  Simulation rotated(std::move(turned), {testing::unit_material(0.01)}, {tilted}, testing::full_model(), testing::bonded());
   straight.run(4000);
   rotated.run(4000);
   REQUIRE(straight.wall_events().made > 0);
@@ -91,8 +80,8 @@ TEST_CASE("contact history survives neighbour-list rebuilds: results do not depe
   tight.skin = 1e-4;
   loose.skin = 50.0;
   tight.time_step = loose.time_step = 0.02;
-  Simulation often(p, {testing::unit_material(0.01)}, {}, full_model(), tight);
-  Simulation never(p, {testing::unit_material(0.01)}, {}, full_model(), loose);
+  Simulation often(p, {testing::unit_material(0.01)}, {}, testing::full_model(), tight);
+  Simulation never(p, {testing::unit_material(0.01)}, {}, testing::full_model(), loose);
   often.run(3000);
   never.run(3000);
   REQUIRE(often.neighbor_builds() > 100);

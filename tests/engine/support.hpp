@@ -44,6 +44,18 @@ inline Particles relaxed_cluster(std::size_t n, std::uint64_t seed, double gamma
   return relax_cluster(random_touching_cluster(n, seed), {unit_material(gamma_over_kn)}, ContactModelSpec{}).particles;
 }
 
+// Every law on: JKR, visco-elastic damping, Mindlin friction, rolling and twisting resistance.
+inline ContactModelSpec full_model() {
+  ContactModelSpec spec;
+  spec.damping = DampingLaw::viscoelastic;
+  spec.dissipative_time = 0.5;
+  spec.friction = 0.3;
+  spec.rolling = true;
+  spec.critical_rolling = 0.01;
+  spec.twisting = true;
+  return spec;
+}
+
 // Settings that bond a relaxed cluster's contacts from the first step.
 inline SimulationSettings bonded() {
   SimulationSettings settings;

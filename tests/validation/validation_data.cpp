@@ -31,6 +31,7 @@
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
 #include "engine/dem/simulation.hpp"
+#include "tests/engine/support.hpp"
 
 using namespace aerobreak;
 
@@ -245,15 +246,8 @@ void energy_budget(const std::filesystem::path& dir, std::FILE* summary) {
   std::fprintf(summary, "energy: relaxed 64-primary BCCA cluster in %lld steps, converged %d, %zu contacts\n",
                static_cast<long long>(relaxed.steps), relaxed.converged ? 1 : 0, relaxed.contacts);
 
-  ContactModelSpec spec;
-  spec.damping = DampingLaw::viscoelastic;
-  spec.dissipative_time = 0.5;
-  spec.friction = 0.3;
-  spec.rolling = true;
-  spec.critical_rolling = 0.01;
-  spec.twisting = true;
-  SimulationSettings settings;
-  settings.initial_bond_gap = 1e-6;
+  const ContactModelSpec spec = testing::full_model();
+  const SimulationSettings settings = testing::bonded();
   const Wall wall{};
   Particles start = place_for_impact(relaxed.particles, Rotation{}, wall, 0.05, {0.0, 0.0, -0.5});
   Simulation sim(std::move(start), {unit_material()}, {wall}, spec, settings);
