@@ -26,68 +26,13 @@ class ContactForcesFor final : public ContactForces {
     return model_.normal.respond(overlap, constants);
   }
 
-  // Three passes: (1) geometry and bookkeeping (contacts form and break), collecting the live
-  // contacts; (2) the normal law's equation (eq 2 for JKR) for all of them, a tight loop whose
-  // independent solutions overlap in the processor instead of each waiting on the last;
-  // (3) the remaining laws and the force and torque sums.
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
                        double formation_gap, ContactLedger ledger) const override {
-    const Vec3* position = p.position.data();
-    const Vec3* velocity = p.velocity.data();
-    const Vec3* spin = p.angular_velocity.data();
-    const double* radius = p.radius.data();
-    Vec3* force = p.force.data();
-    Vec3* torque = p.torque.data();
-    const std::size_t n = pairs.particles();
-    // A local tally: written through the ledger's reference it could alias the force arrays and
-    // would be reloaded and stored at every contact.
-    DissipationTally tally;
-    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
-    double deepest = ledger.events.deepest_overlap_ratio;
-
-    live_.clear();
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const Vec3 position_i = position[i];
-      const double radius_i = radius[i];
-      for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
-        const std::uint32_t j = pairs.neighbor[k];
-        const Vec3 separation = position[j] - position_i;
-        const double distance2 = norm2(separation);
-        const double touching = radius_i + radius[j];
-        std::int32_t& slot = pairs.contact[k];
-        if (slot < 0) {
-          // A contact forms when the spheres overlap (delta > 0), or come within formation_gap.
-          const double reach = touching + formation_gap;
-          if (distance2 >= reach * reach) continue;
-          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
-        }
-        const ContactState& state = ledger.pool[slot];
-        const double distance = std::sqrt(distance2);
-        const double overlap = touching - distance;
-        const Vec3 normal = separation / distance;
-        if (overlap < -state.constants.break_overlap) {
-          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
-          continue;
-        }
-        live_.push_back({normal, overlap, overlap * state.constants.overlap_scale, i, j, slot});
-      }
-    }
-
-    for (LiveContact& c : live_) c.solved = Model::normal_type::solve(c.solved);
-
-    for (const LiveContact& c : live_) {
-      ContactState& state = ledger.pool[c.slot];
-      const ContactMotion motion{c.normal, c.overlap, velocity[c.i] - velocity[c.j], spin[c.i], spin[c.j],
-                                 radius[c.i] - 0.5 * c.overlap, radius[c.j] - 0.5 * c.overlap};
-      const ContactLoad load = model_.evaluate_solved(state, motion, c.solved, dt, tally);
-      deepest = std::max(deepest, c.overlap / state.constants.radius);
-      force[c.i] += load.force_i;
-      force[c.j] -= load.force_i;
-      torque[c.i] += load.torque_i;
-      torque[c.j] += load.torque_j;
-    }
-    ledger.tally += tally;
-    ledger.events.deepest_overlap_ratio = deepest;
+    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, ledger);
+  }
+  void add_periodic_pair_forces(Particles& p, PairList& pairs, const PeriodicBox& box, const MaterialTable& materials,
+                                double dt, double formation_gap, ContactLedger ledger) const override {
+    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, ledger);
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
@@ -130,6 +75,74 @@ class ContactForcesFor final : public ContactForces {
   }
 
  private:
+  // Three passes: (1) geometry and bookkeeping (contacts form and break), collecting the live
+  // contacts; (2) the normal law's equation (eq 2 for JKR) for all of them, a tight loop whose
+  // independent solutions overlap in the processor instead of each waiting on the last;
+  // (3) the remaining laws and the force and torque sums.
+  // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
+  // inlines: the open-space instantiation is the plain loop. Inlined into both callers, so that
+  // each is compiled as the one loop it is.
+  template <class Space>
+  [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs, const MaterialTable& materials,
+                          double dt, double formation_gap, ContactLedger ledger) const {
+    const Vec3* position = p.position.data();
+    const Vec3* velocity = p.velocity.data();
+    const Vec3* spin = p.angular_velocity.data();
+    const double* radius = p.radius.data();
+    Vec3* force = p.force.data();
+    Vec3* torque = p.torque.data();
+    const std::size_t n = pairs.particles();
+    // A local tally: written through the ledger's reference it could alias the force arrays and
+    // would be reloaded and stored at every contact.
+    DissipationTally tally;
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
+    double deepest = ledger.events.deepest_overlap_ratio;
+
+    live_.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Vec3 position_i = position[i];
+      const double radius_i = radius[i];
+      for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
+        const std::uint32_t j = pairs.neighbor[k];
+        const Vec3 separation = separation_of(position[j] - position_i);
+        const double distance2 = norm2(separation);
+        const double touching = radius_i + radius[j];
+        std::int32_t& slot = pairs.contact[k];
+        if (slot < 0) {
+          // A contact forms when the spheres overlap (delta > 0), or come within formation_gap.
+          const double reach = touching + formation_gap;
+          if (distance2 >= reach * reach) continue;
+          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
+        }
+        const ContactState& state = ledger.pool[slot];
+        const double distance = std::sqrt(distance2);
+        const double overlap = touching - distance;
+        const Vec3 normal = separation / distance;
+        if (overlap < -state.constants.break_overlap) {
+          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
+          continue;
+        }
+        live_.push_back({normal, overlap, overlap * state.constants.overlap_scale, i, j, slot});
+      }
+    }
+
+    for (LiveContact& c : live_) c.solved = Model::normal_type::solve(c.solved);
+
+    for (const LiveContact& c : live_) {
+      ContactState& state = ledger.pool[c.slot];
+      const ContactMotion motion{c.normal, c.overlap, velocity[c.i] - velocity[c.j], spin[c.i], spin[c.j],
+                                 radius[c.i] - 0.5 * c.overlap, radius[c.j] - 0.5 * c.overlap};
+      const ContactLoad load = model_.evaluate_solved(state, motion, c.solved, dt, tally);
+      deepest = std::max(deepest, c.overlap / state.constants.radius);
+      force[c.i] += load.force_i;
+      force[c.j] -= load.force_i;
+      torque[c.i] += load.torque_i;
+      torque[c.j] += load.torque_j;
+    }
+    ledger.tally += tally;
+    ledger.events.deepest_overlap_ratio = deepest;
+  }
+
   static void set_material(ContactConstants& c, const PairMaterial& m) {
     c.modulus = m.modulus;
     c.shear = m.shear;

@@ -10,6 +10,7 @@
 #include "engine/dem/contact_pool.hpp"
 #include "engine/dem/wall.hpp"
 #include "engine/neighbor/pair_list.hpp"
+#include "engine/neighbor/periodic_box.hpp"
 
 namespace aerobreak {
 
@@ -38,6 +39,11 @@ class ContactForces {
   // A contact forms where the surfaces are closer than formation_gap (0: where they touch).
   virtual void add_pair_forces(Particles& particles, PairList& pairs, const MaterialTable& materials, double dt,
                                double formation_gap, ContactLedger ledger) const = 0;
+  // The same in a periodic box: each pair interacts through its nearest images. A separate
+  // compiled loop, so that the open-space loop above carries no periodic test.
+  virtual void add_periodic_pair_forces(Particles& particles, PairList& pairs, const PeriodicBox& box,
+                                        const MaterialTable& materials, double dt, double formation_gap,
+                                        ContactLedger ledger) const = 0;
   // Contacts of every particle with one wall; slots[i] is particle i's contact with it, or -1.
   virtual void add_wall_forces(Particles& particles, const Wall& wall, std::uint32_t wall_index,
                                std::vector<std::int32_t>& slots, const MaterialTable& materials, double dt,

@@ -19,6 +19,8 @@ class VerletNeighborList {
   // Rebuilds if needed; returns the contacts whose pair is no longer listed (none unless the
   // particles moved further than the skin allows), for the caller to close.
   std::vector<std::int32_t> update(const Particles& particles, const ContactPool& pool);
+  // Whether some particle has moved more than skin/2 since the last build (or none was made).
+  bool stale(const Particles& particles) const;
   void rebuild(const Particles& particles, const ContactPool& pool, std::vector<std::int32_t>& lost);
 
   PairList& pairs() { return pairs_; }

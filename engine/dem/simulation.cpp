@@ -40,6 +40,17 @@ void require_adhesion(const ContactModelSpec& spec, const MaterialTable& materia
       for (auto a : present) check(a, walls[w].material, "wall " + std::to_string(w) + " (adhesive)");
 }
 
+// A periodic box replaces the walls: a wall would cut through the images of the box. Gravity is
+// refused too: its potential energy -m g.x is not periodic, so the energy ledger would jump at
+// every wrap.
+void validate_periodic(const SimulationSettings& settings, const std::vector<Wall>& walls) {
+  if (!settings.periodic) return;
+  settings.periodic->validate();
+  if (!walls.empty()) throw std::invalid_argument("simulation: walls cannot be combined with a periodic box");
+  if (norm2(settings.body.gravity) > 0.0)
+    throw std::invalid_argument("simulation: gravity cannot be combined with a periodic box");
+}
+
 Wall normalised(Wall wall, std::size_t index, std::size_t material_count) {
   const double length = norm(wall.normal);
   const std::string which = "wall " + std::to_string(index);
@@ -57,6 +68,8 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
   validate_particles(particles_, materials_.size());
   if (!(settings_.initial_bond_gap >= 0.0)) throw std::invalid_argument("simulation: initial_bond_gap must be >= 0");
   for (std::size_t w = 0; w < walls.size(); ++w) walls_.push_back(normalised(walls[w], w, materials_.size()));
+  validate_periodic(settings_, walls_);
+  images_.assign(particles_.size(), ImageCount{});
   spec_.validate();
   require_adhesion(spec_, materials_, particles_, walls_);
   pair_forces_ = make_contact_forces(spec_, spec_.normal);
@@ -90,11 +103,15 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
   }
   std::unique_ptr<NeighborSearch> search;
   if (settings_.brute_force_neighbors)
-    search = std::make_unique<BruteForceSearch>();
+    search = std::make_unique<BruteForceSearch>(settings_.periodic);
   else
-    search = std::make_unique<CellListSearch>();
-  neighbors_ = std::make_unique<VerletNeighborList>(std::move(search),
-                                                    std::max(interaction_margin(), settings_.initial_bond_gap), skin);
+    search = std::make_unique<CellListSearch>(settings_.periodic);
+  const double margin = std::max(interaction_margin(), settings_.initial_bond_gap);
+  if (settings_.periodic && particles_.size() > 0) {
+    const double largest = *std::max_element(particles_.radius.begin(), particles_.radius.end());
+    settings_.periodic->require_single_image(2.0 * largest + margin + skin);
+  }
+  neighbors_ = std::make_unique<VerletNeighborList>(std::move(search), margin, skin);
   compute_forces(settings_.initial_bond_gap);
 }
 
@@ -164,23 +181,57 @@ void Simulation::run(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) step();
 }
 
+// Periodic or not is fixed for the run; each branch below calls a loop compiled for that case.
 void Simulation::compute_forces(double formation_gap) {
   particles_.clear_forces();
-  close_lost_contacts(neighbors_->update(particles_, pool_));
+  std::vector<std::int32_t> lost;
+  if (neighbors_->stale(particles_)) {
+    // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
+    if (settings_.periodic) wrap_positions();
+    neighbors_->rebuild(particles_, pool_, lost);
+  }
+  close_lost_contacts(lost);
   const VanDerWaals* long_range = spec_.van_der_waals ? &spec_.hamaker : nullptr;
-  pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
-                                {pool_, tally_, pair_events_, long_range});
+  if (settings_.periodic)
+    pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
+                                           formation_gap, {pool_, tally_, pair_events_, long_range});
+  else
+    pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
+                                  {pool_, tally_, pair_events_, long_range});
   for (std::size_t w = 0; w < walls_.size(); ++w)
     wall_forces_[w]->add_wall_forces(particles_, walls_[w], static_cast<std::uint32_t>(w), wall_slots_[w], materials_,
                                      dt_, {pool_, tally_, wall_events_, walls_[w].adhesive ? long_range : nullptr});
-  if (spec_.van_der_waals) add_van_der_waals();
+  if (spec_.van_der_waals) {
+    if (settings_.periodic)
+      add_van_der_waals(PeriodicSpace(*settings_.periodic));
+    else
+      add_van_der_waals(OpenSpace{});
+  }
   external_work_ += add_body_forces(particles_, settings_.body, steps_, dt_);
+}
+
+void Simulation::wrap_positions() {
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    particles_.position[i] = settings_.periodic->wrap(particles_.position[i], images_[i]);
+}
+
+std::vector<Vec3> Simulation::unwrapped_positions() const {
+  if (!settings_.periodic) return particles_.position;
+  std::vector<Vec3> unwrapped(particles_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    unwrapped[i] = settings_.periodic->unwrap(particles_.position[i], images_[i]);
+  return unwrapped;
+}
+
+Vec3 Simulation::separation(std::size_t i, std::size_t j) const {
+  const Vec3 d = particles_.position[j] - particles_.position[i];
+  return settings_.periodic ? settings_.periodic->minimum_image(d) : d;
 }
 
 void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
   for (std::int32_t slot : lost) {
     const ContactState& c = pool_[slot];
-    const Vec3 separation = particles_.position[c.j] - particles_.position[c.i];
+    const Vec3 separation = this->separation(c.i, c.j);
     const double distance = norm(separation);
     const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
     const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
@@ -191,7 +242,8 @@ void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
   }
 }
 
-void Simulation::add_van_der_waals() {
+template <class Space>
+void Simulation::add_van_der_waals(const Space& separation_of) {
   const VanDerWaals& law = spec_.hamaker;
   Particles& p = particles_;
   const PairList& pairs = neighbors_->pairs();
@@ -200,7 +252,7 @@ void Simulation::add_van_der_waals() {
     for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
       if (pairs.contact[k] >= 0) continue;
       const std::uint32_t j = pairs.neighbor[k];
-      const Vec3 separation = p.position[j] - p.position[i];
+      const Vec3 separation = separation_of(p.position[j] - p.position[i]);
       const double distance = norm(separation);
       const double reduced = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
       const auto r = law.at_gap(distance - p.radius[i] - p.radius[j], reduced);

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "engine/contact/model_spec.hpp"
@@ -12,6 +13,7 @@
 #include "engine/dem/neighbor_list.hpp"
 #include "engine/dem/time_step.hpp"
 #include "engine/dem/wall.hpp"
+#include "engine/neighbor/periodic_box.hpp"
 
 namespace aerobreak {
 
@@ -25,6 +27,11 @@ struct SimulationSettings {
   // cluster built at touching distance is bonded whatever the round-off in its coordinates.
   double initial_bond_gap = 0.0;
   BodyForces body;
+  // A box [0, L) periodic along all three axes (no walls or gravity then): pairs interact
+  // through their nearest images, and positions are wrapped back into the box whenever the
+  // neighbour list is rebuilt (Simulation::images counts the wraps). Every edge must exceed twice
+  // the largest diameter plus the interaction margin and the skin.
+  std::optional<PeriodicBox> periodic;
 };
 
 // A DEM run: spheres, walls, one contact model, velocity-Verlet integration of translation and
@@ -37,6 +44,7 @@ class Simulation {
   void step();
   void run(std::int64_t steps);
 
+  // In a periodic box the positions are those wrapped at the last neighbour rebuild (images()).
   const Particles& particles() const { return particles_; }
   // Velocities and angular velocities may be changed between steps (e.g. to launch an impact);
   // positions may not: build a new Simulation for a new configuration.
@@ -57,9 +65,19 @@ class Simulation {
   const ContactModelSpec& model() const { return spec_; }
   const MaterialTable& materials() const { return materials_; }
 
+  const std::optional<PeriodicBox>& periodic_box() const { return settings_.periodic; }
+  // Box lengths by which each particle has been wrapped (all zero in open space).
+  const std::vector<ImageCount>& images() const { return images_; }
+  // Positions as if never wrapped: x_i + n_i L. Equal to the positions in open space.
+  std::vector<Vec3> unwrapped_positions() const;
+  // x_j - x_i, through the nearest image in a periodic box.
+  Vec3 separation(std::size_t i, std::size_t j) const;
+
  private:
   void compute_forces(double formation_gap = 0.0);
-  void add_van_der_waals();
+  template <class Space>
+  void add_van_der_waals(const Space& separation_of);
+  void wrap_positions();
   void close_lost_contacts(const std::vector<std::int32_t>& lost);
   double interaction_margin() const;
   double speed_scale() const;
@@ -84,6 +102,7 @@ class Simulation {
   double external_work_ = 0.0;
   std::vector<double> half_step_per_mass_;     // dt / (2 m_i)
   std::vector<double> half_step_per_inertia_;  // dt / (2 I_i)
+  std::vector<ImageCount> images_;
   double van_der_waals_energy_ = 0.0;
 };
 
