@@ -1,0 +1,154 @@
+// Diffusion-limited cluster-cluster aggregation grown by the engine (report section 3.2, figure 3):
+// one connected, relaxed cluster; reproducible; DLCA fractal scaling; sintering keeps it open.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "engine/cluster/cluster_analysis.hpp"
+#include "engine/cluster/cluster_contacts.hpp"
+#include "engine/cluster/fractal_scaling_fit.hpp"
+#include "engine/growth/diffusion_limited_aggregation.hpp"
+#include "engine/growth/growth_history.hpp"
+
+using namespace aerobreak;
+
+namespace {
+
+DiffusionLimitedParameters parameters(std::size_t n, bool sintering) {
+  DiffusionLimitedParameters p;
+  p.primary_count = n;
+  p.sintering = sintering;
+  return p;
+}
+
+// Deepest overlap r_i + r_j - |x_i - x_j| over all pairs (negative if none touch).
+double deepest_overlap(const Cluster& c) {
+  double deepest = -1e300;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size(); ++j)
+      deepest = std::max(deepest, c.radius[i] + c.radius[j] - norm(c.position[j] - c.position[i]));
+  return deepest;
+}
+
+// JKR zero-load overlap a0^2 / (3 R*) of two unit spheres (eqs 2-4), gamma/k_n = 0.01, nu = 0.3:
+// a0 = (3 pi gamma / 8)^(1/3) d (eq 4 with eq 7).
+double equilibrium_overlap() {
+  const double a0 = std::cbrt(3.0 * std::numbers::pi * 0.01 / 8.0);
+  return a0 * a0 / (3.0 * 0.25);
+}
+
+}  // namespace
+
+TEST_CASE("a grown cluster is one relaxed piece without overlaps beyond the JKR equilibrium") {
+  for (bool sintering : {true, false}) {
+    const DiffusionLimitedResult r = grow_diffusion_limited(parameters(24, sintering), 5);
+    INFO("sintering " << sintering);
+    REQUIRE(r.cluster.size() == 24);
+    CHECK(r.contacts >= 23);
+    CHECK(r.contacts_broken == 0);
+    CHECK(r.image_contacts == 0);
+    // The bonds of the relaxed cluster sit at the zero-load overlap, 0.069 d (a closed loop may
+    // strain one a little); pairs closer than 1.03 d are taken as bonded, which leaves out the
+    // near misses a few hundredths of a diameter apart that fractal clusters have.
+    const ContactGraph graph = find_contacts(r.cluster, 0.03);
+    CHECK(connected_component_sizes(24, graph.contacts) == std::vector<std::size_t>{24});
+    // Measured: the deepest overlap equals the zero-load overlap to 1e-4.
+    CHECK(deepest_overlap(r.cluster) > 0.95 * equilibrium_overlap());
+    CHECK(deepest_overlap(r.cluster) < 1.05 * equilibrium_overlap());
+    CHECK(norm(centre_of_mass(r.cluster)) < 1e-9);
+  }
+}
+
+TEST_CASE("the same seed grows the same cluster, another seed another") {
+  const DiffusionLimitedParameters p = parameters(16, true);
+  const Cluster a = diffusion_limited_aggregation(p, 11);
+  const Cluster b = diffusion_limited_aggregation(p, 11);
+  const Cluster c = diffusion_limited_aggregation(p, 12);
+  CHECK(a.position == b.position);
+  CHECK(a.radius == b.radius);
+  CHECK(a.position != c.position);
+}
+
+TEST_CASE("the growth stops at the step limit, saying how many clusters remain") {
+  DiffusionLimitedParameters p = parameters(40, true);
+  p.max_steps = 20000;
+  std::vector<std::size_t> seen;
+  const auto record = [&](const DiffusionLimitedProgress& g) { seen.push_back(g.clusters); };
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record), Catch::Contains("clusters remain") &&
+                                                              Catch::Contains("after 20000 steps"));
+  REQUIRE(seen.size() == 21);  // at steps 0, 1000, ..., 20000
+  CHECK(seen.front() == 40);
+  CHECK(seen.back() < 40);
+  CHECK(seen.back() > 1);
+  CHECK(std::is_sorted(seen.rbegin(), seen.rend()));
+}
+
+TEST_CASE("invalid growth parameters are rejected by name") {
+  DiffusionLimitedParameters p;
+  p.volume_fraction = 0.0;
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1), Catch::Contains("volume_fraction"));
+  p = {};
+  p.primary_count = 0;
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1), Catch::Contains("primary_count"));
+  p = {};
+  p.persistence_length = 0.0;
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1), Catch::Contains("persistence_length"));
+  p = {};
+  p.primary_count = 1;
+  CHECK(diffusion_limited_aggregation(p, 1).size() == 1);
+}
+
+TEST_CASE("the DLCA ensemble fractal dimension lies in a band around 1.78") {
+  // Rg vs N over every cluster of 4..32 primaries that eight sintered runs of 32 formed on their
+  // way (GrowthHistory), fitted as N = k_f (Rg/a)^D_f (report figure 2b).
+  // Measured over 16 seeds, this estimator has a mean of 1.66 and a seed-to-seed standard
+  // deviation of 0.066 for eight runs (400 draws of 8 of the 16; the fit's own standard error,
+  // ~0.04, is optimistic because a cluster contains its predecessors). The mean sits 0.12 below
+  // the asymptotic DLCA value 1.78 (Meakin 1983; Jullien & Botet 1987): clusters of 4..32
+  // primaries are far from the scaling limit, and thermal flexing closes a few loops (~9 % more
+  // contacts than a tree). Longer histories (12 runs of 64, n >= 8) give 1.84 +- 0.06 and the
+  // final clusters alone of N = 16..64 1.95 +- 0.17 (crowding in the 1 % box, docs/MODEL.md
+  // 11.3). The band 1.78 +- 0.30 holds the estimator's mean with 2.7 standard deviations below
+  // and 6 above; chain-like structure (< 1.4) falls outside, and so does compact structure
+  // above 2.1 (unsintered final clusters give 2.14 +- 0.29). Unsintered growth histories give
+  // 1.89, inside: their compaction is local (twice the contacts), which the next test checks.
+  // These seeds give 1.65 (k_f = 1.71, 81 clusters).
+  GrowthHistory history(4);
+  const auto record = [&](const DiffusionLimitedProgress& g) { history.record(*g.simulation); };
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) grow_diffusion_limited(parameters(32, true), seed, record);
+  const std::vector<SizeRadiusSample> samples = history.samples();
+  const FractalScalingFit fit = fit_fractal_scaling(samples, 0.5);
+  INFO("D_f = " << fit.fractal_dimension << " +- " << fit.fractal_dimension_standard_error << ", k_f = "
+                << fit.prefactor << ", " << samples.size() << " clusters");
+  REQUIRE(samples.size() > 60);
+  CHECK(fit.max_primary_count == 32);
+  CHECK(fit.fractal_dimension > 1.78 - 0.30);
+  CHECK(fit.fractal_dimension < 1.78 + 0.30);
+}
+
+TEST_CASE("sintering keeps the clusters more open (report figure 3)") {
+  // Without the sintering constraints, bonded primaries roll freely about each other and the
+  // clusters fold up; with rolling and twisting resistance they keep the open structure of the
+  // collisions that built them. Measured over 8-16 seeds at N = 16: Rg 1.33 +- 0.12 unsintered
+  // against 1.88 +- 0.29 sintered (ratio 1.41), and 2.2 against 1.04 contacts per primary. With
+  // six seeds each the ratio of the means has a standard error of ~0.10, so 1.10 lies 3 standard
+  // errors below the measured ratio (these seeds give 1.84 / 1.49 = 1.23); the contact counts
+  // differ far more (these seeds: 203 against 101).
+  double open = 0.0, folded = 0.0;
+  std::size_t open_contacts = 0, folded_contacts = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const DiffusionLimitedResult sintered = grow_diffusion_limited(parameters(16, true), seed);
+    const DiffusionLimitedResult free = grow_diffusion_limited(parameters(16, false), seed);
+    open += radius_of_gyration(sintered.cluster);
+    folded += radius_of_gyration(free.cluster);
+    open_contacts += sintered.contacts;
+    folded_contacts += free.contacts;
+  }
+  INFO("mean Rg " << open / 6 << " sintered, " << folded / 6 << " unsintered; contacts " << open_contacts << " and "
+                  << folded_contacts);
+  CHECK(open > 1.10 * folded);
+  CHECK(folded_contacts > open_contacts + 6 * 8);
+}
