@@ -1,0 +1,184 @@
+#include "engine/impact/impact_case.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "engine/impact/schema_text.hpp"
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+JsonSchema load_schema(std::string_view text, const char* name) {
+  try {
+    return JsonSchema(Json::parse(text));
+  } catch (const std::exception& e) {
+    throw std::logic_error(std::string("built-in ") + name + " is not a usable JSON schema: " + e.what());
+  }
+}
+
+NormalLaw normal_law(const std::string& name) {
+  if (name == "dmt") return NormalLaw::dmt;
+  if (name == "hertz") return NormalLaw::hertz;
+  return NormalLaw::jkr;
+}
+
+DampingLaw damping_law(const std::string& name) {
+  if (name == "viscoelastic") return DampingLaw::viscoelastic;
+  if (name == "tsuji") return DampingLaw::tsuji;
+  return DampingLaw::none;
+}
+
+ContactModelSpec model_from(const Json& m) {
+  ContactModelSpec spec;
+  spec.normal = normal_law(m["normal"].get<std::string>());
+  spec.separation = m["separation"].get<std::string>() == "force" ? JkrSeparation::force : JkrSeparation::displacement;
+  const Json& damping = m["damping"];
+  spec.damping = damping_law(damping["law"].get<std::string>());
+  spec.dissipative_time = damping["dissipative_time"].get<double>();
+  spec.restitution = damping["restitution"].get<double>();
+  spec.tangential = m["tangential"].get<bool>();
+  spec.friction = m["friction"].get<double>();
+  spec.rolling = m["rolling"]["enabled"].get<bool>();
+  if (m["rolling"].contains("critical_displacement"))
+    spec.critical_rolling = m["rolling"]["critical_displacement"].get<double>();
+  spec.twisting = m["twisting"].get<bool>();
+  if (m.contains("van_der_waals")) {
+    spec.van_der_waals = true;
+    spec.hamaker.hamaker = m["van_der_waals"]["hamaker"].get<double>();
+    spec.hamaker.min_separation = m["van_der_waals"]["min_separation"].get<double>();
+    spec.hamaker.cutoff = m["van_der_waals"]["cutoff"].get<double>();
+  }
+  return spec;
+}
+
+}  // namespace
+
+const JsonSchema& case_schema() {
+  static const JsonSchema schema = load_schema(case_schema_text(), "schemas/case.schema.json");
+  return schema;
+}
+
+const JsonSchema& result_schema() {
+  static const JsonSchema schema = load_schema(result_schema_text(), "schemas/result.schema.json");
+  return schema;
+}
+
+ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory) {
+  std::vector<SchemaViolation> violations = case_schema().validate_and_complete(document);
+  if (!violations.empty()) throw CaseError(std::move(violations));
+
+  ImpactCase c;
+  c.document = document;
+  const Json& d = c.document;
+  c.name = d.value("name", std::string());
+
+  // Rules the schema does not state; each names the field to change.
+  auto violation = [&](const std::string& pointer, const std::string& message) {
+    violations.push_back({pointer, message});
+  };
+
+  const Json& m = d["material"];
+  if (d["units"].get<std::string>() == "physical") {
+    PhysicalScaling scaling;
+    scaling.material.youngs_modulus = m["youngs_modulus"].get<double>();
+    scaling.material.poisson_ratio = m["poisson_ratio"].get<double>();
+    scaling.material.density = m["density"].get<double>();
+    scaling.material.surface_energy = m["surface_energy"].get<double>();
+    scaling.diameter = m["diameter"].get<double>();
+    scaling.softening = m["softening"].get<double>();
+    c.physical = scaling;
+    c.material = scaling.reduced();
+    c.speed = scaling.reduced_speed(d["impact"]["speed"].get<double>());
+  } else {
+    c.material = reduced_material(m["gamma_over_kn"].get<double>(), m["poisson_ratio"].get<double>());
+    c.speed = d["impact"]["speed"].get<double>();
+  }
+
+  // Wall material: the primaries' unless given; reduced like them (E in k_n/d, gamma in k_n).
+  c.wall_adhesive = d["wall"]["adhesive"].get<bool>();
+  c.wall_material = c.material;
+  if (d["wall"].contains("material")) {
+    const Json& w = d["wall"]["material"];
+    if (c.physical) {
+      const double kn = c.physical->stiffness();
+      c.wall_material.youngs_modulus = w["youngs_modulus"].get<double>() * c.physical->diameter / kn;
+      c.wall_material.poisson_ratio = w["poisson_ratio"].get<double>();
+      c.wall_material.surface_energy = w["surface_energy"].get<double>() / kn;
+    } else {
+      c.wall_material.youngs_modulus = c.material.youngs_modulus * w["youngs_modulus_ratio"].get<double>();
+      c.wall_material.poisson_ratio = w.value("poisson_ratio", c.material.poisson_ratio);
+      c.wall_material.surface_energy = w.value("gamma_over_kn", c.material.surface_energy);
+    }
+  }
+
+  c.model = model_from(d["model"]);
+  const bool adhesive_law = c.model.normal != NormalLaw::hertz;
+  const std::string energy_field = c.physical ? "/material/surface_energy" : "/material/gamma_over_kn";
+  if (adhesive_law && !(c.material.surface_energy > 0.0))
+    violation(energy_field, "must be > 0 for the " + d["model"]["normal"].get<std::string>() +
+                                " law (use \"normal\": \"hertz\" for spheres without adhesion)");
+  if (adhesive_law && c.wall_adhesive && !(c.wall_material.surface_energy + c.material.surface_energy > 0.0))
+    violation(c.physical ? "/wall/material/surface_energy" : "/wall/material/gamma_over_kn",
+              "must be > 0 for an adhesive wall (or set /wall/adhesive to false)");
+  if (c.model.rolling && !adhesive_law)
+    violation("/model/rolling/enabled", "rolling resistance needs an adhesive normal law (k_r = 4 F_c (a/a0)^(3/2), eq 18)");
+  if (c.model.van_der_waals && !(c.model.hamaker.cutoff > c.model.hamaker.min_separation))
+    violation("/model/van_der_waals/cutoff", "must exceed /model/van_der_waals/min_separation");
+  if (c.model.damping == DampingLaw::viscoelastic && !(c.model.dissipative_time > 0.0))
+    violation("/model/damping/dissipative_time", "must be > 0 for visco-elastic damping");
+  if (c.model.damping == DampingLaw::tsuji && !(c.model.restitution < 1.0))
+    violation("/model/damping/restitution", "must be < 1 for Tsuji damping (1 is no damping: use \"law\": \"none\")");
+
+  const Json& cl = d["cluster"];
+  c.cluster.relax = cl["relax"].get<bool>();
+  if (cl.contains("generator")) {
+    c.cluster.kind = ClusterSource::Kind::ballistic;
+    c.cluster.primaries = cl["generator"]["primaries"].get<std::size_t>();
+    c.cluster.seed = cl["generator"]["seed"].get<std::uint64_t>();
+    c.cluster.geometric_standard_deviation = cl["generator"]["geometric_standard_deviation"].get<double>();
+  } else {
+    c.cluster.kind = ClusterSource::Kind::file;
+    std::filesystem::path path = cl["file"]["path"].get<std::string>();
+    if (path.is_relative() && !base_directory.empty()) path = base_directory / path;
+    c.cluster.file = path;
+    c.cluster.default_radius = cl["file"]["default_radius"].get<double>();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) violation("/cluster/file/path", "no such file: " + path.string());
+  }
+
+  const Json& im = d["impact"];
+  c.angle_degrees = im["angle"].get<double>();
+  c.orientation_seed = im["orientation_seed"].get<std::uint64_t>();
+  c.gap = im["gap"].get<double>();
+
+  c.largest_fragment_share = d["classification"]["largest_fragment_share"].get<double>();
+
+  const Json& run = d["run"];
+  c.time_limit = run["time_limit"].get<double>();
+  c.snapshot_interval = run.value("snapshot_interval", 0.0);
+  c.time_step = run.value("time_step", 0.0);
+  c.steps_per_period = run["steps_per_period"].get<double>();
+  c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);
+  c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
+  if (c.time_step > 0.0 && c.time_step >= c.time_limit)
+    violation("/run/time_step", "must be smaller than /run/time_limit");
+
+  if (!violations.empty()) throw CaseError(std::move(violations));
+  return c;
+}
+
+ImpactCase load_impact_case(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw CaseError({{"", "cannot open case file " + path.string()}});
+  Json document;
+  try {
+    document = Json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw CaseError({{"", path.string() + " is not valid JSON: " + e.what()}});
+  }
+  return parse_impact_case(std::move(document), path.parent_path());
+}
+
+}  // namespace aerobreak

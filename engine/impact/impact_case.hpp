@@ -1,0 +1,86 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/contact/model_spec.hpp"
+#include "engine/core/material.hpp"
+#include "engine/core/units.hpp"
+#include "engine/impact/json_schema.hpp"
+
+namespace aerobreak {
+
+// Where the cluster of a case comes from.
+struct ClusterSource {
+  enum class Kind { ballistic, file };
+  Kind kind = Kind::ballistic;
+  std::size_t primaries = 0;                  // ballistic
+  std::uint64_t seed = 0;                     // ballistic
+  double geometric_standard_deviation = 1.0;  // ballistic
+  std::filesystem::path file;                 // file (resolved against the case file's directory)
+  double default_radius = 0.5;                // file
+  bool relax = true;
+};
+
+// When an impact counts as settled (docs/IMPACT.md, "Settle criterion").
+struct SettleCriteria {
+  double quiet_window = 0.0;          // tau; 0: automatic
+  double rest_speed_fraction = 0.01;  // of the impact speed
+};
+
+// One impact case, in reduced units (d, m, tau = sqrt(m/k_n)), as schemas/case.schema.json
+// describes it. `document` is the case as given, completed with the schema's defaults: it is what
+// the result records.
+struct ImpactCase {
+  nlohmann::ordered_json document;
+  std::string name;
+
+  std::optional<PhysicalScaling> physical;  // set for "units": "physical"
+  Material material;                        // the primaries, reduced
+  Material wall_material;                   // reduced
+  bool wall_adhesive = true;
+  ContactModelSpec model;
+  ClusterSource cluster;
+
+  double speed = 0.0;             // d/tau
+  double angle_degrees = 0.0;     // from head-on
+  std::uint64_t orientation_seed = 0;
+  double gap = 0.01;              // d
+
+  double largest_fragment_share = 0.9;
+
+  double time_limit = 0.0;         // tau
+  double snapshot_interval = 0.0;  // tau; 0: first and last frames only
+  double time_step = 0.0;          // tau; 0: automatic
+  double steps_per_period = 50.0;
+  SettleCriteria settle;
+};
+
+// A case that breaks its schema or the physics' rules: every violation, each naming the field by
+// its JSON pointer (e.g. "/model/friction: must be >= 0 (got -1)").
+class CaseError : public std::invalid_argument {
+ public:
+  explicit CaseError(std::vector<SchemaViolation> violations)
+      : std::invalid_argument(describe(violations)), violations_(std::move(violations)) {}
+  const std::vector<SchemaViolation>& violations() const { return violations_; }
+
+ private:
+  std::vector<SchemaViolation> violations_;
+};
+
+// The case and result schemas (schemas/*.schema.json, compiled in).
+const JsonSchema& case_schema();
+const JsonSchema& result_schema();
+
+// Validates against schemas/case.schema.json, completes the defaults, checks the rules the schema
+// cannot state (an adhesive law needs a surface energy, ...) and converts to reduced units.
+// Relative cluster file paths are resolved against `base_directory`. Throws CaseError.
+ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory = {});
+// Reads and parses a case file; a file that is not JSON throws CaseError naming the parse error.
+ImpactCase load_impact_case(const std::filesystem::path& path);
+
+}  // namespace aerobreak

@@ -1,0 +1,93 @@
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/cluster/rotation.hpp"
+#include "engine/dem/contact_forces.hpp"
+#include "engine/dem/energy_budget.hpp"
+#include "engine/dem/time_step.hpp"
+#include "engine/impact/fragments.hpp"
+#include "engine/impact/impact_case.hpp"
+#include "engine/impact/json_schema.hpp"
+#include "engine/impact/outcome.hpp"
+
+namespace aerobreak {
+
+// Structure of a cluster (or of the largest fragment) before or after the impact.
+struct ClusterShape {
+  std::size_t primaries = 0;
+  double radius_of_gyration = 0.0;  // of the primaries' centres, mass-weighted (cluster_analysis.hpp)
+  double fractal_dimension = 0.0;   // mass-radius dimension (cluster_analysis.hpp); NaN when Rg < 8 d
+  double coordination = 0.0;        // 2 x particle-particle contacts / primaries
+};
+
+struct RelaxationSummary {
+  bool performed = false;
+  bool converged = false;
+  std::int64_t steps = 0;
+  std::size_t contacts = 0;
+  std::uint64_t contacts_broken = 0;
+  double wall_clock_seconds = 0.0;
+};
+
+// Everything one impact run produces (schemas/result.schema.json is its JSON form). Reduced units.
+struct ImpactResult {
+  ImpactCase impact_case;
+
+  // Set-up
+  std::size_t primaries = 0;
+  Rotation orientation;
+  Vec3 wall_normal{0.0, 0.0, 1.0};
+  Vec3 impact_velocity;
+  double impact_kinetic_energy = 0.0;  // of the whole cluster, 1/2 M v^2
+  RelaxationSummary relaxation;
+
+  // Run
+  TimeStepEstimate time_step_estimate;
+  double time_step = 0.0;
+  std::int64_t steps = 0;
+  double simulated_time = 0.0;
+  bool settled = false;
+  double settled_at = 0.0;
+  double quiet_since = 0.0;
+  double quiet_window = 0.0;
+  double rest_speed = 0.0;
+  std::string unsettled_reason;  // the settle criterion's last objection (undetermined runs)
+  double wall_clock_seconds = 0.0;
+  double particle_steps_per_second = 0.0;
+  std::uint64_t neighbor_builds = 0;
+  std::size_t snapshots = 0;
+
+  // Contacts
+  std::size_t initial_contacts = 0;  // particle-particle, at the start of the impact run
+  std::size_t final_contacts = 0;
+  std::size_t final_wall_contacts = 0;
+  ContactEvents pair_events;  // made and broken during the impact (the starting bonds not counted)
+  ContactEvents wall_events;
+
+  // Outcome
+  std::vector<Fragment> fragments;  // largest first
+  std::vector<Vec3> fragment_mean_velocity;  // over the settling quiet window; empty if not settled
+  Classification classification;
+  // Largest fragment, from its window-mean velocity when settled: v_n after / |v_n| before.
+  double restitution_normal = 0.0;
+  double restitution_tangential = 0.0;  // v_t after / v_t before along the impact's tangent; NaN head-on
+  double mass_fraction_on_wall = 0.0;
+  ClusterShape before;  // the relaxed cluster
+  ClusterShape after;   // the largest fragment at the end
+
+  // Energy
+  EnergyBudget initial_energy;
+  EnergyBudget final_energy;
+  double fragment_translational_kinetic = 0.0;  // sum of 1/2 M_f v_f^2 at the end
+};
+
+// The result document (schemas/result.schema.json). Non-finite numbers are written as null.
+nlohmann::ordered_json to_json(const ImpactResult& result);
+
+// Checks a result document against schemas/result.schema.json.
+std::vector<SchemaViolation> validate_result(const nlohmann::ordered_json& document);
+
+}  // namespace aerobreak

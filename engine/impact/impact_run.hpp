@@ -1,0 +1,54 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "engine/cluster/cluster.hpp"
+#include "engine/core/particles.hpp"
+#include "engine/impact/impact_case.hpp"
+#include "engine/impact/impact_result.hpp"
+
+namespace aerobreak {
+
+class Simulation;
+
+// Where a running impact stands (for progress output).
+struct ImpactProgress {
+  double time = 0.0;
+  double time_limit = 0.0;
+  std::int64_t steps = 0;
+  double steps_per_second = 0.0;
+  double particle_steps_per_second = 0.0;
+  std::size_t contacts = 0;       // particle-particle
+  std::size_t wall_contacts = 0;
+  std::size_t fragments = 0;
+  double kinetic_energy = 0.0;
+};
+
+struct ImpactRunOptions {
+  // Called with the simulation at the start, every snapshot interval of the case, and at the end.
+  std::function<void(const Simulation&)> snapshot;
+  // Called about every `progress_seconds` of wall-clock time while the impact runs.
+  std::function<void(const ImpactProgress&)> progress;
+  double progress_seconds = 2.0;
+  // One-line notes on the set-up stages (cluster built, relaxed, ...).
+  std::function<void(const std::string&)> log;
+};
+
+// The cluster of a case as it enters the impact: generated or read, then relaxed (unless the case
+// says not to or the normal law has no adhesion). Returns the particles (at rest, centred where the
+// source put them) and fills `relaxation`.
+Particles prepare_cluster(const ImpactCase& impact_case, RelaxationSummary& relaxation,
+                          const std::function<void(const std::string&)>& log = {});
+
+// Runs one impact case end to end (docs/IMPACT.md): prepares the cluster, turns it to the seeded
+// random orientation, places it `gap` above the wall with every primary at the impact velocity,
+// runs until the settle criterion holds or the time limit comes, and analyses the final state.
+// Throws std::invalid_argument / std::runtime_error for cases the engine cannot run.
+ImpactResult run_impact(const ImpactCase& impact_case, const ImpactRunOptions& options = {});
+
+// The orientation and velocity a case prescribes, for a wall with normal +z.
+Rotation impact_orientation(const ImpactCase& impact_case);
+Vec3 impact_velocity(const ImpactCase& impact_case);
+
+}  // namespace aerobreak

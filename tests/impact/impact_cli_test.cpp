@@ -1,0 +1,100 @@
+// `aerobreak impact`: a case file in, a valid result document out; invalid cases are refused
+// with the offending field named on stderr and exit status 1.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <unistd.h>
+
+#include "engine/impact/impact_result.hpp"
+#include "impact_support.hpp"
+
+using namespace aerobreak;
+using Json = nlohmann::ordered_json;
+using Catch::Matchers::Contains;
+
+namespace {
+
+struct CommandOutput {
+  std::string text;
+  int exit_code;
+};
+
+CommandOutput run_command(const std::string& command) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
+  REQUIRE(pipe);
+  std::string text;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) text += buffer.data();
+  const int status = pclose(pipe.release());
+  return {text, WEXITSTATUS(status)};
+}
+
+// A scratch directory removed with its contents at the end of the test.
+struct Scratch {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("aerobreak_impact_cli_" + std::to_string(::getpid()));
+  Scratch() { std::filesystem::create_directories(dir); }
+  ~Scratch() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+  std::string write(const std::string& name, const Json& document) const {
+    const auto path = dir / name;
+    std::ofstream(path) << document.dump(2);
+    return path.string();
+  }
+};
+
+}  // namespace
+
+TEST_CASE("aerobreak impact runs a case and writes a valid result document and trajectories") {
+  Scratch scratch;
+  Json c = testing::minimal_case();
+  c["run"]["time_limit"] = 400.0;
+  c["run"]["snapshot_interval"] = 100.0;
+  const std::string case_file = scratch.write("case.json", c);
+  const std::string result_file = (scratch.dir / "result.json").string();
+  const std::string trajectory = (scratch.dir / "trajectory.h5").string();
+  const std::string xyz = (scratch.dir / "trajectory.xyz").string();
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + case_file + " -o " + result_file +
+                               " --trajectory " + trajectory + " --xyz " + xyz + " --progress-seconds 0.001");
+  INFO(out.text);
+  REQUIRE(out.exit_code == 0);
+  CHECK_THAT(out.text, Contains("impact: t = "));  // progress on stderr
+  std::ifstream in(result_file);
+  const Json result = Json::parse(in);
+  const auto violations = validate_result(result);
+  INFO(describe(violations));
+  CHECK(violations.empty());
+  CHECK(result["case"]["run"]["time_limit"] == 400.0);
+  CHECK(result["run"]["snapshots"].get<int>() >= 5);
+  CHECK(std::filesystem::file_size(trajectory) > 0);
+  std::ifstream frames(xyz);
+  std::string first;
+  std::getline(frames, first);
+  CHECK(first == "8");
+}
+
+TEST_CASE("aerobreak impact refuses an invalid case and names the field") {
+  Scratch scratch;
+  Json c = testing::minimal_case();
+  c["model"] = {{"friction", -0.5}};
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c));
+  CHECK(out.exit_code == 1);
+  CHECK_THAT(out.text, Contains("/model/friction: must be >= 0 (got -0.5)"));
+}
+
+TEST_CASE("aerobreak impact --check writes the case completed with its defaults") {
+  Scratch scratch;
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact --check " +
+                               scratch.write("case.json", testing::minimal_case()));
+  REQUIRE(out.exit_code == 0);
+  const Json completed = Json::parse(out.text);
+  CHECK(completed["model"]["normal"] == "jkr");
+  CHECK(completed["impact"]["gap"] == 0.01);
+}
