@@ -1,14 +1,17 @@
 // Timing of ballistic cluster-cluster aggregation (monodisperse) at a few sizes: clusters per
 // second and seconds per cluster, each size repeated until at least a second has been spent.
-// Then diffusion-limited aggregation grown by the engine (engine/growth, default parameters,
-// sintered), one cluster per size.
+// Then tunable (FracVAL) aggregation at Df = 1.8 and 2.6, likewise, and diffusion-limited
+// aggregation grown by the engine (engine/growth, default parameters, sintered), one cluster per
+// size.
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <utility>
 
 #include "engine/cluster/ballistic_aggregation.hpp"
+#include "engine/cluster/tunable_aggregation.hpp"
 #include "engine/growth/diffusion_limited_aggregation.hpp"
 
 int main() {
@@ -25,6 +28,25 @@ int main() {
       elapsed = std::chrono::duration<double>(clock::now() - start).count();
     }
     std::printf("%8zu %10d %16.2f %18.6f\n", n, clusters, clusters / elapsed, elapsed / clusters);
+  }
+
+  // Tunable (FracVAL) aggregation, monodisperse, at a low and a high fractal dimension; each size
+  // repeated until at least a second has been spent.
+  for (const auto& [df, kf] : {std::pair{1.8, 1.3}, std::pair{2.6, 1.0}}) {
+    std::printf("\nTunable (FracVAL), Df = %.1f, kf = %.1f\n%8s %10s %16s %18s\n", df, kf, "N",
+                "clusters", "clusters/s", "seconds/cluster");
+    for (std::size_t n : {256, 1024, 4096}) {
+      int clusters = 0;
+      const auto start = clock::now();
+      double elapsed = 0.0;
+      while (elapsed < 1.0 || clusters < 3) {
+        aerobreak::tunable_cluster_aggregation(
+            {.primary_count = n, .fractal_dimension = df, .prefactor = kf}, seed++);
+        ++clusters;
+        elapsed = std::chrono::duration<double>(clock::now() - start).count();
+      }
+      std::printf("%8zu %10d %16.2f %18.6f\n", n, clusters, clusters / elapsed, elapsed / clusters);
+    }
   }
 
   // DLCA: one cluster at N = 64 and 256 (minutes; the time varies several-fold with the seed,
