@@ -7,6 +7,7 @@
 #include "engine/core/version.hpp"
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
+#include "orchestrator/cli/cluster_command.hpp"
 
 namespace {
 
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
   add_planned(app, "serve", "Start the orchestrator service (REST API and web page)", exit_code);
   add_planned(app, "study", "Submit, inspect or cancel studies on a running service", exit_code);
   aerobreak::add_impact_command(app, exit_code);
-  add_planned(app, "cluster", "Generate, analyse or convert fractal clusters", exit_code);
+  aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);
 
   try {

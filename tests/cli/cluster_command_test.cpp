@@ -1,0 +1,223 @@
+// `aerobreak cluster generate|analyze|convert`, run as the real program on files in a fresh
+// temporary directory.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+struct CommandOutput {
+  std::string text;  // stdout and stderr together
+  int exit_code;
+};
+
+CommandOutput run_aerobreak(const std::string& arguments) {
+  const std::string command = std::string(AEROBREAK_BINARY) + " " + arguments + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  REQUIRE(pipe);
+  std::string text;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) text += buffer.data();
+  const int status = pclose(pipe.release());
+  return {text, WEXITSTATUS(status)};
+}
+
+// Only stdout, for output that is parsed (progress goes to stderr).
+CommandOutput run_aerobreak_stdout(const std::string& arguments) {
+  return run_aerobreak(arguments + " 2>/dev/null");
+}
+
+// A fresh directory, removed with everything in it at the end of the test.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    static std::atomic<unsigned> counter{0};
+    path_ = std::filesystem::temp_directory_path() /
+            ("aerobreak_cluster_cli_" + std::to_string(::getpid()) + "_" + std::to_string(std::random_device{}()) +
+             "_" + std::to_string(counter++));
+    std::filesystem::create_directories(path_);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+const char* const kSmallLibrary = "cluster generate --primaries 32 --count 3 --seed 5";
+
+}  // namespace
+
+TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a table and as JSON") {
+  const TemporaryDirectory dir;
+  const std::string library = dir.file("clusters.h5");
+  const CommandOutput generated = run_aerobreak(std::string(kSmallLibrary) + " --output " + library);
+  INFO(generated.text);
+  REQUIRE(generated.exit_code == 0);
+  CHECK(generated.text.find("[3/3] bcca-N32-seed5-2: N = 32, Rg = ") != std::string::npos);
+  CHECK(generated.text.find("stored 3 clusters in " + library) != std::string::npos);
+
+  const CommandOutput table = run_aerobreak_stdout("cluster analyze " + library);
+  INFO(table.text);
+  REQUIRE(table.exit_code == 0);
+  const std::vector<std::string> rows = lines_of(table.text);
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0].rfind("name", 0) == 0);
+  CHECK(rows[0].find("porosity") != std::string::npos);
+  for (int i = 1; i <= 3; ++i) {
+    CHECK(rows[i].rfind("bcca-N32-seed5-" + std::to_string(i - 1), 0) == 0);
+    CHECK(rows[i].size() == rows[0].size());
+  }
+
+  const CommandOutput json_output = run_aerobreak_stdout("cluster analyze --json " + library);
+  REQUIRE(json_output.exit_code == 0);
+  const nlohmann::json parsed = nlohmann::json::parse(json_output.text);
+  REQUIRE(parsed.at("clusters").size() == 3);
+  for (const auto& cluster : parsed.at("clusters")) {
+    CHECK(cluster.at("primary_count") == 32);
+    CHECK(cluster.at("component_count") == 1);
+    CHECK(cluster.at("relaxed") == true);
+    CHECK(cluster.at("generator") == "bcca");
+    for (const char* key : {"name", "radius_of_gyration", "maximum_extent", "contact_count",
+                            "mean_coordination_number", "filling_factor", "porosity", "mass_radius_dimension"})
+      CHECK(cluster.contains(key));
+    CHECK(cluster.at("radius_of_gyration").get<double>() > 1.0);
+  }
+  CHECK(parsed.at("ensemble_fit").is_null());
+
+  const CommandOutput one = run_aerobreak_stdout("cluster analyze --json --name bcca-N32-seed5-1 " + library);
+  REQUIRE(one.exit_code == 0);
+  CHECK(nlohmann::json::parse(one.text).at("clusters").size() == 1);
+}
+
+TEST_CASE("cluster analyze fits Df and kf over a library of several sizes") {
+  const TemporaryDirectory dir;
+  const std::string library = dir.file("sizes.h5");
+  for (const char* size : {"8", "16", "32"})
+    REQUIRE(run_aerobreak("cluster generate --no-relax --count 2 --seed 1 --primaries " + std::string(size) +
+                          " --output " + library)
+                .exit_code == 0);
+  const CommandOutput json_output = run_aerobreak_stdout("cluster analyze --json " + library);
+  REQUIRE(json_output.exit_code == 0);
+  const nlohmann::json fit = nlohmann::json::parse(json_output.text).at("ensemble_fit");
+  CHECK(fit.at("sample_count") == 6);
+  CHECK(fit.at("fractal_dimension").get<double>() > 1.0);
+  CHECK(fit.at("fractal_dimension").get<double>() < 3.0);
+  CHECK(fit.at("fractal_dimension_standard_error").get<double>() > 0.0);
+  CHECK(fit.at("prefactor").get<double>() > 0.0);
+
+  const CommandOutput table = run_aerobreak_stdout("cluster analyze " + library);
+  CHECK(table.text.find("ensemble fit N = kf (Rg/a)^Df over 6 clusters") != std::string::npos);
+}
+
+TEST_CASE("cluster generate --generator tunable records the prefactor it imposed") {
+  const TemporaryDirectory dir;
+  const std::string library = dir.file("tunable.h5");
+  const CommandOutput generated = run_aerobreak(
+      "cluster generate --generator tunable --df 1.8 --kf 1.3 --primaries 32 --count 2 --seed 3 --output " + library);
+  INFO(generated.text);
+  REQUIRE(generated.exit_code == 0);
+  const nlohmann::json parsed = nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json " + library).text);
+  REQUIRE(parsed.at("clusters").size() == 2);
+  for (const auto& cluster : parsed.at("clusters")) {
+    CHECK(cluster.at("generator") == "tunable");
+    CHECK(cluster.at("prefactor") == 1.3);
+    CHECK(cluster.at("primary_count") == 32);
+    CHECK(cluster.at("component_count") == 1);
+  }
+  const CommandOutput incomplete =
+      run_aerobreak("cluster generate --generator tunable --df 1.8 --primaries 32 --output " + library);
+  CHECK(incomplete.exit_code != 0);
+  CHECK(incomplete.text.find("needs --df and --kf") != std::string::npos);
+}
+
+TEST_CASE("cluster convert turns a library entry into XYZ and back without change") {
+  const TemporaryDirectory dir;
+  const std::string library = dir.file("clusters.h5");
+  REQUIRE(run_aerobreak(std::string(kSmallLibrary) + " --output " + library).exit_code == 0);
+
+  const std::string xyz = dir.file("one.xyz");
+  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name bcca-N32-seed5-1").exit_code == 0);
+  const std::string back = dir.file("back.h5");
+  REQUIRE(run_aerobreak("cluster convert " + xyz + " " + back).exit_code == 0);
+  const std::string again = dir.file("again.xyz");
+  REQUIRE(run_aerobreak("cluster convert " + back + " " + again + " --name one").exit_code == 0);
+  CHECK(file_bytes(again) == file_bytes(xyz));
+
+  const nlohmann::json original =
+      nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json --name bcca-N32-seed5-1 " + library).text);
+  const nlohmann::json converted = nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json " + xyz).text);
+  CHECK(converted.at("clusters")[0].at("radius_of_gyration") == original.at("clusters")[0].at("radius_of_gyration"));
+  CHECK(converted.at("clusters")[0].at("name") == "one");
+}
+
+TEST_CASE("cluster generate is deterministic for a seed and differs between seeds") {
+  const TemporaryDirectory dir;
+  const std::string base = "cluster generate --primaries 32 --xyz ";
+  REQUIRE(run_aerobreak(base + dir.file("a.xyz") + " --seed 9").exit_code == 0);
+  REQUIRE(run_aerobreak(base + dir.file("b.xyz") + " --seed 9").exit_code == 0);
+  REQUIRE(run_aerobreak(base + dir.file("c.xyz") + " --seed 10").exit_code == 0);
+  CHECK(!file_bytes(dir.file("a.xyz")).empty());
+  CHECK(file_bytes(dir.file("a.xyz")) == file_bytes(dir.file("b.xyz")));
+  CHECK(file_bytes(dir.file("a.xyz")) != file_bytes(dir.file("c.xyz")));
+}
+
+TEST_CASE("cluster commands reject bad input with a message and a non-zero exit") {
+  const TemporaryDirectory dir;
+  const std::string library = dir.file("lib.h5");
+  const auto fails_with = [](const std::string& arguments, const std::string& message) {
+    const CommandOutput out = run_aerobreak(arguments);
+    INFO(arguments << "\n" << out.text);
+    CHECK(out.exit_code != 0);
+    CHECK(out.text.find(message) != std::string::npos);
+  };
+  fails_with("cluster generate --generator dla --primaries 8 --output " + library, "unknown generator 'dla'");
+  fails_with("cluster generate --primaries 0 --output " + library, "--primaries must be at least 1");
+  fails_with("cluster generate --primaries 8", "give either --output FILE.h5 or --xyz FILE.xyz");
+  fails_with("cluster generate --primaries 8 --count 2 --xyz " + dir.file("x.xyz"), "holds one cluster");
+  fails_with("cluster generate --primaries 8 --df 1.8 --kf 1.3 --output " + library, "do not apply");
+  fails_with("cluster analyze " + dir.file("missing.h5"), "no such file: " + dir.file("missing.h5"));
+
+  std::ofstream(dir.file("bad.xyz")) << "0 0 0 0.5\n1 0 0 0.5\n1 x 0 0.5\n";
+  fails_with("cluster analyze " + dir.file("bad.xyz"), ":3:");
+  fails_with("cluster convert " + dir.file("bad.xyz") + " " + library, "'x' is not a number");
+
+  REQUIRE(run_aerobreak("cluster generate --no-relax --primaries 8 --output " + library).exit_code == 0);
+  fails_with("cluster generate --no-relax --primaries 8 --output " + library, "already holds a cluster");
+  fails_with("cluster analyze --name nope " + library, "'nope'");
+  fails_with("cluster convert " + library + " " + dir.file("out.xyz"), "needs --name");
+  CHECK_FALSE(std::filesystem::exists(dir.file("out.xyz")));
+}
