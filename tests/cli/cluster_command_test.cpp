@@ -2,6 +2,8 @@
 // temporary directory.
 #include <catch2/catch.hpp>
 
+#include "tests/support/run_command.hpp"
+
 #include <unistd.h>
 
 #include <array>
@@ -20,25 +22,15 @@
 
 namespace {
 
-struct CommandOutput {
-  std::string text;  // stdout and stderr together
-  int exit_code;
-};
+using aerobreak::testing::CommandOutput;
 
 CommandOutput run_aerobreak(const std::string& arguments) {
-  const std::string command = std::string(AEROBREAK_BINARY) + " " + arguments + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  REQUIRE(pipe);
-  std::string text;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) text += buffer.data();
-  const int status = pclose(pipe.release());
-  return {text, WEXITSTATUS(status)};
+  return aerobreak::testing::run_command(std::string(AEROBREAK_BINARY) + " " + arguments);
 }
 
 // Only stdout, for output that is parsed (progress goes to stderr).
 CommandOutput run_aerobreak_stdout(const std::string& arguments) {
-  return run_aerobreak(arguments + " 2>/dev/null");
+  return aerobreak::testing::run_command(std::string(AEROBREAK_BINARY) + " " + arguments, true);
 }
 
 // A fresh directory, removed with everything in it at the end of the test.

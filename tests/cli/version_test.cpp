@@ -1,31 +1,12 @@
 #include <catch2/catch.hpp>
 
-#include <array>
-#include <cstdio>
-#include <memory>
 #include <regex>
 #include <string>
 
 #include "engine/core/version.hpp"
+#include "tests/support/run_command.hpp"
 
-namespace {
-
-struct CommandOutput {
-  std::string text;
-  int exit_code;
-};
-
-CommandOutput run_command(const std::string& command) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-  REQUIRE(pipe);
-  std::string text;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) text += buffer.data();
-  const int status = pclose(pipe.release());
-  return {text, WEXITSTATUS(status)};
-}
-
-}  // namespace
+using aerobreak::testing::run_command;
 
 TEST_CASE("aerobreak --version prints the project version and a git commit") {
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " --version");

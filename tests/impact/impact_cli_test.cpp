@@ -2,6 +2,8 @@
 // with the offending field named on stderr and exit status 1.
 #include <catch2/catch.hpp>
 
+#include "tests/support/run_command.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -19,20 +21,7 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-struct CommandOutput {
-  std::string text;
-  int exit_code;
-};
-
-CommandOutput run_command(const std::string& command) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-  REQUIRE(pipe);
-  std::string text;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) text += buffer.data();
-  const int status = pclose(pipe.release());
-  return {text, WEXITSTATUS(status)};
-}
+using aerobreak::testing::run_command;
 
 // A scratch directory removed with its contents at the end of the test.
 struct Scratch {
