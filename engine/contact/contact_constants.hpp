@@ -1,4 +1,5 @@
 #pragma once
+#include "engine/core/material.hpp"
 
 namespace aerobreak {
 
@@ -35,20 +36,27 @@ struct NormalResponse {
 
 namespace aerobreak {
 
-// Effective radius and mass of two spheres (DESIGN.md: R* = RiRj/(Ri+Rj), m* likewise).
-inline ContactConstants sphere_pair_constants(double radius_i, double mass_i, double radius_j, double mass_j) {
+// A contact's geometry and material before the normal law completes it.
+inline ContactConstants unfinished_constants(double radius, double mass, const PairMaterial& material) {
   ContactConstants c;
-  c.radius = radius_i * radius_j / (radius_i + radius_j);
-  c.mass = mass_i * mass_j / (mass_i + mass_j);
+  c.radius = radius;
+  c.mass = mass;
+  c.modulus = material.modulus;
+  c.shear = material.shear;
+  c.work_of_adhesion = material.work_of_adhesion;
   return c;
 }
 
+// Two spheres (DESIGN.md: R* = RiRj/(Ri+Rj), m* likewise) of the given pair of materials.
+inline ContactConstants sphere_pair_constants(double radius_i, double mass_i, double radius_j, double mass_j,
+                                              const PairMaterial& material) {
+  return unfinished_constants(radius_i * radius_j / (radius_i + radius_j), mass_i * mass_j / (mass_i + mass_j),
+                              material);
+}
+
 // A wall is a sphere of infinite radius and mass: R* = R_i, m* = m_i.
-inline ContactConstants sphere_wall_constants(double radius_i, double mass_i) {
-  ContactConstants c;
-  c.radius = radius_i;
-  c.mass = mass_i;
-  return c;
+inline ContactConstants sphere_wall_constants(double radius_i, double mass_i, const PairMaterial& material) {
+  return unfinished_constants(radius_i, mass_i, material);
 }
 
 }  // namespace aerobreak

@@ -48,8 +48,7 @@ class ContactForcesFor final : public ContactForces {
       if (slot < 0) {
         if (overlap <= 0.0) continue;
         ContactState state;
-        state.constants = sphere_wall_constants(p.radius[i], p.mass[i]);
-        set_material(state.constants, materials.pair(p.material[i], wall.material));
+        state.constants = sphere_wall_constants(p.radius[i], p.mass[i], materials.pair(p.material[i], wall.material));
         state.i = i;
         state.j = wall_index;
         state.with_wall = true;
@@ -143,17 +142,11 @@ class ContactForcesFor final : public ContactForces {
     ledger.events.deepest_overlap_ratio = deepest;
   }
 
-  static void set_material(ContactConstants& c, const PairMaterial& m) {
-    c.modulus = m.modulus;
-    c.shear = m.shear;
-    c.work_of_adhesion = m.work_of_adhesion;
-  }
-
   std::int32_t open_pair(const Particles& p, const MaterialTable& materials, std::uint32_t i, std::uint32_t j,
                          double overlap, ContactLedger& ledger) const {
     ContactState state;
-    state.constants = sphere_pair_constants(p.radius[i], p.mass[i], p.radius[j], p.mass[j]);
-    set_material(state.constants, materials.pair(p.material[i], p.material[j]));
+    state.constants =
+        sphere_pair_constants(p.radius[i], p.mass[i], p.radius[j], p.mass[j], materials.pair(p.material[i], p.material[j]));
     state.i = i;
     state.j = j;
     model_.open(state, overlap);

@@ -13,11 +13,8 @@ namespace {
 // Constants of a contact between two of the largest spheres, as the normal law fills them.
 ContactConstants typical_contact(const Particles& p, const Material& material, const ContactModelSpec& spec) {
   const std::size_t big = std::max_element(p.radius.begin(), p.radius.end()) - p.radius.begin();
-  ContactConstants c = sphere_pair_constants(p.radius[big], p.mass[big], p.radius[big], p.mass[big]);
-  const PairMaterial pm = combine(material, material);
-  c.modulus = pm.modulus;
-  c.shear = pm.shear;
-  c.work_of_adhesion = pm.work_of_adhesion;
+  ContactConstants c =
+      sphere_pair_constants(p.radius[big], p.mass[big], p.radius[big], p.mass[big], combine(material, material));
   make_contact_forces(spec, spec.normal)->complete(c);
   return c;
 }

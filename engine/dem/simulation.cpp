@@ -149,11 +149,8 @@ double Simulation::interaction_margin() const {
   for (auto a : present)
     for (auto b : present) {
       ContactConstants c = sphere_pair_constants(particles_.radius[largest], particles_.mass[largest],
-                                                 particles_.radius[largest], particles_.mass[largest]);
-      const PairMaterial& m = materials_.pair(a, b);
-      c.modulus = m.modulus;
-      c.shear = m.shear;
-      c.work_of_adhesion = m.work_of_adhesion;
+                                                 particles_.radius[largest], particles_.mass[largest],
+                                                 materials_.pair(a, b));
       pair_forces_->complete(c);
       margin = std::max(margin, c.break_overlap);
     }

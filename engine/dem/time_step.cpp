@@ -51,12 +51,8 @@ TimeStepEstimate recommend_time_step(const Particles& p, const MaterialTable& ma
     for (auto b : present)
       for (auto u : {small, large})
         for (auto v : {small, large}) {
-          Probe probe{sphere_pair_constants(u->first, u->second, v->first, v->second), 2.0 * max_speed};
-          const PairMaterial& m = materials.pair(a, b);
-          probe.constants.modulus = m.modulus;
-          probe.constants.shear = m.shear;
-          probe.constants.work_of_adhesion = m.work_of_adhesion;
-          probes.push_back(probe);
+          probes.push_back(
+              {sphere_pair_constants(u->first, u->second, v->first, v->second, materials.pair(a, b)), 2.0 * max_speed});
         }
   const auto pair_law = make_contact_forces(spec, spec.normal);
   for (auto& probe : probes) pair_law->complete(probe.constants);
@@ -68,11 +64,7 @@ TimeStepEstimate recommend_time_step(const Particles& p, const MaterialTable& ma
     wall_laws.push_back(make_contact_forces(spec, wall.adhesive ? spec.normal : NormalLaw::hertz));
     for (auto a : present)
       for (auto u : {small, large}) {
-        Probe probe{sphere_wall_constants(u->first, u->second), max_speed};
-        const PairMaterial& m = materials.pair(a, wall.material);
-        probe.constants.modulus = m.modulus;
-        probe.constants.shear = m.shear;
-        probe.constants.work_of_adhesion = m.work_of_adhesion;
+        Probe probe{sphere_wall_constants(u->first, u->second, materials.pair(a, wall.material)), max_speed};
         wall_laws.back()->complete(probe.constants);
         all.push_back({probe, wall_laws.back().get()});
       }

@@ -9,11 +9,8 @@ namespace aerobreak {
 
 ContactConstants primary_contact(const Material& material, const ContactModelSpec& model, double diameter,
                                  double mass) {
-  ContactConstants c = sphere_pair_constants(0.5 * diameter, mass, 0.5 * diameter, mass);
-  const PairMaterial pair = combine(material, material);
-  c.modulus = pair.modulus;
-  c.shear = pair.shear;
-  c.work_of_adhesion = pair.work_of_adhesion;
+  ContactConstants c =
+      sphere_pair_constants(0.5 * diameter, mass, 0.5 * diameter, mass, combine(material, material));
   make_contact_forces(model, model.normal)->complete(c);
   return c;
 }

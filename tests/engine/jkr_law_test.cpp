@@ -18,12 +18,9 @@ ContactConstants jkr_contact(double radius_i, double radius_j, const Material& m
                              JkrSeparation rule = JkrSeparation::displacement) {
   const double density = testing::unit_density();
   const auto mass = [&](double r) { return density * 4.0 / 3.0 * std::numbers::pi * r * r * r; };
-  ContactConstants c = radius_j > 0.0 ? sphere_pair_constants(radius_i, mass(radius_i), radius_j, mass(radius_j))
-                                      : sphere_wall_constants(radius_i, mass(radius_i));
   const PairMaterial pm = combine(mi, mj);
-  c.modulus = pm.modulus;
-  c.shear = pm.shear;
-  c.work_of_adhesion = pm.work_of_adhesion;
+  ContactConstants c = radius_j > 0.0 ? sphere_pair_constants(radius_i, mass(radius_i), radius_j, mass(radius_j), pm)
+                                      : sphere_wall_constants(radius_i, mass(radius_i), pm);
   JkrNormal{rule}.complete(c);
   return c;
 }

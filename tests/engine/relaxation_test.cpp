@@ -18,10 +18,8 @@ TEST_CASE("relaxation brings a touching cluster to JKR equilibrium without break
 
   // Overlap of every bonded pair against eq 4: delta_eq = a0^2 / (3 R*). Loops in the network can
   // hold a few contacts slightly off equilibrium; in a tree every contact is free to reach it.
-  ContactConstants c = sphere_pair_constants(0.5, 1.0, 0.5, 1.0);
-  const PairMaterial pm = combine(testing::unit_material(0.01), testing::unit_material(0.01));
-  c.modulus = pm.modulus;
-  c.work_of_adhesion = pm.work_of_adhesion;
+  ContactConstants c =
+      sphere_pair_constants(0.5, 1.0, 0.5, 1.0, combine(testing::unit_material(0.01), testing::unit_material(0.01)));
   JkrNormal{}.complete(c);
   const double equilibrium = c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius);
   std::size_t at_equilibrium = 0;

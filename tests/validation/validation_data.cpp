@@ -47,12 +47,8 @@ Material unit_material() { return reduced_material(kGammaOverKn, kPoisson); }
 // Contact constants of a unit sphere against a wall (R* = R = 1/2, m* = m = 1) or of two unit
 // spheres (R* = 1/4, m* = 1/2), completed by the JKR law: a0, F_c, delta_c.
 ContactConstants jkr_constants(bool wall) {
-  ContactConstants c = wall ? sphere_wall_constants(0.5, 1.0) : sphere_pair_constants(0.5, 1.0, 0.5, 1.0);
-  const Material m = unit_material();
-  const PairMaterial pm = combine(m, m);
-  c.modulus = pm.modulus;
-  c.shear = pm.shear;
-  c.work_of_adhesion = pm.work_of_adhesion;
+  const PairMaterial pm = combine(unit_material(), unit_material());
+  ContactConstants c = wall ? sphere_wall_constants(0.5, 1.0, pm) : sphere_pair_constants(0.5, 1.0, 0.5, 1.0, pm);
   JkrNormal{}.complete(c);
   return c;
 }

@@ -24,13 +24,10 @@ inline double sphere_mass(double radius) { return unit_density * 4.0 / 3.0 * std
 template <class Normal>
 ContactConstants contact_constants(const Normal& law, const Material& mi, const Material& mj, double radius_i = unit_radius,
                                    double radius_j = unit_radius) {
-  ContactConstants c = radius_j > 0.0
-                           ? sphere_pair_constants(radius_i, sphere_mass(radius_i), radius_j, sphere_mass(radius_j))
-                           : sphere_wall_constants(radius_i, sphere_mass(radius_i));
   const PairMaterial pair = combine(mi, mj);
-  c.modulus = pair.modulus;
-  c.shear = pair.shear;
-  c.work_of_adhesion = pair.work_of_adhesion;
+  ContactConstants c = radius_j > 0.0
+                           ? sphere_pair_constants(radius_i, sphere_mass(radius_i), radius_j, sphere_mass(radius_j), pair)
+                           : sphere_wall_constants(radius_i, sphere_mass(radius_i), pair);
   law.complete(c);
   return c;
 }
