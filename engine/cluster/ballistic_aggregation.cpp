@@ -34,14 +34,6 @@ void validate(const BallisticAggregationParameters& p) {
   }
 }
 
-std::vector<double> draw_radii(const BallisticAggregationParameters& p, RandomStream& random) {
-  std::vector<double> radii(p.primary_count, 0.5 * p.geometric_mean_diameter);
-  if (p.geometric_standard_deviation == 1.0) return radii;
-  const double log_sigma = std::log(p.geometric_standard_deviation);
-  for (double& r : radii) r *= std::exp(log_sigma * random.standard_normal());
-  return radii;
-}
-
 void recentre(Cluster& c) {
   const Vec3 com = centre_of_mass(c);
   for (Vec3& x : c.position) x -= com;
@@ -103,7 +95,8 @@ Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParamete
                                               std::uint64_t seed) {
   validate(parameters);
   RandomStream random(seed);
-  const std::vector<double> radii = draw_radii(parameters, random);
+  const std::vector<double> radii = random.lognormal_radii(
+      parameters.primary_count, parameters.geometric_mean_diameter, parameters.geometric_standard_deviation);
   return aggregate(radii, 0, radii.size(), random);
 }
 

@@ -34,4 +34,13 @@ Rotation RandomStream::rotation() {
                                         s1 * std::cos(theta1), s2 * std::sin(theta2));
 }
 
+std::vector<double> RandomStream::lognormal_radii(std::size_t n, double geometric_mean_diameter,
+                                                  double geometric_standard_deviation) {
+  std::vector<double> radii(n, 0.5 * geometric_mean_diameter);
+  if (geometric_standard_deviation == 1.0) return radii;
+  const double log_sigma = std::log(geometric_standard_deviation);
+  for (double& r : radii) r *= std::exp(log_sigma * standard_normal());
+  return radii;
+}
+
 }  // namespace aerobreak

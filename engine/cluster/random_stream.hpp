@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "engine/cluster/rotation.hpp"
 #include "engine/core/vec3.hpp"
@@ -23,6 +24,10 @@ class RandomStream {
   // Uniform over SO(3): a uniform unit quaternion from three uniforms (Shoemake 1992, Graphics
   // Gems III, "Uniform random rotations").
   Rotation rotation();
+  // n primary radii, lognormal: ln d ~ Normal(ln d_g, ln sigma_g); sigma_g = 1 is monodisperse
+  // (and draws nothing).
+  std::vector<double> lognormal_radii(std::size_t n, double geometric_mean_diameter,
+                                      double geometric_standard_deviation);
 
  private:
   std::mt19937_64 engine_;

@@ -58,14 +58,6 @@ void validate(const TunableAggregationParameters& p) {
   if (!(p.max_intermediate_deviation >= 0.0)) fail("max_intermediate_deviation must be >= 0");
 }
 
-std::vector<double> draw_radii(const TunableAggregationParameters& p, RandomStream& random) {
-  std::vector<double> radii(p.primary_count, 0.5 * p.geometric_mean_diameter);
-  if (p.geometric_standard_deviation == 1.0) return radii;
-  const double log_sigma = std::log(p.geometric_standard_deviation);
-  for (double& r : radii) r *= std::exp(log_sigma * random.standard_normal());
-  return radii;
-}
-
 // The law's Rg for an aggregate: its own primary count and geometric mean radius.
 double law_gyration_radius(const FractalLaw& law, const TunableAggregate& a) {
   const auto n = static_cast<double>(a.size());
@@ -214,7 +206,8 @@ Cluster tunable_cluster_aggregation(const TunableAggregationParameters& paramete
                                     std::uint64_t seed) {
   validate(parameters);
   RandomStream random(seed);
-  const std::vector<double> radii = draw_radii(parameters, random);
+  const std::vector<double> radii = random.lognormal_radii(
+      parameters.primary_count, parameters.geometric_mean_diameter, parameters.geometric_standard_deviation);
   const FractalLaw law{parameters.fractal_dimension, parameters.prefactor,
                        parameters.gyration_convention};
 
