@@ -1,0 +1,139 @@
+#include "orchestrator/store/migrations.hpp"
+
+#include <array>
+#include <string>
+
+namespace aerobreak {
+namespace {
+
+// Times are Unix seconds (REAL). Status columns are checked by the database itself, so that no
+// writer bug can store a state the scheduler does not know.
+constexpr std::string_view kVersion1 = R"sql(
+CREATE TABLE studies (
+  id             INTEGER PRIMARY KEY,
+  hash           TEXT NOT NULL UNIQUE,
+  name           TEXT NOT NULL,
+  description    TEXT NOT NULL DEFAULT '',
+  document       TEXT NOT NULL,
+  status         TEXT NOT NULL CHECK (status IN ('active', 'cancelled')),
+  max_attempts   INTEGER NOT NULL CHECK (max_attempts >= 1),
+  case_wall_time REAL NOT NULL CHECK (case_wall_time > 0),
+  created_at     REAL NOT NULL,
+  cancelled_at   REAL
+);
+
+CREATE TABLE jobs (
+  id          INTEGER PRIMARY KEY,
+  command     TEXT NOT NULL,
+  ranks       INTEGER NOT NULL,
+  pid         INTEGER,
+  hosts       TEXT,
+  started_at  REAL NOT NULL,
+  ended_at    REAL,
+  exit_status INTEGER,
+  note        TEXT
+);
+
+CREATE TABLE cases (
+  id              INTEGER PRIMARY KEY,
+  hash            TEXT NOT NULL UNIQUE,
+  document        TEXT NOT NULL,
+  status          TEXT NOT NULL CHECK (status IN ('queued', 'running', 'done', 'failed', 'cancelled')),
+  attempts        INTEGER NOT NULL DEFAULT 0,
+  failures        INTEGER NOT NULL DEFAULT 0,
+  max_attempts    INTEGER NOT NULL CHECK (max_attempts >= 1),
+  wall_time_limit REAL NOT NULL,
+  job_id          INTEGER REFERENCES jobs (id),
+  worker          TEXT,
+  queued_at       REAL NOT NULL,
+  started_at      REAL,
+  finished_at     REAL,
+  error           TEXT
+);
+CREATE INDEX cases_by_status ON cases (status, id);
+
+CREATE TABLE study_cases (
+  study_id   INTEGER NOT NULL REFERENCES studies (id),
+  case_id    INTEGER NOT NULL REFERENCES cases (id),
+  position   INTEGER NOT NULL,
+  grid_point TEXT NOT NULL,
+  grid_key   TEXT NOT NULL,
+  replicate  INTEGER NOT NULL,
+  PRIMARY KEY (study_id, case_id)
+) WITHOUT ROWID;
+CREATE INDEX study_cases_by_case ON study_cases (case_id);
+CREATE INDEX study_cases_by_position ON study_cases (study_id, position);
+
+CREATE TABLE attempts (
+  case_id    INTEGER NOT NULL REFERENCES cases (id),
+  attempt    INTEGER NOT NULL,
+  job_id     INTEGER REFERENCES jobs (id),
+  worker     TEXT,
+  started_at REAL NOT NULL,
+  ended_at   REAL,
+  outcome    TEXT CHECK (outcome IN ('done', 'invalid', 'error', 'wall_time', 'lost', 'interrupted')),
+  error      TEXT,
+  PRIMARY KEY (case_id, attempt)
+) WITHOUT ROWID;
+
+CREATE TABLE results (
+  case_id                INTEGER PRIMARY KEY REFERENCES cases (id),
+  attempt                INTEGER NOT NULL,
+  outcome                TEXT NOT NULL CHECK (outcome IN ('stick', 'bounce', 'break-up', 'undetermined')),
+  restitution            REAL,
+  largest_fragment_share REAL,
+  fragment_count         INTEGER,
+  mass_fraction_on_wall  REAL,
+  impact_energy          REAL,
+  wall_clock_seconds     REAL,
+  data_file              TEXT,
+  document               TEXT NOT NULL,
+  committed_at           REAL NOT NULL
+);
+
+CREATE TABLE fragments (
+  case_id            INTEGER NOT NULL REFERENCES results (case_id),
+  rank               INTEGER NOT NULL,
+  primaries          INTEGER NOT NULL,
+  mass               REAL NOT NULL,
+  on_wall            INTEGER NOT NULL,
+  normal_velocity    REAL,
+  radius_of_gyration REAL,
+  PRIMARY KEY (case_id, rank)
+) WITHOUT ROWID;
+)sql";
+
+constexpr std::array kMigrations{
+    Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
+};
+
+int user_version(SqliteDatabase& db) {
+  auto statement = db.prepare("PRAGMA user_version");
+  statement.step();
+  return static_cast<int>(statement.integer(0));
+}
+
+}  // namespace
+
+std::span<const Migration> store_migrations() { return kMigrations; }
+
+int latest_store_version() { return kMigrations.back().version; }
+
+int migrate_store(SqliteDatabase& db) {
+  const int found = user_version(db);
+  if (found > latest_store_version()) {
+    throw SqliteError("the store has schema version " + std::to_string(found) + ", newer than this aerobreak (" +
+                          std::to_string(latest_store_version()) + "); use a newer aerobreak",
+                      SQLITE_MISMATCH);
+  }
+  for (const Migration& step : kMigrations) {
+    if (step.version <= found) continue;
+    SqliteTransaction transaction(db);
+    db.execute(step.sql);
+    db.execute("PRAGMA user_version = " + std::to_string(step.version));
+    transaction.commit();
+  }
+  return found;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,330 @@
+#include "orchestrator/store/store.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "orchestrator/store/migrations.hpp"
+#include "orchestrator/store/store_read_connection.hpp"
+
+namespace aerobreak {
+
+double unix_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+Store::Store(const std::filesystem::path& file) : file_(file) {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  writer_ = std::make_unique<SqliteDatabase>(file);
+  // WAL: readers never block the writer nor the writer them; synchronous=FULL makes every commit
+  // durable before the call returns, so that a result acknowledged in the store survives a crash
+  // of the orchestrator or of the machine.
+  writer_->execute("PRAGMA journal_mode = WAL");
+  writer_->execute("PRAGMA synchronous = FULL");
+  opened_at_version_ = migrate_store(*writer_);
+}
+
+Store::~Store() = default;
+
+Store::ReadConnection Store::read() {
+  {
+    std::lock_guard lock(pool_mutex_);
+    if (!idle_readers_.empty()) {
+      auto db = std::move(idle_readers_.back());
+      idle_readers_.pop_back();
+      return ReadConnection(*this, std::move(db));
+    }
+  }
+  return ReadConnection(*this, std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only));
+}
+
+int Store::schema_version() {
+  auto db = read();
+  auto statement = db->prepare("PRAGMA user_version");
+  statement.step();
+  return static_cast<int>(statement.integer(0));
+}
+
+SubmissionReceipt Store::submit_study(const StudySubmission& submission) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  const double now = unix_seconds();
+  SubmissionReceipt receipt;
+  receipt.cases = submission.cases.size();
+
+  auto existing = writer_->prepare("SELECT id, status FROM studies WHERE hash = ?");
+  existing.bind_all(submission.hash);
+  if (existing.step()) {
+    receipt.study_id = existing.integer(0);
+    receipt.existing_study = true;
+    if (existing.text(1) == "cancelled") {
+      // Submitted again after a cancel: the study is wanted again, and so are its cases.
+      writer_->prepare("UPDATE studies SET status = 'active', cancelled_at = NULL WHERE id = ?")
+          .bind_all(receipt.study_id)
+          .run();
+      auto requeue = writer_->prepare(
+          "UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'cancelled' AND id IN "
+          "(SELECT case_id FROM study_cases WHERE study_id = ?)");
+      requeue.bind_all(now, receipt.study_id).run();
+      receipt.requeued = static_cast<std::size_t>(writer_->changes());
+    }
+    transaction.commit();
+    return receipt;
+  }
+
+  auto insert_study = writer_->prepare(
+      "INSERT INTO studies (hash, name, description, document, status, max_attempts, case_wall_time, created_at) "
+      "VALUES (?, ?, ?, ?, 'active', ?, ?, ?)");
+  insert_study.bind_all(submission.hash, submission.name, submission.description, submission.document.dump(),
+                        submission.max_attempts, submission.case_wall_time, now);
+  insert_study.run();
+  receipt.study_id = writer_->last_insert_id();
+
+  auto find_case = writer_->prepare("SELECT id, status FROM cases WHERE hash = ?");
+  auto insert_case = writer_->prepare(
+      "INSERT INTO cases (hash, document, status, max_attempts, wall_time_limit, queued_at) "
+      "VALUES (?, ?, 'queued', ?, ?, ?)");
+  auto requeue_case = writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE id = ?");
+  auto link = writer_->prepare(
+      "INSERT OR IGNORE INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
+      "VALUES (?, ?, ?, ?, ?, ?)");
+  std::size_t position = 0;
+  for (const auto& study_case : submission.cases) {
+    std::int64_t case_id = 0;
+    find_case.reset();
+    find_case.bind_all(study_case.hash);
+    if (find_case.step()) {
+      case_id = find_case.integer(0);
+      const std::string status = find_case.text(1);
+      if (status == "done") ++receipt.already_done;
+      if (status == "cancelled") {
+        requeue_case.reset();
+        requeue_case.bind_all(now, case_id).run();
+        ++receipt.requeued;
+      }
+    } else {
+      insert_case.reset();
+      insert_case.bind_all(study_case.hash, study_case.document.dump(), submission.max_attempts,
+                           submission.case_wall_time, now);
+      insert_case.run();
+      case_id = writer_->last_insert_id();
+      ++receipt.new_cases;
+    }
+    link.reset();
+    link.bind_all(receipt.study_id, case_id, position++, study_case.grid_point.dump(), study_case.grid_key,
+                  study_case.replicate);
+    link.run();
+  }
+  transaction.commit();
+  return receipt;
+}
+
+std::optional<CaseAssignment> Store::claim_next_case(std::int64_t job_id, const std::string& worker) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  auto next = writer_->prepare(
+      "SELECT c.id, c.attempts, c.document, c.wall_time_limit FROM cases c WHERE c.status = 'queued' AND EXISTS "
+      "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
+      " WHERE sc.case_id = c.id AND s.status = 'active') ORDER BY c.id LIMIT 1");
+  if (!next.step()) return std::nullopt;
+  CaseAssignment assignment;
+  assignment.case_id = next.integer(0);
+  assignment.attempt = static_cast<int>(next.integer(1)) + 1;
+  assignment.document = nlohmann::ordered_json::parse(next.text(2));
+  assignment.wall_time_limit = next.real(3);
+  const double now = unix_seconds();
+  writer_->prepare(
+          "UPDATE cases SET status = 'running', attempts = ?, job_id = ?, worker = ?, started_at = ? WHERE id = ?")
+      .bind_all(assignment.attempt, job_id, worker, now, assignment.case_id)
+      .run();
+  writer_->prepare("INSERT INTO attempts (case_id, attempt, job_id, worker, started_at) VALUES (?, ?, ?, ?, ?)")
+      .bind_all(assignment.case_id, assignment.attempt, job_id, worker, now)
+      .run();
+  transaction.commit();
+  return assignment;
+}
+
+void Store::record_worker(std::int64_t case_id, int attempt, const std::string& worker) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  writer_->prepare("UPDATE cases SET worker = ? WHERE id = ? AND attempts = ? AND status = 'running'")
+      .bind_all(worker, case_id, attempt)
+      .run();
+  writer_->prepare("UPDATE attempts SET worker = ? WHERE case_id = ? AND attempt = ?")
+      .bind_all(worker, case_id, attempt)
+      .run();
+  transaction.commit();
+}
+
+namespace {
+
+std::optional<double> optional_number(const nlohmann::ordered_json& value) {
+  return value.is_number() ? std::optional(value.get<double>()) : std::nullopt;
+}
+
+const nlohmann::ordered_json& member(const nlohmann::ordered_json& object, const char* key) {
+  static const nlohmann::ordered_json null;
+  if (!object.is_object()) return null;
+  const auto found = object.find(key);
+  return found == object.end() ? null : *found;
+}
+
+// The summary columns of a result document (schemas/result.schema.json); the document itself is
+// stored whole beside them.
+void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
+                   const std::string& data_file, double wall_clock_seconds, double now) {
+  const auto& outcome = member(result, "outcome");
+  const auto& outcome_class = member(outcome, "class");
+  if (!outcome_class.is_string()) throw std::invalid_argument("result document without /outcome/class");
+  const auto& fragment_count = member(outcome, "fragment_count");
+  auto statement = db.prepare(
+      "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
+      "mass_fraction_on_wall, impact_energy, wall_clock_seconds, data_file, document, committed_at) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  statement.bind_all(case_id, attempt, outcome_class.get<std::string>(),
+                     optional_number(member(member(outcome, "restitution"), "normal")),
+                     optional_number(member(outcome, "largest_fragment_share")),
+                     fragment_count.is_number_integer() ? std::optional(fragment_count.get<std::int64_t>())
+                                                        : std::nullopt,
+                     optional_number(member(outcome, "mass_fraction_on_wall")),
+                     optional_number(member(member(result, "setup"), "impact_kinetic_energy")), wall_clock_seconds,
+                     data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now);
+  statement.run();
+
+  auto fragment = db.prepare(
+      "INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity, radius_of_gyration) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+  int rank = 0;
+  for (const auto& entry : member(member(result, "fragments"), "list")) {
+    fragment.reset();
+    fragment.bind_all(case_id, rank++, member(entry, "size").get<std::int64_t>(), member(entry, "mass").get<double>(),
+                      member(entry, "on_wall").get<bool>() ? 1 : 0, optional_number(member(entry, "normal_velocity")),
+                      optional_number(member(entry, "radius_of_gyration")));
+    fragment.run();
+  }
+}
+
+}  // namespace
+
+bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
+                          const std::string& data_file, double wall_clock_seconds) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  const double now = unix_seconds();
+  writer_->prepare(
+          "UPDATE cases SET status = 'done', finished_at = ?, error = NULL "
+          "WHERE id = ? AND status = 'running' AND attempts = ?")
+      .bind_all(now, case_id, attempt)
+      .run();
+  if (writer_->changes() != 1) return false;
+  insert_result(*writer_, case_id, attempt, result, data_file, wall_clock_seconds, now);
+  writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = 'done' WHERE case_id = ? AND attempt = ?")
+      .bind_all(now, case_id, attempt)
+      .run();
+  transaction.commit();
+  return true;
+}
+
+std::optional<CaseStatus> Store::record_failure(std::int64_t case_id, int attempt, AttemptEnd end,
+                                                const std::string& error) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  auto current = writer_->prepare(
+      "SELECT failures, max_attempts FROM cases WHERE id = ? AND status = 'running' AND attempts = ?");
+  current.bind_all(case_id, attempt);
+  if (!current.step()) return std::nullopt;
+  const auto failures = current.integer(0) + 1;
+  // An invalid case fails the same way every time: retrying it would only waste a worker.
+  const bool give_up = end == AttemptEnd::invalid || failures >= current.integer(1);
+  const CaseStatus status = give_up ? CaseStatus::failed : CaseStatus::queued;
+  const double now = unix_seconds();
+  writer_->prepare(
+          "UPDATE cases SET status = ?, failures = ?, error = ?, finished_at = ?, queued_at = "
+          "CASE WHEN ? THEN queued_at ELSE ? END WHERE id = ?")
+      .bind_all(to_string(status), failures, error,
+                give_up ? std::optional(now) : std::nullopt, give_up ? 1 : 0, now, case_id)
+      .run();
+  writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = ?, error = ? WHERE case_id = ? AND attempt = ?")
+      .bind_all(now, to_string(end), error, case_id, attempt)
+      .run();
+  transaction.commit();
+  return status;
+}
+
+std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason) {
+  std::vector<std::pair<std::int64_t, int>> running;
+  {
+    auto db = read();
+    auto statement = db->prepare("SELECT id, attempts FROM cases WHERE status = 'running' AND job_id = ?");
+    statement.bind_all(job_id);
+    while (statement.step()) running.emplace_back(statement.integer(0), static_cast<int>(statement.integer(1)));
+  }
+  std::size_t requeued = 0;
+  for (const auto& [case_id, attempt] : running)
+    if (record_failure(case_id, attempt, AttemptEnd::lost, reason) == CaseStatus::queued) ++requeued;
+  return requeued;
+}
+
+std::size_t Store::requeue_interrupted() {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  const double now = unix_seconds();
+  writer_->prepare(
+          "UPDATE attempts SET ended_at = ?, outcome = 'interrupted', "
+          "error = 'the orchestrator stopped while the case ran' "
+          "WHERE ended_at IS NULL AND (case_id, attempt) IN (SELECT id, attempts FROM cases WHERE status = 'running')")
+      .bind_all(now)
+      .run();
+  writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'running'").bind_all(now).run();
+  const auto requeued = static_cast<std::size_t>(writer_->changes());
+  transaction.commit();
+  return requeued;
+}
+
+std::int64_t Store::start_job(const std::string& command, int ranks) {
+  std::lock_guard lock(write_mutex_);
+  writer_->prepare("INSERT INTO jobs (command, ranks, started_at) VALUES (?, ?, ?)")
+      .bind_all(command, ranks, unix_seconds())
+      .run();
+  return writer_->last_insert_id();
+}
+
+void Store::job_started(std::int64_t job_id, std::int64_t pid, const nlohmann::ordered_json& hosts) {
+  std::lock_guard lock(write_mutex_);
+  writer_->prepare("UPDATE jobs SET pid = ?, hosts = ? WHERE id = ?").bind_all(pid, hosts.dump(), job_id).run();
+}
+
+void Store::end_job(std::int64_t job_id, int exit_status, const std::string& note) {
+  std::lock_guard lock(write_mutex_);
+  writer_->prepare("UPDATE jobs SET ended_at = ?, exit_status = ?, note = ? WHERE id = ? AND ended_at IS NULL")
+      .bind_all(unix_seconds(), exit_status, note, job_id)
+      .run();
+}
+
+std::size_t Store::close_orphaned_jobs() {
+  std::lock_guard lock(write_mutex_);
+  writer_->prepare("UPDATE jobs SET ended_at = ?, note = 'its orchestrator stopped' WHERE ended_at IS NULL")
+      .bind_all(unix_seconds())
+      .run();
+  return static_cast<std::size_t>(writer_->changes());
+}
+
+bool Store::cancel_study(std::int64_t study_id) {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  const double now = unix_seconds();
+  writer_->prepare("UPDATE studies SET status = 'cancelled', cancelled_at = ? WHERE id = ? AND status = 'active'")
+      .bind_all(now, study_id)
+      .run();
+  if (writer_->changes() != 1) return false;
+  writer_->prepare(
+          "UPDATE cases SET status = 'cancelled', finished_at = ? WHERE status = 'queued' "
+          "AND id IN (SELECT case_id FROM study_cases WHERE study_id = ?) "
+          "AND NOT EXISTS (SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
+          "                WHERE sc.case_id = cases.id AND s.status = 'active')")
+      .bind_all(now, study_id)
+      .run();
+  transaction.commit();
+  return true;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,96 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "orchestrator/store/sqlite_database.hpp"
+#include "orchestrator/store/store_types.hpp"
+
+namespace aerobreak {
+
+// The orchestrator's SQLite store (DESIGN.md "Sweeps, storage, service"): one file in WAL mode
+// with a versioned schema (migrations.hpp). One writer: every method that changes the store runs
+// on the writer connection under one mutex, each as one transaction, so that a crash at any point
+// leaves either all or none of a change. Readers use connections of their own (WAL lets them read
+// while the writer writes), so that the REST service never waits for the scheduler.
+class Store {
+ public:
+  explicit Store(const std::filesystem::path& file);
+  ~Store();
+  Store(const Store&) = delete;
+  Store& operator=(const Store&) = delete;
+
+  const std::filesystem::path& file() const { return file_; }
+  int schema_version();
+  // The version the file had when this Store opened it (0: created now).
+  int opened_at_version() const { return opened_at_version_; }
+
+  // --- Writer side ------------------------------------------------------------------------------
+
+  // Stores a study and links its cases. A case is stored once, by its content hash, whatever the
+  // number of studies that name it: a finished case is never rerun, a cancelled one is queued
+  // again. Submitting the same study (same hash) again changes nothing and returns its id.
+  SubmissionReceipt submit_study(const StudySubmission& submission);
+
+  // The next queued case that an active study wants (submission order), marked running for the
+  // job; nullopt when there is none.
+  std::optional<CaseAssignment> claim_next_case(std::int64_t job_id, const std::string& worker = {});
+  // The worker rank that started a case (the job's "started" message).
+  void record_worker(std::int64_t case_id, int attempt, const std::string& worker);
+
+  // Commits a result exactly once: only while the case is running the same attempt. Returns false
+  // (and changes nothing) for a late, duplicate or unknown result.
+  bool commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
+                     const std::string& data_file, double wall_clock_seconds);
+  // An attempt that ended without a result: the case goes back to the queue, or is marked failed
+  // with `error` once it has failed max_attempts times. Returns the new status; nullopt when the
+  // attempt was not the running one.
+  std::optional<CaseStatus> record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error);
+  // Cases a job was running when it ended: each counts a lost attempt (a crash may be the case's).
+  std::size_t requeue_job(std::int64_t job_id, const std::string& reason);
+  // At start-up: cases left running by an orchestrator that died go back to the queue without a
+  // failure counted (the orchestrator, not the case, stopped them).
+  std::size_t requeue_interrupted();
+
+  std::int64_t start_job(const std::string& command, int ranks);
+  void job_started(std::int64_t job_id, std::int64_t pid, const nlohmann::ordered_json& hosts);
+  void end_job(std::int64_t job_id, int exit_status, const std::string& note);
+  // Jobs without an end (their orchestrator died): ended now, with a note.
+  std::size_t close_orphaned_jobs();
+
+  // Cancels an active study: its queued cases that no other active study wants become cancelled.
+  // Running cases finish (their results are kept). False when there is no such active study.
+  bool cancel_study(std::int64_t study_id);
+
+  // --- Reader side (any thread) -----------------------------------------------------------------
+
+  std::size_t claimable_cases();
+  Page<StudyRecord> studies(const PageRequest& page);
+  std::optional<StudyRecord> study(std::int64_t study_id);
+  std::optional<StudyProgress> progress(std::int64_t study_id);
+  Page<CaseRecord> cases(std::int64_t study_id, std::optional<CaseStatus> status, const PageRequest& page);
+  Page<ResultRecord> results(std::int64_t study_id, std::optional<std::string> outcome, const PageRequest& page);
+  std::vector<GridPointOutcomes> outcomes(std::int64_t study_id);
+  std::optional<CaseDetail> case_detail(std::int64_t case_id);
+  std::vector<JobRecord> jobs(std::size_t limit);
+
+ private:
+  class ReadConnection;
+  ReadConnection read();
+
+  std::filesystem::path file_;
+  int opened_at_version_ = 0;
+  std::mutex write_mutex_;
+  std::unique_ptr<SqliteDatabase> writer_;
+  std::mutex pool_mutex_;
+  std::vector<std::unique_ptr<SqliteDatabase>> idle_readers_;
+};
+
+// Unix time in seconds (the store's time unit).
+double unix_seconds();
+
+}  // namespace aerobreak

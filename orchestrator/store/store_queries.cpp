@@ -1,0 +1,273 @@
+// The store's reader side: every query runs on a pooled read-only connection.
+#include <algorithm>
+#include <array>
+#include <map>
+
+#include "orchestrator/store/store.hpp"
+#include "orchestrator/store/store_read_connection.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr std::array<std::string_view, 4> kOutcomes{"stick", "bounce", "break-up", "undetermined"};
+
+std::size_t count(SqliteStatement&& statement) {
+  statement.step();
+  return static_cast<std::size_t>(statement.integer(0));
+}
+
+StudyRecord study_from(const SqliteStatement& row) {
+  StudyRecord study;
+  study.id = row.integer(0);
+  study.hash = row.text(1);
+  study.name = row.text(2);
+  study.description = row.text(3);
+  study.status = row.text(4);
+  study.created_at = row.real(5);
+  study.cancelled_at = row.optional_real(6);
+  study.max_attempts = static_cast<int>(row.integer(7));
+  study.case_wall_time = row.real(8);
+  study.case_count = static_cast<std::size_t>(row.integer(9));
+  study.document = nlohmann::ordered_json::parse(row.text(10));
+  return study;
+}
+
+constexpr std::string_view kStudyColumns =
+    "SELECT s.id, s.hash, s.name, s.description, s.status, s.created_at, s.cancelled_at, s.max_attempts, "
+    "s.case_wall_time, (SELECT count(*) FROM study_cases sc WHERE sc.study_id = s.id), s.document FROM studies s ";
+
+constexpr std::string_view kCaseColumns =
+    "SELECT c.id, c.hash, c.status, c.attempts, c.failures, c.max_attempts, c.wall_time_limit, c.job_id, c.worker, "
+    "c.queued_at, c.started_at, c.finished_at, c.error, sc.grid_point, sc.replicate, r.outcome "
+    "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = c.id ";
+
+CaseRecord case_from(const SqliteStatement& row) {
+  CaseRecord record;
+  record.id = row.integer(0);
+  record.hash = row.text(1);
+  record.status = row.text(2);
+  record.attempts = static_cast<int>(row.integer(3));
+  record.failures = static_cast<int>(row.integer(4));
+  record.max_attempts = static_cast<int>(row.integer(5));
+  record.wall_time_limit = row.real(6);
+  record.job_id = row.optional_integer(7);
+  record.worker = row.optional_text(8);
+  record.queued_at = row.real(9);
+  record.started_at = row.optional_real(10);
+  record.finished_at = row.optional_real(11);
+  record.error = row.optional_text(12);
+  record.grid_point = nlohmann::ordered_json::parse(row.text(13));
+  record.replicate = static_cast<int>(row.integer(14));
+  record.outcome = row.optional_text(15);
+  return record;
+}
+
+}  // namespace
+
+std::size_t Store::claimable_cases() {
+  auto db = read();
+  return count(db->prepare(
+      "SELECT count(*) FROM cases c WHERE c.status = 'queued' AND EXISTS "
+      "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
+      " WHERE sc.case_id = c.id AND s.status = 'active')"));
+}
+
+Page<StudyRecord> Store::studies(const PageRequest& page) {
+  auto db = read();
+  Page<StudyRecord> result;
+  result.total = count(db->prepare("SELECT count(*) FROM studies"));
+  auto statement = db->prepare(std::string(kStudyColumns) + "ORDER BY s.id DESC LIMIT ? OFFSET ?");
+  statement.bind_all(page.limit, page.offset);
+  while (statement.step()) result.items.push_back(study_from(statement));
+  return result;
+}
+
+std::optional<StudyRecord> Store::study(std::int64_t study_id) {
+  auto db = read();
+  auto statement = db->prepare(std::string(kStudyColumns) + "WHERE s.id = ?");
+  statement.bind_all(study_id);
+  if (!statement.step()) return std::nullopt;
+  return study_from(statement);
+}
+
+std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
+  auto db = read();
+  auto exists = db->prepare("SELECT status FROM studies WHERE id = ?");
+  exists.bind_all(study_id);
+  if (!exists.step()) return std::nullopt;
+
+  StudyProgress progress;
+  progress.study_id = study_id;
+  for (const auto status : {CaseStatus::queued, CaseStatus::running, CaseStatus::done, CaseStatus::failed,
+                            CaseStatus::cancelled})
+    progress.by_status[std::string(to_string(status))] = 0;
+  auto statement = db->prepare(
+      "SELECT c.status, count(*), min(c.started_at), max(c.finished_at) FROM study_cases sc "
+      "JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? GROUP BY c.status");
+  statement.bind_all(study_id);
+  while (statement.step()) {
+    const auto n = static_cast<std::size_t>(statement.integer(1));
+    progress.by_status[statement.text(0)] = n;
+    progress.total += n;
+    if (const auto first = statement.optional_real(2))
+      progress.first_started_at = std::min(progress.first_started_at.value_or(*first), *first);
+    if (const auto last = statement.optional_real(3))
+      progress.last_finished_at = std::max(progress.last_finished_at.value_or(*last), *last);
+  }
+  const std::size_t remaining = progress.by_status["queued"] + progress.by_status["running"];
+  progress.complete = remaining == 0;
+  // The rate counts the cases finished for this study since its first case started; a case
+  // finished for an earlier study costs nothing here and is left out.
+  auto finished_here = db->prepare(
+      "SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id JOIN studies s ON s.id = sc.study_id "
+      "WHERE sc.study_id = ? AND c.status IN ('done', 'failed') AND c.finished_at >= s.created_at");
+  finished_here.bind_all(study_id);
+  const std::size_t finished = count(std::move(finished_here));
+  if (progress.first_started_at && finished > 0) {
+    const double end = progress.complete && progress.last_finished_at ? *progress.last_finished_at : unix_seconds();
+    const double elapsed = std::max(end - *progress.first_started_at, 1e-3);
+    progress.cases_per_hour = 3600.0 * static_cast<double>(finished) / elapsed;
+    progress.seconds_left = static_cast<double>(remaining) / progress.cases_per_hour * 3600.0;
+  }
+  return progress;
+}
+
+Page<CaseRecord> Store::cases(std::int64_t study_id, std::optional<CaseStatus> status, const PageRequest& page) {
+  auto db = read();
+  const std::string filter = status ? " AND c.status = ?" : "";
+  Page<CaseRecord> result;
+  auto total = db->prepare("SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ?" +
+                           filter);
+  total.bind(1, study_id);
+  if (status) total.bind(2, to_string(*status));
+  result.total = count(std::move(total));
+  auto statement = db->prepare(std::string(kCaseColumns) + "WHERE sc.study_id = ?" + filter +
+                               " ORDER BY sc.position LIMIT ? OFFSET ?");
+  int index = 1;
+  statement.bind(index++, study_id);
+  if (status) statement.bind(index++, to_string(*status));
+  statement.bind(index++, page.limit);
+  statement.bind(index, page.offset);
+  while (statement.step()) result.items.push_back(case_from(statement));
+  return result;
+}
+
+Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::string> outcome, const PageRequest& page) {
+  auto db = read();
+  const std::string filter = outcome ? " AND r.outcome = ?" : "";
+  const std::string from =
+      "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id "
+      "WHERE sc.study_id = ?" + filter;
+  Page<ResultRecord> result;
+  auto total = db->prepare("SELECT count(*) " + from);
+  total.bind(1, study_id);
+  if (outcome) total.bind(2, *outcome);
+  result.total = count(std::move(total));
+  auto statement = db->prepare(
+      "SELECT r.case_id, c.hash, sc.grid_point, sc.replicate, r.attempt, r.outcome, r.restitution, "
+      "r.largest_fragment_share, r.fragment_count, r.mass_fraction_on_wall, r.impact_energy, r.wall_clock_seconds, "
+      "r.data_file, r.committed_at " + from + " ORDER BY sc.position LIMIT ? OFFSET ?");
+  int index = 1;
+  statement.bind(index++, study_id);
+  if (outcome) statement.bind(index++, *outcome);
+  statement.bind(index++, page.limit);
+  statement.bind(index, page.offset);
+  while (statement.step()) {
+    ResultRecord record;
+    record.case_id = statement.integer(0);
+    record.hash = statement.text(1);
+    record.grid_point = nlohmann::ordered_json::parse(statement.text(2));
+    record.replicate = static_cast<int>(statement.integer(3));
+    record.attempt = static_cast<int>(statement.integer(4));
+    record.outcome = statement.text(5);
+    record.restitution = statement.optional_real(6);
+    record.largest_fragment_share = statement.optional_real(7);
+    record.fragment_count = statement.optional_integer(8);
+    record.mass_fraction_on_wall = statement.optional_real(9);
+    record.impact_energy = statement.optional_real(10);
+    record.wall_clock_seconds = statement.optional_real(11);
+    record.data_file = statement.optional_text(12);
+    record.committed_at = statement.real(13);
+    result.items.push_back(std::move(record));
+  }
+  return result;
+}
+
+std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT sc.grid_key, min(sc.grid_point), min(sc.position), count(*), "
+      "sum(r.outcome = 'stick'), sum(r.outcome = 'bounce'), sum(r.outcome = 'break-up'), "
+      "sum(r.outcome = 'undetermined'), sum(c.status = 'failed') "
+      "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = sc.case_id "
+      "WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  statement.bind_all(study_id);
+  std::vector<GridPointOutcomes> cells;
+  while (statement.step()) {
+    GridPointOutcomes cell;
+    cell.grid_point = nlohmann::ordered_json::parse(statement.text(1));
+    cell.cases = static_cast<std::size_t>(statement.integer(3));
+    for (std::size_t k = 0; k < kOutcomes.size(); ++k)
+      cell.outcomes[std::string(kOutcomes[k])] = static_cast<std::size_t>(statement.integer(4 + static_cast<int>(k)));
+    cell.failed = static_cast<std::size_t>(statement.integer(8));
+    cells.push_back(std::move(cell));
+  }
+  return cells;
+}
+
+std::optional<CaseDetail> Store::case_detail(std::int64_t case_id) {
+  auto db = read();
+  auto statement = db->prepare(std::string(kCaseColumns) + "WHERE c.id = ? ORDER BY sc.study_id LIMIT 1");
+  statement.bind_all(case_id);
+  if (!statement.step()) return std::nullopt;
+  CaseDetail detail;
+  detail.record = case_from(statement);
+
+  auto document = db->prepare("SELECT document FROM cases WHERE id = ?");
+  document.bind_all(case_id);
+  document.step();
+  detail.document = nlohmann::ordered_json::parse(document.text(0));
+
+  auto attempts = db->prepare(
+      "SELECT attempt, job_id, worker, started_at, ended_at, outcome, error FROM attempts WHERE case_id = ? "
+      "ORDER BY attempt");
+  attempts.bind_all(case_id);
+  while (attempts.step()) {
+    detail.attempts.push_back({static_cast<int>(attempts.integer(0)), attempts.optional_integer(1),
+                               attempts.optional_text(2), attempts.real(3), attempts.optional_real(4),
+                               attempts.optional_text(5), attempts.optional_text(6)});
+  }
+
+  auto result = db->prepare("SELECT document, data_file FROM results WHERE case_id = ?");
+  result.bind_all(case_id);
+  if (result.step()) {
+    detail.result = nlohmann::ordered_json::parse(result.text(0));
+    detail.data_file = result.optional_text(1);
+  }
+
+  auto fragments = db->prepare(
+      "SELECT rank, primaries, mass, on_wall, normal_velocity, radius_of_gyration FROM fragments WHERE case_id = ? "
+      "ORDER BY rank");
+  fragments.bind_all(case_id);
+  while (fragments.step()) {
+    detail.fragments.push_back({static_cast<int>(fragments.integer(0)), fragments.integer(1), fragments.real(2),
+                                fragments.integer(3) != 0, fragments.optional_real(4), fragments.optional_real(5)});
+  }
+  return detail;
+}
+
+std::vector<JobRecord> Store::jobs(std::size_t limit) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT id, command, ranks, pid, started_at, ended_at, exit_status, note FROM jobs ORDER BY id DESC LIMIT ?");
+  statement.bind_all(limit);
+  std::vector<JobRecord> jobs;
+  while (statement.step()) {
+    jobs.push_back({statement.integer(0), statement.text(1), static_cast<int>(statement.integer(2)),
+                    statement.optional_integer(3), statement.real(4), statement.optional_real(5),
+                    statement.optional_integer(6), statement.optional_text(7)});
+  }
+  return jobs;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,177 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aerobreak {
+
+// A case's life: queued -> running -> done | failed, back to queued when an attempt is lost or
+// fails with attempts left; cancelled when no active study wants it any more.
+enum class CaseStatus { queued, running, done, failed, cancelled };
+std::string_view to_string(CaseStatus status);
+std::optional<CaseStatus> parse_case_status(std::string_view text);
+
+// How one attempt ended (the worker protocol's failure kinds, plus the scheduler's own).
+enum class AttemptEnd { done, invalid, error, wall_time, lost, interrupted };
+std::string_view to_string(AttemptEnd end);
+
+// What the orchestrator submits: a study and its expanded cases (orchestrator/study).
+struct StudySubmission {
+  std::string hash;
+  std::string name;
+  std::string description;
+  nlohmann::ordered_json document;
+  int max_attempts = 3;
+  double case_wall_time = 3600.0;  // seconds
+  struct Case {
+    std::string hash;
+    nlohmann::ordered_json document;
+    nlohmann::ordered_json grid_point;
+    std::string grid_key;
+    int replicate = 0;
+  };
+  std::vector<Case> cases;
+};
+
+struct SubmissionReceipt {
+  std::int64_t study_id = 0;
+  bool existing_study = false;   // the same study was submitted before: nothing new was stored
+  std::size_t cases = 0;
+  std::size_t new_cases = 0;     // queued now for the first time
+  std::size_t already_done = 0;  // finished for another study: not rerun
+  std::size_t requeued = 0;      // cancelled before, queued again
+};
+
+// A case handed to a worker job.
+struct CaseAssignment {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  nlohmann::ordered_json document;
+  double wall_time_limit = 0.0;
+};
+
+struct StudyRecord {
+  std::int64_t id = 0;
+  std::string hash;
+  std::string name;
+  std::string description;
+  std::string status;  // active | cancelled
+  double created_at = 0.0;
+  std::optional<double> cancelled_at;
+  int max_attempts = 0;
+  double case_wall_time = 0.0;
+  std::size_t case_count = 0;
+  nlohmann::ordered_json document;
+};
+
+struct StudyProgress {
+  std::int64_t study_id = 0;
+  std::size_t total = 0;
+  std::map<std::string, std::size_t> by_status;  // every CaseStatus, zero included
+  std::optional<double> first_started_at;
+  std::optional<double> last_finished_at;
+  double cases_per_hour = 0.0;                    // finished cases over the time since the first start
+  std::optional<double> seconds_left;             // remaining / rate, when there is a rate
+  bool complete = false;                          // nothing queued or running
+};
+
+struct CaseRecord {
+  std::int64_t id = 0;
+  std::string hash;
+  std::string status;
+  int attempts = 0;
+  int failures = 0;
+  int max_attempts = 0;
+  double wall_time_limit = 0.0;
+  std::optional<std::int64_t> job_id;
+  std::optional<std::string> worker;
+  double queued_at = 0.0;
+  std::optional<double> started_at;
+  std::optional<double> finished_at;
+  std::optional<std::string> error;
+  nlohmann::ordered_json grid_point;
+  int replicate = 0;
+  std::optional<std::string> outcome;
+};
+
+struct ResultRecord {
+  std::int64_t case_id = 0;
+  std::string hash;
+  nlohmann::ordered_json grid_point;
+  int replicate = 0;
+  int attempt = 0;
+  std::string outcome;
+  std::optional<double> restitution;
+  std::optional<double> largest_fragment_share;
+  std::optional<std::int64_t> fragment_count;
+  std::optional<double> mass_fraction_on_wall;
+  std::optional<double> impact_energy;
+  std::optional<double> wall_clock_seconds;
+  std::optional<std::string> data_file;
+  double committed_at = 0.0;
+};
+
+struct FragmentRecord {
+  int rank = 0;
+  std::int64_t primaries = 0;
+  double mass = 0.0;
+  bool on_wall = false;
+  std::optional<double> normal_velocity;
+  std::optional<double> radius_of_gyration;
+};
+
+struct AttemptRecord {
+  int attempt = 0;
+  std::optional<std::int64_t> job_id;
+  std::optional<std::string> worker;
+  double started_at = 0.0;
+  std::optional<double> ended_at;
+  std::optional<std::string> outcome;
+  std::optional<std::string> error;
+};
+
+struct CaseDetail {
+  CaseRecord record;
+  nlohmann::ordered_json document;
+  std::vector<AttemptRecord> attempts;
+  std::optional<nlohmann::ordered_json> result;
+  std::optional<std::string> data_file;
+  std::vector<FragmentRecord> fragments;
+};
+
+// Outcome counts of the finished cases at one grid point of a study.
+struct GridPointOutcomes {
+  nlohmann::ordered_json grid_point;
+  std::size_t cases = 0;  // all replicates, whatever their status
+  std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
+  std::size_t failed = 0;
+  std::size_t finished() const;                 // cases with a result
+};
+
+struct JobRecord {
+  std::int64_t id = 0;
+  std::string command;
+  int ranks = 0;
+  std::optional<std::int64_t> pid;
+  double started_at = 0.0;
+  std::optional<double> ended_at;
+  std::optional<std::int64_t> exit_status;
+  std::optional<std::string> note;
+};
+
+template <typename Record>
+struct Page {
+  std::vector<Record> items;
+  std::size_t total = 0;  // matching rows, all pages
+};
+
+struct PageRequest {
+  std::size_t limit = 100;
+  std::size_t offset = 0;
+};
+
+}  // namespace aerobreak

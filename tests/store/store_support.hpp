@@ -1,0 +1,73 @@
+#pragma once
+// Shared set-up of the store tests: a fresh store file per test, and submissions and result
+// documents small enough to read at a glance.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak::testing {
+
+// A store file in a fresh temporary directory, removed with the object.
+class TemporaryStoreFile {
+ public:
+  explicit TemporaryStoreFile(const std::string& name)
+      : directory_(std::filesystem::temp_directory_path() / ("aerobreak-store-" + name + "-" +
+                                                             std::to_string(::getpid()))) {
+    std::filesystem::remove_all(directory_);
+    std::filesystem::create_directories(directory_);
+  }
+  ~TemporaryStoreFile() { std::filesystem::remove_all(directory_); }
+  std::filesystem::path path() const { return directory_ / "store.sqlite"; }
+
+ private:
+  std::filesystem::path directory_;
+};
+
+// A study of `speeds` x `replicates` cases whose hashes are made from the study tag, so that two
+// studies with the same tag share their cases.
+inline StudySubmission submission(const std::string& study_hash, const std::string& case_tag,
+                                  std::initializer_list<double> speeds, int replicates = 1, int max_attempts = 3) {
+  StudySubmission study;
+  study.hash = study_hash;
+  study.name = "study " + study_hash;
+  study.document = {{"name", study.name}};
+  study.max_attempts = max_attempts;
+  study.case_wall_time = 60.0;
+  for (const double speed : speeds) {
+    for (int replicate = 0; replicate < replicates; ++replicate) {
+      StudySubmission::Case study_case;
+      study_case.grid_point = {{"impact_speed", speed}};
+      study_case.grid_key = study_case.grid_point.dump();
+      study_case.replicate = replicate;
+      study_case.hash = case_tag + "/" + study_case.grid_key + "/" + std::to_string(replicate);
+      study_case.document = {{"impact", {{"speed", speed}}}, {"replicate", replicate}};
+      study.cases.push_back(std::move(study_case));
+    }
+  }
+  return study;
+}
+
+inline nlohmann::ordered_json result_document(const std::string& outcome, std::initializer_list<int> fragment_sizes) {
+  nlohmann::ordered_json fragments = nlohmann::ordered_json::array();
+  int largest = 0;
+  int total = 0;
+  for (const int size : fragment_sizes) {
+    fragments.push_back({{"size", size}, {"mass", static_cast<double>(size)}, {"on_wall", true},
+                         {"normal_velocity", -0.001}, {"radius_of_gyration", 1.5}});
+    largest = std::max(largest, size);
+    total += size;
+  }
+  return {{"outcome",
+           {{"class", outcome},
+            {"largest_fragment_share", static_cast<double>(largest) / total},
+            {"fragment_count", fragments.size()},
+            {"restitution", {{"normal", 0.25}, {"tangential", nullptr}}},
+            {"mass_fraction_on_wall", 1.0}}},
+          {"setup", {{"impact_kinetic_energy", 0.002}}},
+          {"fragments", {{"list", fragments}}}};
+}
+
+}  // namespace aerobreak::testing
