@@ -1,0 +1,167 @@
+#include "orchestrator/study/study.hpp"
+
+#include <fstream>
+#include <limits>
+
+#include "orchestrator/study/canonical_json.hpp"
+#include "orchestrator/study/sha256.hpp"
+#include "orchestrator/study/study_axes.hpp"
+#include "orchestrator/study/study_expansion.hpp"
+#include "orchestrator/study/study_schema_text.hpp"
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kClusterFile = "/cluster/file";
+constexpr const char* kClusterFilePath = "/cluster/file/path";
+constexpr const char* kPrimaries = "/cluster/generator/primaries";
+
+bool has_field(const Json& document, const std::string& pointer) {
+  return document.contains(Json::json_pointer(pointer));
+}
+
+const StudyAxis* axis_setting(const std::vector<StudyAxis>& axes, const std::string& pointer) {
+  for (const auto& axis : axes)
+    if (covers(axis.pointer, pointer)) return &axis;
+  return nullptr;
+}
+
+// Relative cluster file paths, in the base and in an axis of paths, become absolute against the
+// study file's directory, so that the cases are found wherever the study is run from.
+void make_cluster_paths_absolute(Json& document, const std::filesystem::path& directory) {
+  auto absolute = [&](Json& path) {
+    if (path.is_string() && std::filesystem::path(path.get<std::string>()).is_relative())
+      path = (directory / path.get<std::string>()).lexically_normal().string();
+  };
+  const auto base_path = Json::json_pointer("/base" + std::string(kClusterFilePath));
+  if (document.contains(base_path)) absolute(document[base_path]);
+  for (auto& [name, spec] : document["axes"].items())
+    if (axis_pointer(name) == kClusterFilePath && spec.contains("values"))
+      for (auto& value : spec["values"]) absolute(value);
+}
+
+// The rules on the base: it sets no swept field and no seed the replicates derive, names no cluster
+// file where files are refused, and asks for no more primaries than allowed.
+void check_base(const Json& base, const std::vector<StudyAxis>& axes, const StudyLimits& limits,
+                std::vector<SchemaViolation>& violations) {
+  for (const auto& axis : axes)
+    if (has_field(base, axis.pointer))
+      violations.push_back({"/base" + axis.pointer, "is set by axis \"" + axis.name + "\": leave it out of the base"});
+  for (const char* seed : {"/cluster/generator/seed", "/impact/orientation_seed"})
+    if (!axis_setting(axes, seed) && has_field(base, seed))
+      violations.push_back({"/base" + std::string(seed), "is derived for each replicate from /replicates/seed: leave it out of the "
+                                            "base (or sweep it as an axis to choose it)"});
+
+  if (!limits.allow_cluster_files) {
+    const std::string refused = "cluster files are not accepted here (the service reads no file a client names): use "
+                                "/cluster/generator";
+    if (has_field(base, kClusterFile)) violations.push_back({"/base" + std::string(kClusterFile), refused});
+    for (const auto& axis : axes)
+      if (covers(axis.pointer, kClusterFile) || covers(kClusterFile, axis.pointer))
+        violations.push_back({pointer_child("/axes", axis.name), refused});
+  }
+
+  auto too_many = [&](const Json& primaries) {
+    return primaries.is_number() && primaries.get<double>() > static_cast<double>(limits.max_primaries);
+  };
+  const std::string limit_text = "; the limit here is " + std::to_string(limits.max_primaries) + " per case";
+  if (const StudyAxis* axis = axis_setting(axes, kPrimaries)) {
+    for (const auto& primaries : axis->values)
+      if (too_many(primaries)) {
+        violations.push_back({pointer_child("/axes", axis->name), "asks for " + primaries.dump() + " primaries" + limit_text});
+        break;
+      }
+  } else if (has_field(base, kPrimaries) && too_many(base[Json::json_pointer(kPrimaries)])) {
+    violations.push_back({"/base" + std::string(kPrimaries),
+                          "asks for " + base[Json::json_pointer(kPrimaries)].dump() + " primaries" + limit_text});
+  }
+}
+
+// "16 x 3 x 2 replicates = 96".
+std::string count_text(const Study& study) {
+  std::string text;
+  for (const auto& axis : study.axes) text += std::to_string(axis.values.size()) + " x ";
+  text += std::to_string(study.replicates) + " replicate" + (study.replicates > 1 ? "s" : "") + " = ";
+  const std::size_t count = study.case_count();
+  return text + (count == std::numeric_limits<std::size_t>::max() ? "more than " + std::to_string(count)
+                                                                  : std::to_string(count));
+}
+
+}  // namespace
+
+const JsonSchema& study_schema() {
+  static const JsonSchema schema = [] {
+    try {
+      return JsonSchema(Json::parse(study_schema_text()));
+    } catch (const std::exception& e) {
+      throw std::logic_error(std::string("built-in schemas/study.schema.json is not a usable JSON schema: ") + e.what());
+    }
+  }();
+  return schema;
+}
+
+std::size_t Study::case_count() const {
+  constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
+  std::size_t count = replicates > 0 ? static_cast<std::size_t>(replicates) : 0;
+  for (const auto& axis : axes) {
+    const std::size_t size = axis.values.size();
+    count = size != 0 && count > kMax / size ? kMax : count * size;
+  }
+  return count;
+}
+
+Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
+                  const std::filesystem::path& base_directory) {
+  std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
+  if (document.is_object() && document.contains("axes") && document["axes"].is_object())
+    check_axis_names(document["axes"], violations);
+  if (!violations.empty()) throw StudyError(std::move(violations));
+
+  if (!base_directory.empty()) make_cluster_paths_absolute(document, base_directory);
+  Study study;
+  study.name = document["name"].get<std::string>();
+  study.description = document.value("description", std::string());
+  study.replicates = document["replicates"]["count"].get<int>();
+  study.seed = document["replicates"]["seed"].get<std::uint64_t>();
+  study.max_attempts = document["execution"]["max_attempts"].get<int>();
+  study.case_wall_time = document["execution"]["case_wall_time"].get<double>();
+  study.axes = read_axes(document["axes"], violations);
+  check_base(document["base"], study.axes, limits, violations);
+  // Counted before anything is expanded: a study of 10^20 cases is refused in microseconds.
+  if (study.case_count() > limits.max_cases)
+    violations.push_back({"/axes", "expands to " + count_text(study) + " cases (axis sizes x replicates); the limit here is " +
+                                       std::to_string(limits.max_cases) + " cases"});
+  if (!violations.empty()) throw StudyError(std::move(violations));
+
+  study.document = std::move(document);
+  StudyExpansion expansion = expand_with_violations(study);
+  if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
+
+  // The name is part of what was submitted; only the reference to the schema file is not.
+  Json hashed = study.document;
+  hashed.erase("$schema");
+  study.hash = sha256_hex("aerobreak-study-v1\n" + canonical_dump(hashed));
+  return study;
+}
+
+Study load_study(const std::filesystem::path& path, const StudyLimits& limits) {
+  std::ifstream in(path);
+  if (!in) throw StudyError({{"", "cannot open study file " + path.string()}});
+  Json document;
+  try {
+    document = Json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw StudyError({{"", path.string() + " is not valid JSON: " + e.what()}});
+  }
+  return parse_study(std::move(document), limits, std::filesystem::absolute(path).parent_path());
+}
+
+std::vector<StudyCase> expand_study(const Study& study) {
+  StudyExpansion expansion = expand_with_violations(study);
+  if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
+  return std::move(expansion.cases);
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,173 @@
+#include "orchestrator/study/study_axes.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "orchestrator/study/canonical_json.hpp"
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct AxisAlias {
+  std::string_view name;
+  std::string_view pointer;
+  bool integer;
+};
+
+// The axes a study names most often, by their short names (schemas/study.schema.json lists them).
+constexpr std::array<AxisAlias, 3> kAliases{{
+    {"impact_speed", "/impact/speed", false},
+    {"gamma_over_kn", "/material/gamma_over_kn", false},
+    {"primaries", "/cluster/generator/primaries", true},
+}};
+
+constexpr std::size_t kMaxAxes = 8;
+
+std::optional<AxisAlias> alias(const std::string& name) {
+  for (const auto& a : kAliases)
+    if (a.name == name) return a;
+  return std::nullopt;
+}
+
+std::string alias_names() {
+  std::string names;
+  for (const auto& a : kAliases) names += (names.empty() ? "" : ", ") + std::string(a.name);
+  return names;
+}
+
+bool is_integral(double x) { return std::isfinite(x) && std::floor(x) == x && std::fabs(x) < 9007199254740992.0; }
+
+Json as_number(double x) { return is_integral(x) ? Json(static_cast<std::int64_t>(x)) : Json(x); }
+
+// count values from `from` to `to`, evenly spaced in x or, for a log range, in log10 x; the end
+// points are set exactly, so that a range meets the values a user types in elsewhere.
+std::vector<Json> range_values(const Json& range, bool logarithmic) {
+  const double from = range["from"].get<double>();
+  const double to = range["to"].get<double>();
+  const auto count = range["count"].get<std::size_t>();
+  std::vector<Json> values;
+  for (std::size_t k = 0; k < count; ++k) {
+    double x;
+    if (k == 0) {
+      x = from;
+    } else if (k + 1 == count) {
+      x = to;
+    } else if (logarithmic) {
+      // Powers of ten from log10: a decade range then gives 0.001, not 0.0010000000000000002.
+      const double a = std::log10(from), b = std::log10(to);
+      x = std::pow(10.0, a + (b - a) * static_cast<double>(k) / static_cast<double>(count - 1));
+    } else {
+      x = from + (to - from) * static_cast<double>(k) / static_cast<double>(count - 1);
+    }
+    values.push_back(as_number(x));
+  }
+  return values;
+}
+
+StudyAxis read_axis(const std::string& name, const Json& spec, std::vector<SchemaViolation>& violations) {
+  const std::string where = pointer_child("/axes", name);
+  const auto known = alias(name);
+  const bool integer = known && known->integer;
+  StudyAxis axis{name, axis_pointer(name), {}};
+
+  if (spec.contains("values")) {
+    const Json& values = spec["values"];
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const Json& v = values[k];
+      if (integer && !(v.is_number() && is_integral(v.get<double>()))) {
+        violations.push_back({pointer_child(where + "/values", std::to_string(k)),
+                              "must be an integer: " + name + " is a count (got " + v.dump() + ")"});
+        continue;
+      }
+      axis.values.push_back(integer ? as_number(v.get<double>()) : v);
+    }
+  } else {
+    const std::string kind = spec.contains("linear") ? "linear" : "log";
+    const Json& range = spec[kind];
+    const bool same_ends = range["from"].get<double>() == range["to"].get<double>();
+    const auto count = range["count"].get<std::size_t>();
+    if (count == 1 && !same_ends)
+      violations.push_back({where + "/" + kind + "/count",
+                            "must be at least 2 when from and to differ (count 1 is the single value from = to)"});
+    else if (count > 1 && same_ends)
+      violations.push_back({where + "/" + kind + "/count", "must be 1 when from = to (the values would repeat)"});
+    axis.values = range_values(range, kind == "log");
+    if (integer)
+      for (const auto& v : axis.values)
+        if (!v.is_number_integer()) {
+          violations.push_back({where + "/" + kind, "gives " + v.dump() + ", but " + name +
+                                                        " is a count: choose from, to and count so that every value is an integer"});
+          break;
+        }
+  }
+
+  // A repeated value would be the same case twice.
+  std::map<std::string, std::size_t> seen;
+  for (std::size_t k = 0; k < axis.values.size(); ++k) {
+    const auto [at, inserted] = seen.emplace(canonical_dump(axis.values[k]), k);
+    if (!inserted)
+      violations.push_back({where, "repeats the value " + axis.values[k].dump() + " (values " +
+                                       std::to_string(at->second) + " and " + std::to_string(k) + ")"});
+  }
+  return axis;
+}
+
+}  // namespace
+
+std::string axis_pointer(const std::string& name) {
+  if (const auto a = alias(name)) return std::string(a->pointer);
+  if (name.empty() || name.front() != '/') return {};
+  try {
+    Json::json_pointer checked(name);
+  } catch (const nlohmann::json::exception&) {
+    return {};
+  }
+  return name;
+}
+
+bool covers(const std::string& outer, const std::string& inner) {
+  return inner == outer || inner.rfind(outer + "/", 0) == 0;
+}
+
+void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations) {
+  if (axes.empty()) violations.push_back({"/axes", "must name at least 1 axis"});
+  if (axes.size() > kMaxAxes)
+    violations.push_back({"/axes", "must name at most " + std::to_string(kMaxAxes) + " axes (got " +
+                                       std::to_string(axes.size()) + ")"});
+  std::vector<std::pair<std::string, std::string>> named;  // (axis name, pointer)
+  for (const auto& [name, unused] : axes.items()) {
+    const std::string where = pointer_child("/axes", name);
+    const std::string pointer = axis_pointer(name);
+    if (pointer.empty()) {
+      violations.push_back({where, name.empty() || name.front() != '/'
+                                       ? "is neither an axis alias (" + alias_names() +
+                                             ") nor a JSON pointer into the case (starting with \"/\")"
+                                       : "is not a valid JSON pointer (RFC 6901: \"~\" must be written \"~0\" or \"~1\")"});
+      continue;
+    }
+    if (pointer == "/name" || pointer == "/description" || pointer == "/$schema") {
+      violations.push_back({where, "is a label, not physics: the study names each case itself"});
+      continue;
+    }
+    for (const auto& [other, other_pointer] : named)
+      if (covers(pointer, other_pointer) || covers(other_pointer, pointer))
+        violations.push_back({where, "sets " + (pointer == other_pointer ? std::string("the same case field as") : std::string("a case field overlapping that of")) +
+                                         " axis \"" + other + "\" (" + other_pointer + ")"});
+    named.emplace_back(name, pointer);
+  }
+}
+
+std::vector<StudyAxis> read_axes(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations) {
+  std::vector<StudyAxis> out;
+  for (const auto& [name, spec] : axes.items()) out.push_back(read_axis(name, spec, violations));
+  return out;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,31 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/impact/json_schema.hpp"
+#include "orchestrator/study/study.hpp"
+
+namespace aerobreak {
+
+// The axes of a study document: each name resolved to the case field it sets, each list or range
+// turned into its values. Violations name their field by JSON pointer into the study document.
+
+// The case field an axis name sets: the alias's pointer, or the name itself when it is a valid
+// JSON pointer; empty otherwise.
+std::string axis_pointer(const std::string& name);
+
+// Whether setting the case field `outer` also sets `inner` (the same field, or one inside it).
+bool covers(const std::string& outer, const std::string& inner);
+
+// The rules on axis names that the schema cannot state: 1 to 8 axes, each an alias or a valid JSON
+// pointer into the case, no label swept, no two axes setting the same field (or one inside the
+// other). Needs only "axes" to be an object, so that its answer can join the schema's.
+void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations);
+
+// The axes of a schema-valid "axes" object whose names passed check_axis_names, in key order.
+// Ranges give exactly `from` first and exactly `to` last; values that are integers are written as
+// integers. An integer field (primaries) refuses non-integral values.
+std::vector<StudyAxis> read_axes(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations);
+
+}  // namespace aerobreak

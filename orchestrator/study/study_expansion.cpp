@@ -1,0 +1,155 @@
+#include "orchestrator/study/study_expansion.hpp"
+
+#include <map>
+#include <string>
+#include <utility>
+
+#include "engine/impact/impact_case.hpp"
+#include "orchestrator/study/canonical_json.hpp"
+#include "orchestrator/study/case_hash.hpp"
+#include "orchestrator/study/study_axes.hpp"
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Beyond this many distinct violations the rest are counted, not listed: a study of many cases
+// with a value-dependent error would otherwise answer with one line per case.
+constexpr std::size_t kMaxListed = 50;
+
+// Collects the violations of the cases, each distinct (pointer, message) once, with the first case
+// that shows it and how many others do.
+class CaseViolations {
+ public:
+  void add(const std::string& pointer, const std::string& message, const std::string& where) {
+    const auto [at, inserted] = index_.emplace(std::make_pair(pointer, message), entries_.size());
+    if (inserted)
+      entries_.push_back({pointer, message, where, 0});
+    else
+      ++entries_[at->second].others;
+  }
+
+  std::vector<SchemaViolation> list() const {
+    std::vector<SchemaViolation> out;
+    for (std::size_t k = 0; k < entries_.size() && k < kMaxListed; ++k) {
+      const Entry& e = entries_[k];
+      std::string context = "in " + e.where;
+      if (e.others > 0) context += " and " + std::to_string(e.others) + " other case" + (e.others > 1 ? "s" : "");
+      out.push_back({e.pointer, e.message + " (" + context + ")"});
+    }
+    if (entries_.size() > kMaxListed)
+      out.push_back({"/axes", std::to_string(entries_.size() - kMaxListed) + " more distinct violations in other cases"});
+    return out;
+  }
+
+ private:
+  struct Entry {
+    std::string pointer, message, where;
+    std::size_t others;
+  };
+  std::vector<Entry> entries_;
+  std::map<std::pair<std::string, std::string>, std::size_t> index_;
+};
+
+// Where a violation of the case field `case_pointer` belongs in the study: the axis that sets the
+// field, or else the base.
+std::string study_pointer(const Study& study, const std::string& case_pointer) {
+  for (const auto& axis : study.axes)
+    if (covers(axis.pointer, case_pointer))
+      return pointer_child("/axes", axis.name);
+  return "/base" + case_pointer;
+}
+
+// The base with the replicate's seeds and the grid point's values set, named after both, labels
+// of the base dropped. Returns null when an axis cannot be set (the base has a value in the way).
+Json case_document(const Study& study, const Json& grid_point, int replicate, const std::string& where,
+                   CaseViolations& violations) {
+  Json document = study.document["base"];
+  document.erase("name");
+  document.erase("description");
+  document.erase("$schema");
+  // Seeds first, so that an axis setting one wins. They depend on the replicate only, not on the
+  // grid point: replicate r impacts the same cluster in the same orientation at every speed
+  // (common random numbers), so that differences between grid points are not sampling noise.
+  const auto generator = Json::json_pointer("/cluster/generator");
+  if (document.contains(generator) && document[generator].is_object())
+    document[generator]["seed"] = replicate_seed(study.seed, "cluster", replicate);
+  if (!document.contains("impact") || document["impact"].is_object())
+    document["impact"]["orientation_seed"] = replicate_seed(study.seed, "orientation", replicate);
+
+  for (const auto& axis : study.axes) {
+    try {
+      document[Json::json_pointer(axis.pointer)] = grid_point[axis.name];
+    } catch (const nlohmann::json::exception& e) {
+      violations.add(pointer_child("/axes", axis.name), std::string("cannot be set in the case: ") + e.what(), where);
+      return nullptr;
+    }
+  }
+
+  Json named{{"name", study.name + " | " + grid_label(grid_point) + " | replicate " + std::to_string(replicate)}};
+  for (auto& [key, value] : document.items()) named[key] = std::move(value);
+  return named;
+}
+
+}  // namespace
+
+std::string grid_label(const nlohmann::ordered_json& grid_point) {
+  std::string label;
+  for (const auto& [name, value] : grid_point.items())
+    label += (label.empty() ? "" : " ") + name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  return label;
+}
+
+StudyExpansion expand_with_violations(const Study& study) {
+  StudyExpansion out;
+  CaseViolations violations;
+  ClusterFileDigests digests;
+  std::map<std::string, std::string> first_with_hash;
+
+  const std::size_t points = study.case_count() / static_cast<std::size_t>(study.replicates);
+  out.cases.reserve(study.case_count());
+  for (std::size_t point = 0; point < points; ++point) {
+    // The first axis varies slowest.
+    Json grid_point = Json::object();
+    std::vector<std::size_t> digits(study.axes.size());
+    for (std::size_t i = study.axes.size(), rest = point; i-- > 0;) {
+      digits[i] = rest % study.axes[i].values.size();
+      rest /= study.axes[i].values.size();
+    }
+    for (std::size_t i = 0; i < study.axes.size(); ++i) grid_point[study.axes[i].name] = study.axes[i].values[digits[i]];
+
+    for (int replicate = 0; replicate < study.replicates; ++replicate) {
+      const std::string where = "case " + grid_label(grid_point) + ", replicate " + std::to_string(replicate);
+      Json document = case_document(study, grid_point, replicate, where, violations);
+      if (document.is_null()) continue;
+      StudyCase c;
+      try {
+        c.document = parse_impact_case(std::move(document)).document;
+      } catch (const CaseError& e) {
+        for (const auto& v : e.violations()) violations.add(study_pointer(study, v.pointer), v.message, where);
+        continue;
+      }
+      try {
+        c.hash = case_hash(c.document, digests);
+      } catch (const std::runtime_error& e) {
+        violations.add(study_pointer(study, "/cluster/file/path"), e.what(), where);
+        continue;
+      }
+      const auto [first, unique] = first_with_hash.emplace(c.hash, where);
+      if (!unique) {
+        violations.add("/axes", "gives cases with the same physics (a value repeated, or an axis that changes nothing)",
+                       where + " is the same as " + first->second);
+        continue;
+      }
+      c.grid_point = grid_point;
+      c.grid_key = grid_point.dump();
+      c.replicate = replicate;
+      out.cases.push_back(std::move(c));
+    }
+  }
+  out.violations = violations.list();
+  return out;
+}
+
+}  // namespace aerobreak

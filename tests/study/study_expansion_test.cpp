@@ -1,0 +1,159 @@
+// expand_study: every combination of one value per axis (first axis slowest, replicates fastest),
+// ranges with exact end points, replicate seeds derived from the study seed and the replicate only.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "orchestrator/study/sha256.hpp"
+#include "study_support.hpp"
+
+using namespace aerobreak;
+using aerobreak::testing::minimal_study;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Json ptr(const Json& document, const std::string& pointer) { return document.at(Json::json_pointer(pointer)); }
+
+// The replicate seed computed here from its definition, independently of replicate_seed().
+std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream, int replicate) {
+  const std::string hex = sha256_hex("aerobreak-seed-v1|" + std::to_string(study_seed) + "|" + stream + "|" +
+                                     std::to_string(replicate));
+  return std::stoull(hex.substr(0, 16), nullptr, 16) & ((std::uint64_t{1} << 53) - 1);
+}
+
+Json grid_study() {
+  Json s = minimal_study();
+  s["axes"] = Json::parse(R"({
+    "impact_speed": {"values": [0.01, 0.02]},
+    "gamma_over_kn": {"log": {"from": 1e-4, "to": 1e-2, "count": 3}},
+    "primaries": {"linear": {"from": 8, "to": 16, "count": 2}}
+  })");
+  s["replicates"] = {{"count", 2}, {"seed", 2026}};
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("cases run through the axes in key order, the first slowest, replicates fastest") {
+  const Study study = parse_study(grid_study());
+  REQUIRE(study.case_count() == 24);
+  const auto cases = expand_study(study);
+  REQUIRE(cases.size() == 24);
+
+  std::size_t k = 0;
+  for (double speed : {0.01, 0.02})
+    for (double gamma : {1e-4, 1e-3, 1e-2})
+      for (int primaries : {8, 16})
+        for (int replicate : {0, 1}) {
+          INFO("case " << k);
+          const StudyCase& c = cases[k++];
+          CHECK(c.grid_point == Json{{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", primaries}});
+          CHECK(c.grid_key == c.grid_point.dump());
+          CHECK(c.replicate == replicate);
+          CHECK(ptr(c.document, "/impact/speed") == speed);
+          CHECK(ptr(c.document, "/material/gamma_over_kn") == gamma);
+          CHECK(ptr(c.document, "/cluster/generator/primaries") == primaries);
+          CHECK(ptr(c.document, "/cluster/generator/primaries").is_number_integer());
+        }
+
+  std::set<std::string> hashes, keys;
+  for (const auto& c : cases) {
+    hashes.insert(c.hash);
+    keys.insert(c.grid_key);
+  }
+  CHECK(hashes.size() == 24);
+  CHECK(keys.size() == 12);
+}
+
+TEST_CASE("case documents are complete, named after the study, grid point and replicate") {
+  Json s = grid_study();
+  s["description"] = "not copied";
+  s["base"]["description"] = "not copied either";
+  const auto cases = expand_study(parse_study(s));
+  const Json& d = cases[5].document;
+  CHECK(d["name"] == "test study | impact_speed=0.01 gamma_over_kn=0.001 primaries=8 | replicate 1");
+  CHECK(d.begin().key() == "name");
+  CHECK_FALSE(d.contains("description"));
+  // Defaults the base left out are filled in.
+  CHECK(d["model"]["friction"] == 0.5);
+  CHECK(d["impact"]["gap"] == 0.01);
+  CHECK(d["units"] == "reduced");
+}
+
+TEST_CASE("linear and log ranges include both end points exactly") {
+  Json s = minimal_study();
+  s["axes"]["impact_speed"] = {{"linear", {{"from", 0.1}, {"to", 0.7}, {"count", 7}}}};
+  s["axes"]["gamma_over_kn"] = {{"log", {{"from", 0.003}, {"to", 0.07}, {"count", 5}}}};
+  const Study study = parse_study(s);
+  const auto& speeds = study.axes[0].values;
+  REQUIRE(speeds.size() == 7);
+  CHECK(speeds.front().get<double>() == 0.1);
+  CHECK(speeds.back().get<double>() == 0.7);  // 0.1 + 6 x 0.1 would be 0.7000000000000001
+  for (std::size_t k = 1; k < speeds.size(); ++k)
+    CHECK(speeds[k].get<double>() - speeds[k - 1].get<double>() == Approx(0.1).epsilon(1e-12));
+
+  const auto& gammas = study.axes[1].values;
+  REQUIRE(gammas.size() == 5);
+  CHECK(gammas.front().get<double>() == 0.003);
+  CHECK(gammas.back().get<double>() == 0.07);
+  const double ratio = std::pow(0.07 / 0.003, 0.25);
+  for (std::size_t k = 1; k < gammas.size(); ++k)
+    CHECK(gammas[k].get<double>() / gammas[k - 1].get<double>() == Approx(ratio).epsilon(1e-12));
+
+  s["axes"]["gamma_over_kn"] = {{"log", {{"from", 1e-4}, {"to", 1e-2}, {"count", 3}}}};
+  CHECK(Json(parse_study(s).axes[1].values) == Json{1e-4, 1e-3, 1e-2});
+}
+
+TEST_CASE("replicate r gets seeds derived from the study seed and r, the same at every grid point") {
+  const auto cases = expand_study(parse_study(grid_study()));
+  std::set<std::uint64_t> cluster_seeds, orientation_seeds;
+  for (const auto& c : cases) {
+    const auto cluster = ptr(c.document, "/cluster/generator/seed").get<std::uint64_t>();
+    const auto orientation = ptr(c.document, "/impact/orientation_seed").get<std::uint64_t>();
+    CHECK(cluster == expected_seed(2026, "cluster", c.replicate));
+    CHECK(orientation == expected_seed(2026, "orientation", c.replicate));
+    CHECK(cluster == replicate_seed(2026, "cluster", c.replicate));
+    CHECK(cluster < (std::uint64_t{1} << 53));
+    cluster_seeds.insert(cluster);
+    orientation_seeds.insert(orientation);
+  }
+  // Two replicates: two seeds per stream over all twelve grid points.
+  CHECK(cluster_seeds.size() == 2);
+  CHECK(orientation_seeds.size() == 2);
+  CHECK(replicate_seed(2026, "cluster", 0) != replicate_seed(2027, "cluster", 0));
+  CHECK(replicate_seed(2026, "cluster", 0) != replicate_seed(2026, "orientation", 0));
+}
+
+TEST_CASE("the seeds of replicate r do not depend on how many replicates the study has") {
+  Json s = grid_study();
+  const auto two = expand_study(parse_study(s));
+  s["replicates"]["count"] = 5;
+  const auto five = expand_study(parse_study(s));
+  CHECK(two[1].hash == five[1].hash);
+  CHECK(two[1].document["cluster"] == five[1].document["cluster"]);
+}
+
+TEST_CASE("an axis setting a seed wins over the derived one") {
+  Json s = grid_study();
+  s["axes"]["/impact/orientation_seed"] = {{"values", {5, 6}}};
+  const auto cases = expand_study(parse_study(s));
+  REQUIRE(cases.size() == 48);
+  CHECK(ptr(cases[0].document, "/impact/orientation_seed") == 5);
+  CHECK(ptr(cases[1].document, "/impact/orientation_seed") == 5);  // replicate 1, same swept seed
+  CHECK(ptr(cases[2].document, "/impact/orientation_seed") == 6);
+  CHECK(ptr(cases[1].document, "/cluster/generator/seed") == replicate_seed(2026, "cluster", 1));
+}
+
+TEST_CASE("a cluster read from a file gets no generator seed, only an orientation seed") {
+  const aerobreak::testing::Scratch scratch("file_seed");
+  Json s = grid_study();
+  s["axes"].erase("primaries");
+  s["base"]["cluster"] = {{"file", {{"path", scratch.write("rod.xyz", aerobreak::testing::kRodXyz).string()}}}};
+  const auto cases = expand_study(parse_study(s));
+  REQUIRE(cases.size() == 12);
+  CHECK_FALSE(cases[0].document["cluster"].contains("generator"));
+  CHECK(ptr(cases[1].document, "/impact/orientation_seed") == replicate_seed(2026, "orientation", 1));
+}
