@@ -118,19 +118,20 @@ SubmissionReceipt Store::submit_study(const StudySubmission& submission) {
   return receipt;
 }
 
-std::optional<CaseAssignment> Store::claim_next_case(std::int64_t job_id, const std::string& worker) {
+std::optional<ClaimedCase> Store::claim_next_case(std::int64_t job_id, const std::string& worker) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   auto next = writer_->prepare(
-      "SELECT c.id, c.attempts, c.document, c.wall_time_limit FROM cases c WHERE c.status = 'queued' AND EXISTS "
+      "SELECT c.id, c.attempts, c.document, c.wall_time_limit, c.hash FROM cases c WHERE c.status = 'queued' AND EXISTS "
       "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
       " WHERE sc.case_id = c.id AND s.status = 'active') ORDER BY c.id LIMIT 1");
   if (!next.step()) return std::nullopt;
-  CaseAssignment assignment;
+  ClaimedCase assignment;
   assignment.case_id = next.integer(0);
   assignment.attempt = static_cast<int>(next.integer(1)) + 1;
   assignment.document = nlohmann::ordered_json::parse(next.text(2));
   assignment.wall_time_limit = next.real(3);
+  assignment.hash = next.text(4);
   const double now = unix_seconds();
   writer_->prepare(
           "UPDATE cases SET status = 'running', attempts = ?, job_id = ?, worker = ?, started_at = ? WHERE id = ?")
@@ -250,7 +251,8 @@ std::optional<CaseStatus> Store::record_failure(std::int64_t case_id, int attemp
   return status;
 }
 
-std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason) {
+std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason, bool counts_as_failure) {
+  if (!counts_as_failure) return requeue_running("job_id = " + std::to_string(job_id), reason);
   std::vector<std::pair<std::int64_t, int>> running;
   {
     auto db = read();
@@ -265,16 +267,21 @@ std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason) {
 }
 
 std::size_t Store::requeue_interrupted() {
+  return requeue_running("1", "the orchestrator stopped while the case ran");
+}
+
+std::size_t Store::requeue_running(const std::string& condition, const std::string& reason) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   const double now = unix_seconds();
   writer_->prepare(
-          "UPDATE attempts SET ended_at = ?, outcome = 'interrupted', "
-          "error = 'the orchestrator stopped while the case ran' "
-          "WHERE ended_at IS NULL AND (case_id, attempt) IN (SELECT id, attempts FROM cases WHERE status = 'running')")
+          "UPDATE attempts SET ended_at = ?, outcome = 'interrupted', error = ? WHERE ended_at IS NULL AND "
+          "(case_id, attempt) IN (SELECT id, attempts FROM cases WHERE status = 'running' AND " + condition + ")")
+      .bind_all(now, reason)
+      .run();
+  writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'running' AND " + condition)
       .bind_all(now)
       .run();
-  writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'running'").bind_all(now).run();
   const auto requeued = static_cast<std::size_t>(writer_->changes());
   transaction.commit();
   return requeued;

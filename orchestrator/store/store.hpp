@@ -38,7 +38,7 @@ class Store {
 
   // The next queued case that an active study wants (submission order), marked running for the
   // job; nullopt when there is none.
-  std::optional<CaseAssignment> claim_next_case(std::int64_t job_id, const std::string& worker = {});
+  std::optional<ClaimedCase> claim_next_case(std::int64_t job_id, const std::string& worker = {});
   // The worker rank that started a case (the job's "started" message).
   void record_worker(std::int64_t case_id, int attempt, const std::string& worker);
 
@@ -50,8 +50,10 @@ class Store {
   // with `error` once it has failed max_attempts times. Returns the new status; nullopt when the
   // attempt was not the running one.
   std::optional<CaseStatus> record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error);
-  // Cases a job was running when it ended: each counts a lost attempt (a crash may be the case's).
-  std::size_t requeue_job(std::int64_t job_id, const std::string& reason);
+  // Cases a job was running when it ended go back to the queue. A job that crashed counts a lost
+  // attempt against each of them (the crash may be the case's); a job the orchestrator stopped for
+  // another reason (shut-down, another case's wall time) counts none. Returns the cases requeued.
+  std::size_t requeue_job(std::int64_t job_id, const std::string& reason, bool counts_as_failure = true);
   // At start-up: cases left running by an orchestrator that died go back to the queue without a
   // failure counted (the orchestrator, not the case, stopped them).
   std::size_t requeue_interrupted();
@@ -81,6 +83,8 @@ class Store {
  private:
   class ReadConnection;
   ReadConnection read();
+  // Running cases matching an SQL condition on `cases` go back to the queue, no failure counted.
+  std::size_t requeue_running(const std::string& condition, const std::string& reason);
 
   std::filesystem::path file_;
   int opened_at_version_ = 0;

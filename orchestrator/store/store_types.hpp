@@ -47,11 +47,12 @@ struct SubmissionReceipt {
 };
 
 // A case handed to a worker job.
-struct CaseAssignment {
+struct ClaimedCase {
   std::int64_t case_id = 0;
+  std::string hash;
   int attempt = 0;
   nlohmann::ordered_json document;
-  double wall_time_limit = 0.0;
+  double wall_time_limit = 0.0;  // seconds
 };
 
 struct StudyRecord {

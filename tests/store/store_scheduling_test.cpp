@@ -177,3 +177,23 @@ TEST_CASE("Cancelling a study cancels its queued cases unless another active stu
 }
 
 }  // namespace aerobreak
+
+namespace aerobreak {
+
+TEST_CASE("A job the orchestrator stopped requeues its cases without counting a failure", "[store]") {
+  testing::TemporaryStoreFile file("stopped-job");
+  Store store(file.path());
+  store.submit_study(testing::submission("s1", "c", {0.1}, 1, 1));
+  const auto job = store.start_job("test", 1);
+  const auto claimed = store.claim_next_case(job);
+  REQUIRE(claimed);
+  CHECK(store.requeue_job(job, "killed for another case's wall time", false) == 1);
+  const auto detail = store.case_detail(claimed->case_id);
+  CHECK(detail->record.status == "queued");
+  CHECK(detail->record.failures == 0);
+  CHECK(detail->attempts.back().outcome == "interrupted");
+  CHECK(detail->attempts.back().error == "killed for another case's wall time");
+  CHECK(store.claim_next_case(job)->attempt == 2);
+}
+
+}  // namespace aerobreak
