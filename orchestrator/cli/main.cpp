@@ -8,6 +8,7 @@
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
 #include "orchestrator/cli/cluster_command.hpp"
+#include "orchestrator/cli/worker_command.hpp"
 
 namespace {
 
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   aerobreak::add_impact_command(app, exit_code);
   aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);
+  aerobreak::add_worker_command(app);
 
   try {
     app.parse(argc, argv);

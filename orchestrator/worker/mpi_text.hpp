@@ -1,0 +1,38 @@
+#pragma once
+#include <chrono>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace aerobreak {
+
+// Text messages between the ranks of a worker job (serialized JSON, MPI_CHAR), on
+// MPI_COMM_WORLD. Only a rank's main thread may call these (MPI_THREAD_FUNNELED).
+
+enum MessageTag : int {
+  kTagCase = 1,    // rank 0 -> worker rank: a serialized case assignment
+  kTagStop = 2,    // rank 0 -> worker rank: no more cases (empty)
+  kTagAnswer = 3,  // worker rank -> rank 0: the serialized result or failed message
+};
+
+// How long a waiting rank sleeps between two looks for a message. Open MPI's blocking receive
+// busy-polls and would take a core from the rank that computes beside it; 2 ms costs a message
+// at most that much latency and the waiting rank almost no CPU.
+inline constexpr std::chrono::milliseconds kPollPause{2};
+
+struct TextMessage {
+  int source = 0;
+  int tag = 0;
+  std::string text;
+};
+
+void send_text(int destination, int tag, std::string_view text);
+
+// The next message from `source` with `tag` (MPI_ANY_SOURCE, MPI_ANY_TAG allowed) if one has
+// arrived; never blocks.
+std::optional<TextMessage> try_receive_text(int source, int tag);
+
+// Waits for the next message from `source` with any tag, sleeping kPollPause between looks.
+TextMessage wait_for_text(int source);
+
+}  // namespace aerobreak

@@ -1,0 +1,147 @@
+#include "orchestrator/worker/worker_protocol.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Enough of an offending line to recognise it in a log, not a whole case document.
+std::string excerpt(std::string_view line) {
+  constexpr std::size_t kLongest = 160;
+  if (line.size() <= kLongest) return std::string(line);
+  return std::string(line.substr(0, kLongest)) + "...";
+}
+
+std::int64_t integer_field(const Json& message, const char* name, std::int64_t lowest, std::int64_t highest) {
+  const auto found = message.find(name);
+  if (found == message.end()) throw ProtocolError(std::string("/") + name + ": missing");
+  const bool fits = found->is_number_integer() &&
+                    (found->is_number_unsigned() ? found->get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
+                                                 : found->get<std::int64_t>() >= lowest &&
+                                                       found->get<std::int64_t>() <= highest);
+  if (!fits)
+    throw ProtocolError(std::string("/") + name + ": must be an integer in [" + std::to_string(lowest) + ", " +
+                        std::to_string(highest) + "] (got " + excerpt(found->dump()) + ")");
+  return found->get<std::int64_t>();
+}
+
+double wall_time_field(const Json& message) {
+  const auto found = message.find("wall_time");
+  if (found == message.end()) return 0.0;
+  if (!found->is_number() || !std::isfinite(found->get<double>()) || found->get<double>() < 0.0)
+    throw ProtocolError("/wall_time: must be a number of seconds >= 0 (got " + excerpt(found->dump()) + ")");
+  return found->get<double>();
+}
+
+std::string data_file_field(const Json& message) {
+  const auto found = message.find("data_file");
+  if (found == message.end()) return {};
+  if (!found->is_string()) throw ProtocolError("/data_file: must be a string (got " + excerpt(found->dump()) + ")");
+  const std::string path = found->get<std::string>();
+  // The job may run on another host with another working directory: only absolute paths mean
+  // the same file to both sides.
+  if (!path.empty() && !std::filesystem::path(path).is_absolute())
+    throw ProtocolError("/data_file: must be an absolute path or empty (got \"" + excerpt(path) + "\")");
+  return path;
+}
+
+constexpr std::int64_t kLowestCase = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kHighestCase = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kLargestAttempt = std::numeric_limits<int>::max();
+
+}  // namespace
+
+std::string to_string(FailureKind kind) {
+  switch (kind) {
+    case FailureKind::invalid: return "invalid";
+    case FailureKind::error: return "error";
+    case FailureKind::wall_time: return "wall_time";
+  }
+  return "error";
+}
+
+std::string serialize_message(const Json& message) {
+  return message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string protocol_line_from_serialized(std::string_view serialized_message) {
+  std::string line;
+  line.reserve(kProtocolPrefix.size() + serialized_message.size() + 1);
+  line.append(kProtocolPrefix).append(serialized_message).push_back('\n');
+  return line;
+}
+
+std::string protocol_line(const Json& message) { return protocol_line_from_serialized(serialize_message(message)); }
+
+OrchestratorMessage decode_orchestrator_line(std::string_view line) {
+  if (!line.starts_with(kProtocolPrefix))
+    throw ProtocolError("not a protocol line (no \"" + std::string(kProtocolPrefix) + "\" prefix): " + excerpt(line));
+  Json message;
+  try {
+    message = Json::parse(line.substr(kProtocolPrefix.size()));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ProtocolError("not JSON: " + std::string(e.what()) + ": " + excerpt(line));
+  }
+  if (!message.is_object()) throw ProtocolError("a message must be a JSON object: " + excerpt(line));
+  const auto type = message.find("type");
+  if (type == message.end() || !type->is_string())
+    throw ProtocolError("/type: missing or not a string: " + excerpt(line));
+  if (*type == "stop") return StopRequest{};
+  if (*type != "case") throw ProtocolError("/type: unknown message type " + excerpt(type->dump()));
+
+  // Without its case and attempt a case message cannot be answered as that case.
+  const std::int64_t case_id = integer_field(message, "case", kLowestCase, kHighestCase);
+  const auto attempt = static_cast<int>(integer_field(message, "attempt", 0, kLargestAttempt));
+  try {
+    return assignment_from_json(message);
+  } catch (const ProtocolError& e) {
+    return MalformedAssignment{case_id, attempt, "case message: " + std::string(e.what())};
+  }
+}
+
+Json to_json(const CaseAssignment& a) {
+  return Json{{"type", "case"},           {"case", a.case_id},         {"attempt", a.attempt},
+              {"document", a.document},   {"wall_time", a.wall_time},  {"data_file", a.data_file}};
+}
+
+CaseAssignment assignment_from_json(const Json& message) {
+  CaseAssignment a;
+  a.case_id = integer_field(message, "case", kLowestCase, kHighestCase);
+  a.attempt = static_cast<int>(integer_field(message, "attempt", 0, kLargestAttempt));
+  const auto document = message.find("document");
+  if (document == message.end()) throw ProtocolError("/document: missing");
+  a.document = *document;
+  a.wall_time = wall_time_field(message);
+  a.data_file = data_file_field(message);
+  return a;
+}
+
+Json ready_message(int ranks, const std::vector<std::string>& hosts, std::int64_t pid, std::string_view version) {
+  return Json{{"type", "ready"}, {"ranks", ranks}, {"hosts", hosts}, {"pid", pid}, {"version", std::string(version)}};
+}
+
+Json started_message(std::int64_t case_id, int attempt, int rank, const std::string& host) {
+  return Json{{"type", "started"}, {"case", case_id}, {"attempt", attempt}, {"rank", rank}, {"host", host}};
+}
+
+Json result_message(std::int64_t case_id, int attempt, int rank, double seconds, Json result,
+                    const std::string& data_file) {
+  return Json{{"type", "result"},  {"case", case_id},           {"attempt", attempt},  {"rank", rank},
+              {"seconds", seconds}, {"result", std::move(result)}, {"data_file", data_file}};
+}
+
+Json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,
+                    const std::string& error) {
+  return Json{{"type", "failed"},   {"case", case_id},         {"attempt", attempt}, {"rank", rank},
+              {"seconds", seconds}, {"kind", to_string(kind)}, {"error", error}};
+}
+
+Json protocol_error_message(const std::string& message) {
+  return Json{{"type", "protocol_error"}, {"message", message}};
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,87 @@
+#pragma once
+// The line protocol between the orchestrator and a worker job (docs/WORKER_PROTOCOL.md): its one
+// place of encoding and decoding.
+//
+// Every message is one line: the prefix "@aerobreak " followed by a compact JSON object and '\n'.
+// Lines without the prefix are not protocol (the orchestrator logs them).
+//
+// Orchestrator -> job (stdin of rank 0):
+//   {"type":"case","case":ID,"attempt":A,"document":{case},"wall_time":S,"data_file":"PATH"}
+//       wall_time in seconds, 0 = no limit (optional, default 0); data_file the absolute path of
+//       the HDF5 bulk file, "" for none (optional, default "").
+//   {"type":"stop"}   finish the cases in flight, send their results, exit 0.
+//   EOF without stop: the orchestrator is gone; the job aborts at once.
+// Job -> orchestrator (stdout of rank 0):
+//   {"type":"ready","ranks":K,"hosts":[...],"pid":P,"version":"V"}          once, first
+//   {"type":"started","case":ID,"attempt":A,"rank":R,"host":"H"}
+//   {"type":"result","case":ID,"attempt":A,"rank":R,"seconds":S,"result":{...},"data_file":"PATH"}
+//   {"type":"failed","case":ID,"attempt":A,"rank":R,"seconds":S,"kind":"invalid|error|wall_time","error":"..."}
+//   {"type":"protocol_error","message":"..."}                                a line that is no message
+// Every case assignment is answered by exactly one result or failed message.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace aerobreak {
+
+inline constexpr std::string_view kProtocolPrefix = "@aerobreak ";
+
+// One case handed to the job.
+struct CaseAssignment {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  nlohmann::ordered_json document;  // schemas/case.schema.json; judged by the case runner, not here
+  double wall_time = 0.0;           // seconds; 0: no limit
+  std::string data_file;            // absolute path of the HDF5 bulk file; empty: none
+};
+
+// A case message whose case and attempt could be read but whose other fields are wrong: it is
+// answered with a "failed" message of kind "invalid", so that no case is left without an answer.
+struct MalformedAssignment {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  std::string error;
+};
+
+struct StopRequest {};
+
+using OrchestratorMessage = std::variant<CaseAssignment, MalformedAssignment, StopRequest>;
+
+// A line from the orchestrator that cannot be tied to any case: answered by "protocol_error".
+class ProtocolError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class FailureKind { invalid, error, wall_time };
+std::string to_string(FailureKind kind);
+
+// The line for one message: prefix, compact JSON, '\n'. Invalid UTF-8 in strings (an error text
+// quoting a file name, say) is replaced rather than making the message unsendable.
+std::string protocol_line(const nlohmann::ordered_json& message);
+// The same for a message already serialized as a compact JSON object.
+std::string protocol_line_from_serialized(std::string_view serialized_message);
+// Compact JSON of a message, as it travels between ranks.
+std::string serialize_message(const nlohmann::ordered_json& message);
+
+// Decodes one line from the orchestrator (without its '\n'). Throws ProtocolError.
+OrchestratorMessage decode_orchestrator_line(std::string_view line);
+
+// A case assignment as the JSON object of its "case" message, and back (throws ProtocolError).
+nlohmann::ordered_json to_json(const CaseAssignment& assignment);
+CaseAssignment assignment_from_json(const nlohmann::ordered_json& message);
+
+nlohmann::ordered_json ready_message(int ranks, const std::vector<std::string>& hosts, std::int64_t pid,
+                                     std::string_view version);
+nlohmann::ordered_json started_message(std::int64_t case_id, int attempt, int rank, const std::string& host);
+nlohmann::ordered_json result_message(std::int64_t case_id, int attempt, int rank, double seconds,
+                                      nlohmann::ordered_json result, const std::string& data_file);
+nlohmann::ordered_json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,
+                                      const std::string& error);
+nlohmann::ordered_json protocol_error_message(const std::string& message);
+
+}  // namespace aerobreak

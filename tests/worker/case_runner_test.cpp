@@ -1,0 +1,102 @@
+// One case run in-process as a worker rank runs it: its result document, its wall-time limit and
+// its bulk HDF5 file.
+#include <catch2/catch.hpp>
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <system_error>
+#include <vector>
+
+#include "engine/impact/impact_case.hpp"
+#include "engine/impact/impact_result.hpp"
+#include "engine/io/h5md_reader.hpp"
+#include "engine/io/hdf5_datasets.hpp"
+#include "engine/io/hdf5_handle.hpp"
+#include "orchestrator/worker/case_runner.hpp"
+#include "worker_cases.hpp"
+
+using namespace aerobreak;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// A scratch directory removed with its contents at the end of the test.
+struct Scratch {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("aerobreak_case_runner_" + std::to_string(::getpid()));
+  Scratch() { std::filesystem::create_directories(dir); }
+  ~Scratch() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
+std::vector<std::int32_t> read_fragment_index(const std::filesystem::path& file) {
+  const Hdf5Handle h5 = checked_handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open", file);
+  const Hdf5Handle value = open_dataset(h5.get(), "particles/all/fragment/value");
+  const std::vector<hsize_t> shape = dataset_shape(value.get());
+  REQUIRE(shape.size() == 2);
+  REQUIRE(shape[0] == 1);
+  std::vector<std::int32_t> index(shape[1]);
+  read_dataset(value.get(), H5T_NATIVE_INT32, index.data());
+  return index;
+}
+
+}  // namespace
+
+TEST_CASE("run_case returns a valid result document and its wall-clock seconds") {
+  const CaseRunOutcome outcome = run_case(testing::tiny_case(), 0.0, {});
+  INFO(describe(validate_result(outcome.result)));
+  CHECK(validate_result(outcome.result).empty());
+  CHECK(outcome.result["dimensionless"]["primaries"] == 16);
+  CHECK(outcome.data_file.empty());
+  CHECK(outcome.seconds > 0.0);
+}
+
+TEST_CASE("run_case refuses an invalid document with a CaseError naming the field") {
+  auto document = testing::tiny_case();
+  document["impact"]["speed"] = -1.0;
+  CHECK_THROWS_AS(run_case(document, 0.0, {}), CaseError);
+  CHECK_THROWS_WITH(run_case(document, 0.0, {}), Contains("/impact/speed"));
+}
+
+TEST_CASE("A short wall time stops a long case within a bounded time") {
+  Scratch scratch;
+  const auto data_file = scratch.dir / "stopped.h5";
+  const auto start = std::chrono::steady_clock::now();
+  // About 30 s of work without the limit.
+  CHECK_THROWS_AS(run_case(testing::slow_case(1e6), 0.3, data_file), WallTimeExceeded);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(elapsed < 2.0);
+  // Neither a file under the name nor a half-written one is left behind.
+  CHECK_FALSE(std::filesystem::exists(data_file));
+  CHECK_FALSE(std::filesystem::exists(scratch.dir / "stopped.h5.partial"));
+}
+
+TEST_CASE("The bulk file holds the first and last states and each primary's final fragment") {
+  Scratch scratch;
+  const auto data_file = scratch.dir / "new" / "folder" / "case.h5";
+  const CaseRunOutcome outcome = run_case(testing::tiny_case(), 0.0, data_file);
+  CHECK(outcome.data_file == data_file.string());
+  REQUIRE(std::filesystem::exists(data_file));
+  CHECK_FALSE(std::filesystem::exists(data_file.string() + ".partial"));
+
+  REQUIRE(h5md_frame_count(data_file) == 2);
+  const H5mdFrame first = read_h5md_frame(data_file, 0);
+  const H5mdFrame last = read_h5md_frame(data_file, 1);
+  CHECK(first.position.size() == 16);
+  CHECK(first.step == 0);
+  CHECK(last.step == outcome.result["run"]["steps"]);
+
+  // The index follows the result's fragment list (largest first): sizes agree fragment by fragment.
+  const std::vector<std::int32_t> index = read_fragment_index(data_file);
+  REQUIRE(index.size() == 16);
+  const auto& fragments = outcome.result["fragments"]["list"];
+  REQUIRE(fragments.size() > 1);  // the tiny case breaks up
+  for (std::size_t f = 0; f < fragments.size(); ++f)
+    CHECK(std::count(index.begin(), index.end(), static_cast<std::int32_t>(f)) == fragments[f]["size"]);
+}
