@@ -8,6 +8,9 @@
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
 #include "orchestrator/cli/cluster_command.hpp"
+#include "orchestrator/cli/run_command.hpp"
+#include "orchestrator/cli/serve_command.hpp"
+#include "orchestrator/cli/study_client_command.hpp"
 #include "orchestrator/cli/worker_command.hpp"
 
 namespace {
@@ -18,18 +21,6 @@ constexpr const char* kAbout =
     "damping, Mindlin friction, rolling and twisting resistance), classifies each impact as stick,\n"
     "bounce or break-up with its fragment-size distribution, and turns sweeps of impacts into\n"
     "correlation tables for system-level aerosol codes.";
-
-// A subcommand whose implementation has not landed yet: it is listed, documented, and says so
-// plainly when called instead of pretending to work.
-void add_planned(CLI::App& app, const std::string& name, const std::string& summary, int& exit_code) {
-  auto* sub = app.add_subcommand(name, summary + " (not available in this version)");
-  sub->allow_extras();
-  sub->callback([name, &exit_code] {
-    std::cerr << "aerobreak " << name << ": not available in aerobreak " << aerobreak::version()
-              << " yet\n";
-    exit_code = 2;
-  });
-}
 
 }  // namespace
 
@@ -44,9 +35,11 @@ int main(int argc, char** argv) {
                        "Print the version and the git commit this binary was built from");
 
   int exit_code = 0;
-  add_planned(app, "run", "Run a study to completion locally and print the outcome table", exit_code);
-  add_planned(app, "serve", "Start the orchestrator service (REST API and web page)", exit_code);
-  add_planned(app, "study", "Submit, inspect or cancel studies on a running service", exit_code);
+  aerobreak::add_run_command(app, exit_code);
+  aerobreak::add_serve_command(app, exit_code);
+  auto* study = app.add_subcommand("study", "Submit, inspect or cancel studies on a running service; expand a study offline");
+  study->require_subcommand(1);
+  aerobreak::add_study_client_subcommands(*study, exit_code);
   aerobreak::add_impact_command(app, exit_code);
   aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);

@@ -1,6 +1,9 @@
 #include "orchestrator/worker/mpi_session.hpp"
 
 #include <mpi.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -8,7 +11,22 @@
 
 namespace aerobreak {
 
+namespace {
+
+// Open MPI starts every rank in a process group of its own, so killing the launcher's group does
+// not reach them, and a rank whose launcher was killed (kill -9 of mpirun, a lost node daemon)
+// would compute on for nobody, holding its case's files. Each rank therefore dies with the process
+// that started it (mpirun, orted, slurmstepd, or the orchestrator for a singleton).
+void die_with_launcher() {
+  const pid_t launcher = ::getppid();
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != launcher) std::_Exit(1);  // it died before the line above
+}
+
+}  // namespace
+
 MpiSession::MpiSession() {
+  die_with_launcher();
   int provided = MPI_THREAD_SINGLE;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   if (provided < MPI_THREAD_FUNNELED) {

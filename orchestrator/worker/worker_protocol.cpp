@@ -144,4 +144,11 @@ Json protocol_error_message(const std::string& message) {
   return Json{{"type", "protocol_error"}, {"message", message}};
 }
 
+std::optional<nlohmann::json> decode_job_line(std::string_view line) {
+  if (line.substr(0, kProtocolPrefix.size()) != kProtocolPrefix) return std::nullopt;
+  auto message = nlohmann::json::parse(line.substr(kProtocolPrefix.size()), nullptr, false);
+  if (message.is_discarded() || !message.is_object()) return std::nullopt;
+  return message;
+}
+
 }  // namespace aerobreak

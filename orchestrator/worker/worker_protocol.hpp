@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -83,5 +84,10 @@ nlohmann::ordered_json result_message(std::int64_t case_id, int attempt, int ran
 nlohmann::ordered_json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,
                                       const std::string& error);
 nlohmann::ordered_json protocol_error_message(const std::string& message);
+
+// Decodes one line from a worker job (without its '\n'), for the orchestrator: the message when
+// the line carries the prefix and a JSON object after it; nullopt for any other line (output
+// that is not protocol, which the orchestrator logs).
+std::optional<nlohmann::json> decode_job_line(std::string_view line);
 
 }  // namespace aerobreak

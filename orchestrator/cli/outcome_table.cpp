@@ -1,0 +1,65 @@
+#include "orchestrator/cli/outcome_table.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace aerobreak {
+namespace {
+
+std::string number(const nlohmann::ordered_json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_integer()) return std::to_string(value.get<long long>());
+  if (!value.is_number()) return value.dump();
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value.get<double>());
+  return text;
+}
+
+std::string probability(const nlohmann::ordered_json& estimate) {
+  if (estimate.at("probability").is_null()) return "-";
+  const auto& interval = estimate.at("ci95");
+  char text[48];
+  std::snprintf(text, sizeof text, "%.2f [%.2f, %.2f]", estimate.at("probability").get<double>(),
+                interval[0].get<double>(), interval[1].get<double>());
+  return text;
+}
+
+}  // namespace
+
+std::string format_outcome_table(const nlohmann::ordered_json& table) {
+  std::vector<std::vector<std::string>> rows;
+  const auto& points = table.at("grid_points");
+  std::vector<std::string> header;
+  if (!points.empty())
+    for (const auto& [axis, value] : points[0].at("grid_point").items()) header.push_back(axis);
+  for (const char* column : {"n", "P(stick) 95% CI", "P(bounce) 95% CI", "P(break-up) 95% CI", "undetermined", "failed"})
+    header.push_back(column);
+  rows.push_back(header);
+  for (const auto& point : points) {
+    std::vector<std::string> row;
+    for (const auto& [axis, value] : point.at("grid_point").items()) row.push_back(number(value));
+    const auto& outcomes = point.at("outcomes");
+    row.push_back(std::to_string(point.at("finished").get<long long>()));
+    row.push_back(probability(outcomes.at("stick")));
+    row.push_back(probability(outcomes.at("bounce")));
+    row.push_back(probability(outcomes.at("break-up")));
+    row.push_back(std::to_string(outcomes.at("undetermined").at("count").get<long long>()));
+    row.push_back(std::to_string(point.at("failed").get<long long>()));
+    rows.push_back(row);
+  }
+  std::vector<std::size_t> widths(header.size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+  std::string text;
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      text += row[c];
+      if (c + 1 < row.size()) text += std::string(widths[c] - row[c].size() + 2, ' ');
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+}  // namespace aerobreak

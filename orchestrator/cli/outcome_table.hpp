@@ -1,0 +1,12 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace aerobreak {
+
+// The outcome table of a study (the JSON of GET /api/studies/ID/outcomes) as aligned text: one row
+// per grid point, its axis values, the finished cases n, and P(stick), P(bounce), P(break-up)
+// with their 95 % Wilson intervals, then the undetermined and failed counts.
+std::string format_outcome_table(const nlohmann::ordered_json& table);
+
+}  // namespace aerobreak

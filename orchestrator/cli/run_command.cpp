@@ -1,0 +1,184 @@
+#include "orchestrator/cli/run_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "orchestrator/cli/orchestrator_options.hpp"
+#include "orchestrator/cli/outcome_table.hpp"
+#include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/service.hpp"
+#include "orchestrator/service/study_submission.hpp"
+
+namespace aerobreak {
+namespace {
+
+struct RunOptions {
+  std::string study_file;
+  OrchestratorOptions orchestrator;
+  int port = 8080;
+  bool keep_serving = false;
+};
+
+std::string duration_text(double seconds) {
+  char text[32];
+  if (seconds < 90.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 5400.0) std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600.0);
+  return text;
+}
+
+std::string progress_line(const StudyProgress& progress) {
+  const std::size_t finished = progress.by_status.at("done") + progress.by_status.at("failed");
+  const std::size_t countable = progress.total - progress.by_status.at("cancelled");
+  constexpr int kWidth = 30;
+  const int filled = countable ? static_cast<int>(kWidth * finished / countable) : kWidth;
+  std::ostringstream line;
+  line << "[" << std::string(filled, '#') << std::string(kWidth - filled, '-') << "] " << finished << "/" << countable
+       << " finished (" << progress.by_status.at("failed") << " failed, " << progress.by_status.at("running")
+       << " running)";
+  if (progress.cases_per_hour > 0.0) line << ", " << std::lround(progress.cases_per_hour) << " cases/h";
+  if (progress.seconds_left && !progress.complete) line << ", ~" << duration_text(*progress.seconds_left) << " left";
+  return line.str();
+}
+
+// Redraws one line on a terminal; elsewhere (CI logs, pipes) prints a line when the count changes,
+// at most every 10 s.
+class ProgressBar {
+ public:
+  ProgressBar() : terminal_(::isatty(STDERR_FILENO)) {}
+  void show(const StudyProgress& progress) {
+    const std::string line = progress_line(progress);
+    const std::size_t finished = progress.by_status.at("done") + progress.by_status.at("failed");
+    const auto now = std::chrono::steady_clock::now();
+    if (terminal_) {
+      std::cerr << "\r" << line << "\033[K" << std::flush;
+    } else if (progress.complete || (finished != last_finished_ && now - last_line_ > std::chrono::seconds(10))) {
+      std::cerr << line << "\n";
+      last_line_ = now;
+      last_finished_ = finished;
+    }
+  }
+  void finish() {
+    if (terminal_) std::cerr << "\n";
+  }
+
+ private:
+  bool terminal_;
+  std::size_t last_finished_ = static_cast<std::size_t>(-1);
+  std::chrono::steady_clock::time_point last_line_{};
+};
+
+std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, int port) {
+  ServiceOptions options;
+  options.port = port;
+  auto service = std::make_unique<Service>(store, &scheduler, options);
+  try {
+    service->start();
+  } catch (const std::runtime_error&) {
+    if (port == 0) throw;
+    std::cerr << "aerobreak run: port " << port << " is taken; serving on a free port instead\n";
+    options.port = 0;
+    service = std::make_unique<Service>(store, &scheduler, options);
+    service->start();
+  }
+  return service;
+}
+
+void print_failures(Store& store, std::int64_t study_id) {
+  const auto failed = store.cases(study_id, CaseStatus::failed, {5, 0});
+  if (failed.total == 0) return;
+  std::cout << "\n" << failed.total << " case(s) failed; the first:\n";
+  for (const auto& record : failed.items)
+    std::cout << "  case " << record.id << " " << record.grid_point.dump() << " replicate " << record.replicate << ": "
+              << record.error.value_or("(no error text)") << "\n";
+}
+
+int run(RunOptions options) {
+  ShutdownSignals signals;
+  Study study;
+  try {
+    study = load_study(options.study_file);
+  } catch (const StudyError& error) {
+    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n" << error.what() << "\n";
+    return 1;
+  }
+  if (options.orchestrator.store.empty())
+    options.orchestrator.store = "runs/" + std::filesystem::path(options.study_file).stem().stem().string() + ".sqlite";
+
+  Store store(options.orchestrator.store);
+  const auto data_directory = options.orchestrator.data_directory();
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
+  const auto receipt = store.submit_study(make_submission(study, expand_study(study)));
+  const auto service = start_service(store, scheduler, options.port);
+  scheduler.start();
+
+  const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
+  std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
+            << " already done), store " << store.file().string() << "\n"
+            << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
+            << "aerobreak run: service: " << study_url << "  (outcomes: " << study_url << "/outcomes)\n";
+
+  const auto started = std::chrono::steady_clock::now();
+  ProgressBar bar;
+  StudyProgress progress;
+  for (;;) {
+    progress = *store.progress(receipt.study_id);
+    bar.show(progress);
+    if (progress.complete) break;
+    if (signals.wait_for(std::chrono::milliseconds(500)) != 0) {
+      bar.finish();
+      std::cerr << "aerobreak run: interrupted; finished cases are kept: run the same command again to go on\n";
+      service->stop();
+      scheduler.stop();
+      return 130;
+    }
+  }
+  bar.finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n"
+            << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
+  print_failures(store, receipt.study_id);
+  std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
+            << duration_text(seconds) << "; store " << store.file().string() << "\n";
+  scheduler.stop();
+  if (options.keep_serving) {
+    std::cerr << "aerobreak run: serving " << service->url() << " until Ctrl-C\n";
+    signals.wait();
+  }
+  service->stop();
+  return progress.by_status.at("failed") > 0 ? 3 : 0;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<RunOptions>();
+  auto* command = app.add_subcommand("run", "Run a study to completion locally and print the outcome table");
+  command->add_option("study", options->study_file, "Study file (schemas/study.schema.json)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  options->orchestrator.add_to(*command);
+  command->get_option("--store")->description("SQLite store file [default: runs/STUDY.sqlite]");
+  command->add_option("--port", options->port, "Loopback port of the service while the study runs (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  command->add_flag("--keep-serving", options->keep_serving, "Keep the service up after the study finished, until Ctrl-C");
+  command->callback([options, &exit_code] {
+    try {
+      exit_code = run(*options);
+    } catch (const std::exception& error) {
+      std::cerr << "aerobreak run: " << error.what() << "\n";
+      exit_code = 1;
+    }
+  });
+}
+
+}  // namespace aerobreak

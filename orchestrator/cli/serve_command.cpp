@@ -1,0 +1,100 @@
+#include "orchestrator/cli/serve_command.hpp"
+
+#include <signal.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "orchestrator/cli/orchestrator_options.hpp"
+#include "orchestrator/service/service.hpp"
+
+namespace aerobreak {
+namespace {
+
+OrchestratorOptions default_orchestrator_options() {
+  OrchestratorOptions options;
+  options.store = "runs/aerobreak.sqlite";
+  return options;
+}
+
+struct ServeOptions {
+  OrchestratorOptions orchestrator = default_orchestrator_options();
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::string token_file;
+  std::string port_file;
+  std::size_t max_cases = 10000;
+  std::size_t max_primaries = 100000;
+};
+
+std::string read_token(const std::string& path) {
+  std::ifstream in(path);
+  std::string token;
+  if (!in || !std::getline(in, token)) throw std::runtime_error("cannot read a token from " + path);
+  while (!token.empty() && std::isspace(static_cast<unsigned char>(token.back()))) token.pop_back();
+  if (token.size() < 16) throw std::runtime_error("the token in " + path + " is shorter than 16 characters");
+  return token;
+}
+
+// Written whole and renamed, so that a script waiting for the file never reads half a number.
+void write_port_file(const std::string& path, int port) {
+  const std::string partial = path + ".partial";
+  std::ofstream(partial) << port << "\n";
+  std::filesystem::rename(partial, path);
+}
+
+int serve(const ServeOptions& options) {
+  ShutdownSignals signals;
+  Store store(options.orchestrator.store);
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log({})));
+  ServiceOptions service_options;
+  service_options.host = options.host;
+  service_options.port = options.port;
+  if (!options.token_file.empty()) service_options.token = read_token(options.token_file);
+  service_options.study_limits.max_cases = options.max_cases;
+  service_options.study_limits.max_primaries = options.max_primaries;
+  Service service(store, &scheduler, service_options);
+  service.start();
+  scheduler.start();
+  std::cerr << "aerobreak serve: " << service.url() << "  (store " << store.file().string() << ", schema version "
+            << store.schema_version() << "; workers: " << scheduler.status().launcher_command << ")" << std::endl;
+  if (!options.port_file.empty()) write_port_file(options.port_file, service.port());
+  const int received = signals.wait();
+  std::cerr << "aerobreak serve: " << (received == SIGINT ? "SIGINT" : "SIGTERM")
+            << ": stopping; running cases go back to the queue" << std::endl;
+  service.stop();
+  scheduler.stop();
+  return 0;
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<ServeOptions>();
+  auto* command = app.add_subcommand("serve", "Start the orchestrator service: REST API, store and worker jobs");
+  options->orchestrator.add_to(*command);
+  command->add_option("--host", options->host, "Address to listen on; beyond loopback a token is required")
+      ->capture_default_str();
+  command->add_option("--port", options->port, "TCP port (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  command->add_option("--token-file", options->token_file,
+                      "File whose first line is the bearer token that POST requests must carry");
+  command->add_option("--port-file", options->port_file, "Write the port listened on to this file once serving");
+  command->add_option("--max-cases", options->max_cases, "Largest study (cases) a client may submit")
+      ->capture_default_str();
+  command->add_option("--max-primaries", options->max_primaries, "Largest cluster a client may ask for")
+      ->capture_default_str();
+  command->callback([options, &exit_code] {
+    try {
+      exit_code = serve(*options);
+    } catch (const std::exception& error) {
+      std::cerr << "aerobreak serve: " << error.what() << "\n";
+      exit_code = 1;
+    }
+  });
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,187 @@
+#include "orchestrator/cli/study_client_command.hpp"
+
+#include <httplib.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "orchestrator/cli/outcome_table.hpp"
+
+namespace aerobreak {
+namespace {
+
+struct ClientOptions {
+  std::string url;
+  std::string token_file;
+  std::string study_file;
+  long long study_id = 0;
+  std::string outcome;
+  std::size_t limit = 100;
+  std::size_t offset = 0;
+  bool json = false;
+};
+
+// The service answered with an error status; its JSON body names why.
+struct ServiceRefusal {
+  int status;
+  nlohmann::ordered_json body;
+};
+
+struct ServiceUnreachable {
+  std::string message;
+};
+
+std::string environment_or(const char* name, const std::string& fallback) {
+  const char* value = std::getenv(name);
+  return value && *value ? value : fallback;
+}
+
+class ApiClient {
+ public:
+  explicit ApiClient(const ClientOptions& options)
+      : url_(options.url.empty() ? environment_or("AEROBREAK_URL", "http://127.0.0.1:8080") : options.url),
+        client_(url_) {
+    client_.set_connection_timeout(5, 0);
+    client_.set_read_timeout(60, 0);
+    std::string token = environment_or("AEROBREAK_TOKEN", "");
+    if (!options.token_file.empty()) {
+      std::ifstream in(options.token_file);
+      if (!in || !std::getline(in, token)) throw std::runtime_error("cannot read a token from " + options.token_file);
+    }
+    if (!token.empty()) headers_.emplace("Authorization", "Bearer " + token);
+  }
+
+  nlohmann::ordered_json get(const std::string& path) { return answer(client_.Get(path.c_str(), headers_), path); }
+  nlohmann::ordered_json post(const std::string& path, const std::string& body) {
+    return answer(client_.Post(path.c_str(), headers_, body, "application/json"), path);
+  }
+
+ private:
+  nlohmann::ordered_json answer(const httplib::Result& result, const std::string& path) {
+    if (!result) throw ServiceUnreachable{"cannot reach " + url_ + path + ": " + httplib::to_string(result.error())};
+    nlohmann::ordered_json body = nlohmann::ordered_json::parse(result->body, nullptr, false);
+    if (result->status >= 400) throw ServiceRefusal{result->status, body};
+    if (body.is_discarded()) throw ServiceUnreachable{url_ + path + " did not answer with JSON"};
+    return body;
+  }
+
+  std::string url_;
+  httplib::Client client_;
+  httplib::Headers headers_;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string study_path(long long id, const std::string& tail = {}) { return "/api/studies/" + std::to_string(id) + tail; }
+
+void print_progress(const nlohmann::ordered_json& progress) {
+  const auto& counts = progress.at("counts");
+  std::cout << "study " << progress.at("study") << ": " << progress.at("total") << " cases";
+  for (const auto& [status, count] : counts.items()) std::cout << ", " << count << " " << status;
+  if (progress.at("cases_per_hour").get<double>() > 0.0)
+    std::cout << "; " << static_cast<long long>(progress.at("cases_per_hour").get<double>()) << " cases/h";
+  if (!progress.at("seconds_left").is_null() && !progress.at("complete").get<bool>())
+    std::cout << ", about " << static_cast<long long>(progress.at("seconds_left").get<double>()) << " s left";
+  std::cout << (progress.at("complete").get<bool>() ? " (complete)" : "") << "\n";
+}
+
+int run_client(const std::string& action, const ClientOptions& options) {
+  ApiClient api(options);
+  if (action == "submit") {
+    const auto receipt = api.post("/api/studies", read_file(options.study_file));
+    if (options.json) {
+      std::cout << receipt.dump(2) << "\n";
+    } else {
+      std::cout << "study " << receipt.at("id") << (receipt.at("existing_study").get<bool>() ? " (submitted before)" : "")
+                << ": " << receipt.at("cases") << " cases, " << receipt.at("new_cases") << " new, "
+                << receipt.at("already_done") << " already done\n";
+    }
+  } else if (action == "list") {
+    const auto page = api.get("/api/studies?limit=" + std::to_string(options.limit) +
+                              "&offset=" + std::to_string(options.offset));
+    if (options.json) std::cout << page.dump(2) << "\n";
+    else
+      for (const auto& study : page.at("items"))
+        std::cout << study.at("id") << "  " << study.at("status").get<std::string>() << "  " << study.at("cases")
+                  << " cases  " << study.at("name").get<std::string>() << "\n";
+  } else if (action == "status") {
+    const auto progress = api.get(study_path(options.study_id, "/progress"));
+    if (options.json) std::cout << progress.dump(2) << "\n";
+    else print_progress(progress);
+  } else if (action == "results") {
+    if (options.json) {
+      std::string query = "?limit=" + std::to_string(options.limit) + "&offset=" + std::to_string(options.offset);
+      if (!options.outcome.empty()) query += "&outcome=" + options.outcome;
+      std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
+    } else {
+      std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")));
+    }
+  } else if (action == "cancel") {
+    print_progress(api.post(study_path(options.study_id, "/cancel"), ""));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_study_client_subcommands(CLI::App& study, int& exit_code) {
+  auto options = std::make_shared<ClientOptions>();
+  const auto add = [&](const std::string& name, const std::string& summary) {
+    auto* command = study.add_subcommand(name, summary);
+    command->add_option("--url", options->url, "Service URL [default: AEROBREAK_URL or http://127.0.0.1:8080]");
+    command->add_option("--token-file", options->token_file, "File whose first line is the bearer token [AEROBREAK_TOKEN]");
+    command->add_flag("--json", options->json, "Print the service's JSON answer");
+    command->callback([name, options, &exit_code] {
+      try {
+        exit_code = run_client(name, *options);
+      } catch (const ServiceRefusal& refusal) {
+        std::cerr << "aerobreak study " << name << ": the service answered " << refusal.status << ": "
+                  << (refusal.body.is_object() ? refusal.body.value("error", std::string("(no message)"))
+                                               : std::string("(no JSON body)"))
+                  << "\n";
+        if (refusal.body.is_object() && refusal.body.contains("violations"))
+          for (const auto& violation : refusal.body.at("violations"))
+            std::cerr << "  " << (violation.value("pointer", std::string()).empty() ? "(document)"
+                                                                                     : violation.value("pointer", std::string()))
+                      << ": " << violation.value("message", std::string()) << "\n";
+        exit_code = 2;
+      } catch (const ServiceUnreachable& unreachable) {
+        std::cerr << "aerobreak study " << name << ": " << unreachable.message << "\n";
+        exit_code = 3;
+      } catch (const std::exception& error) {
+        std::cerr << "aerobreak study " << name << ": " << error.what() << "\n";
+        exit_code = 1;
+      }
+    });
+    return command;
+  };
+  add("submit", "Submit a study to the service")
+      ->add_option("study", options->study_file, "Study file (schemas/study.schema.json)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  auto* list = add("list", "List the service's studies, newest first");
+  list->add_option("--limit", options->limit, "Studies per page")->capture_default_str();
+  list->add_option("--offset", options->offset, "Studies to skip")->capture_default_str();
+  add("status", "A study's progress: counts by status, rate, time left")
+      ->add_option("id", options->study_id, "Study id")
+      ->required();
+  auto* results = add("results", "A study's outcome table (or, with --json, its results page)");
+  results->add_option("id", options->study_id, "Study id")->required();
+  results->add_option("--outcome", options->outcome, "With --json: only this outcome")
+      ->check(CLI::IsMember({"stick", "bounce", "break-up", "undetermined"}));
+  results->add_option("--limit", options->limit, "With --json: results per page")->capture_default_str();
+  results->add_option("--offset", options->offset, "With --json: results to skip")->capture_default_str();
+  add("cancel", "Cancel a study: its queued cases will not run")->add_option("id", options->study_id, "Study id")->required();
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,112 @@
+#pragma once
+#include <sys/types.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "orchestrator/scheduler/launcher.hpp"
+#include "orchestrator/scheduler/worker_job.hpp"
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak {
+
+struct SchedulerOptions {
+  LauncherConfig launcher;
+  // Bulk files: DATA/cases/HASH.h5 per finished case, DATA/logs/job-ID.log per worker job.
+  std::filesystem::path data_directory;
+  // A job with nothing to do for this long is stopped, so that an idle service holds no cores.
+  std::chrono::milliseconds idle_shutdown{std::chrono::seconds(10)};
+  // The workers stop a case at its wall-time limit themselves; a case still running at
+  // limit x hard_limit_factor + hard_limit_margin is stuck where it cannot check the clock, and
+  // its job is killed.
+  double hard_limit_factor = 1.5;
+  std::chrono::milliseconds hard_limit_margin{std::chrono::seconds(30)};
+  // Consecutive jobs that end before saying "ready" make the launcher count as failing; launches
+  // are then retried with a growing delay, up to max_launch_delay.
+  int launch_failures_reported = 3;
+  std::chrono::milliseconds max_launch_delay{std::chrono::seconds(60)};
+  // Where the scheduler's one-line notes go (job started, case failed, ...).
+  std::function<void(const std::string&)> log;
+};
+
+struct SchedulerStatus {
+  std::string launcher_command;
+  bool job_running = false;
+  std::int64_t job_id = 0;
+  pid_t job_pid = 0;
+  int ranks = 0;
+  bool job_ready = false;
+  std::size_t in_flight = 0;
+  std::size_t jobs_started = 0;
+  std::size_t results_committed = 0;
+  int consecutive_launch_failures = 0;
+  std::string last_error;
+};
+
+// Hands the store's queued cases to worker jobs one case per free rank (dynamic: a rank asks for
+// nothing, it gets the next case the moment it reports its last one), commits every result the
+// moment it arrives, and turns every way a case or a job can end into a store transition
+// (store.hpp). All of it on one thread, the store's one writer besides submissions and cancels.
+class Scheduler {
+ public:
+  Scheduler(Store& store, SchedulerOptions options);
+  ~Scheduler();
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
+
+  // Recovers what a previous orchestrator left running (store.requeue_interrupted) and starts the
+  // scheduling thread.
+  void start();
+  // Stops the thread; a running job is killed and its cases requeued without a failure counted.
+  void stop();
+  // New work may be there (a study was submitted): look now instead of at the next poll.
+  void wake();
+  SchedulerStatus status() const;
+
+ private:
+  struct InFlight {
+    int attempt = 0;
+    double wall_time_limit = 0.0;
+    std::chrono::steady_clock::time_point sent;
+  };
+
+  void run();
+  void launch_job();
+  void feed_job();
+  void handle(const nlohmann::json& message);
+  void check_hard_limits();
+  void stop_idle_job();
+  void reap_job();
+  void note(const std::string& line);
+
+  Store& store_;
+  SchedulerOptions options_;
+  std::thread thread_;
+  std::atomic<bool> stopping_{false};
+  std::mutex wake_mutex_;
+  std::condition_variable wake_;
+  bool woken_ = false;
+
+  // Scheduling thread only.
+  std::unique_ptr<WorkerJob> job_;
+  std::map<std::int64_t, InFlight> in_flight_;
+  std::optional<std::int64_t> overdue_case_;
+  bool job_told_to_stop_ = false;
+  std::chrono::steady_clock::time_point job_idle_since_;
+  std::chrono::steady_clock::time_point next_launch_;
+
+  mutable std::mutex status_mutex_;
+  SchedulerStatus status_;
+};
+
+}  // namespace aerobreak

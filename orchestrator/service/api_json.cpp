@@ -1,0 +1,147 @@
+#include "orchestrator/service/api_json.hpp"
+
+#include "orchestrator/service/outcome_statistics.hpp"
+
+namespace aerobreak {
+namespace {
+
+template <typename T>
+nlohmann::ordered_json optional_json(const std::optional<T>& value) {
+  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document) {
+  nlohmann::ordered_json json{{"id", study.id},
+                              {"name", study.name},
+                              {"description", study.description},
+                              {"status", study.status},
+                              {"hash", study.hash},
+                              {"cases", study.case_count},
+                              {"max_attempts", study.max_attempts},
+                              {"case_wall_time", study.case_wall_time},
+                              {"created_at", study.created_at},
+                              {"cancelled_at", optional_json(study.cancelled_at)}};
+  if (with_document) json["document"] = study.document;
+  return json;
+}
+
+nlohmann::ordered_json to_json(const StudyProgress& progress) {
+  nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+  for (const auto& [status, count] : progress.by_status) counts[status] = count;
+  return {{"study", progress.study_id},
+          {"total", progress.total},
+          {"counts", counts},
+          {"complete", progress.complete},
+          {"cases_per_hour", progress.cases_per_hour},
+          {"seconds_left", optional_json(progress.seconds_left)},
+          {"first_started_at", optional_json(progress.first_started_at)},
+          {"last_finished_at", optional_json(progress.last_finished_at)}};
+}
+
+nlohmann::ordered_json to_json(const CaseRecord& record) {
+  return {{"id", record.id},
+          {"hash", record.hash},
+          {"grid_point", record.grid_point},
+          {"replicate", record.replicate},
+          {"status", record.status},
+          {"outcome", optional_json(record.outcome)},
+          {"attempts", record.attempts},
+          {"failures", record.failures},
+          {"max_attempts", record.max_attempts},
+          {"wall_time_limit", record.wall_time_limit},
+          {"job", optional_json(record.job_id)},
+          {"worker", optional_json(record.worker)},
+          {"queued_at", record.queued_at},
+          {"started_at", optional_json(record.started_at)},
+          {"finished_at", optional_json(record.finished_at)},
+          {"error", optional_json(record.error)}};
+}
+
+nlohmann::ordered_json to_json(const ResultRecord& record) {
+  return {{"case", record.case_id},
+          {"hash", record.hash},
+          {"grid_point", record.grid_point},
+          {"replicate", record.replicate},
+          {"attempt", record.attempt},
+          {"outcome", record.outcome},
+          {"restitution", optional_json(record.restitution)},
+          {"largest_fragment_share", optional_json(record.largest_fragment_share)},
+          {"fragment_count", optional_json(record.fragment_count)},
+          {"mass_fraction_on_wall", optional_json(record.mass_fraction_on_wall)},
+          {"impact_energy", optional_json(record.impact_energy)},
+          {"wall_clock_seconds", optional_json(record.wall_clock_seconds)},
+          {"data_file", optional_json(record.data_file)},
+          {"committed_at", record.committed_at}};
+}
+
+nlohmann::ordered_json to_json(const CaseDetail& detail) {
+  nlohmann::ordered_json json = to_json(detail.record);
+  json["document"] = detail.document;
+  auto& attempts = json["attempt_history"] = nlohmann::ordered_json::array();
+  for (const auto& attempt : detail.attempts) {
+    attempts.push_back({{"attempt", attempt.attempt},
+                        {"job", optional_json(attempt.job_id)},
+                        {"worker", optional_json(attempt.worker)},
+                        {"started_at", attempt.started_at},
+                        {"ended_at", optional_json(attempt.ended_at)},
+                        {"outcome", optional_json(attempt.outcome)},
+                        {"error", optional_json(attempt.error)}});
+  }
+  auto& fragments = json["fragments"] = nlohmann::ordered_json::array();
+  for (const auto& fragment : detail.fragments) {
+    fragments.push_back({{"rank", fragment.rank},
+                         {"primaries", fragment.primaries},
+                         {"mass", fragment.mass},
+                         {"on_wall", fragment.on_wall},
+                         {"normal_velocity", optional_json(fragment.normal_velocity)},
+                         {"radius_of_gyration", optional_json(fragment.radius_of_gyration)}});
+  }
+  json["data_file"] = optional_json(detail.data_file);
+  json["result"] = detail.result ? *detail.result : nlohmann::ordered_json(nullptr);
+  return json;
+}
+
+nlohmann::ordered_json to_json(const JobRecord& job) {
+  return {{"id", job.id},
+          {"command", job.command},
+          {"ranks", job.ranks},
+          {"pid", optional_json(job.pid)},
+          {"started_at", job.started_at},
+          {"ended_at", optional_json(job.ended_at)},
+          {"exit_status", optional_json(job.exit_status)},
+          {"note", optional_json(job.note)}};
+}
+
+nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
+  return {{"id", receipt.study_id},
+          {"existing_study", receipt.existing_study},
+          {"cases", receipt.cases},
+          {"new_cases", receipt.new_cases},
+          {"already_done", receipt.already_done},
+          {"requeued", receipt.requeued}};
+}
+
+nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const auto& cell : cells) {
+    const std::size_t finished = cell.finished();
+    nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
+    for (const auto& [outcome, count] : cell.outcomes) {
+      const auto estimate = wilson_interval(count, finished);
+      outcomes[outcome] = {{"count", count},
+                           {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
+                           {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
+                                             : nlohmann::ordered_json(nullptr)}};
+    }
+    rows.push_back({{"grid_point", cell.grid_point},
+                    {"cases", cell.cases},
+                    {"finished", finished},
+                    {"failed", cell.failed},
+                    {"outcomes", outcomes}});
+  }
+  return {{"confidence", 0.95}, {"interval", "wilson"}, {"grid_points", rows}};
+}
+
+}  // namespace aerobreak

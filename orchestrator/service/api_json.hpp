@@ -1,0 +1,28 @@
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/store/store_types.hpp"
+
+namespace aerobreak {
+
+// The REST API's JSON forms of the store's records (schemas/openapi.json names each one).
+// Times are Unix seconds; absent values are null.
+nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document);
+nlohmann::ordered_json to_json(const StudyProgress& progress);
+nlohmann::ordered_json to_json(const CaseRecord& record);
+nlohmann::ordered_json to_json(const ResultRecord& record);
+nlohmann::ordered_json to_json(const CaseDetail& detail);
+nlohmann::ordered_json to_json(const JobRecord& job);
+nlohmann::ordered_json to_json(const SubmissionReceipt& receipt);
+// Per grid point: counts of each outcome and its probability among the finished cases with the
+// 95 % Wilson interval (outcome_statistics.hpp).
+nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells);
+
+template <typename Record>
+nlohmann::ordered_json page_json(const Page<Record>& page, const PageRequest& request) {
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const auto& item : page.items) items.push_back(to_json(item));
+  return {{"total", page.total}, {"limit", request.limit}, {"offset", request.offset}, {"items", std::move(items)}};
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,254 @@
+#include "orchestrator/service/http_api.hpp"
+
+#include <httplib.h>
+
+#include <charconv>
+#include <optional>
+#include <string>
+
+#include "engine/core/version.hpp"
+#include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/openapi_text.hpp"
+#include "orchestrator/service/study_submission.hpp"
+
+namespace aerobreak {
+namespace {
+
+// A request that cannot be served as asked: its status and the JSON body that says why.
+struct RequestError {
+  int status;
+  std::string message;
+  nlohmann::ordered_json violations = nlohmann::ordered_json::array();
+};
+
+void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body) {
+  response.status = status;
+  response.set_content(body.dump(), "application/json");
+}
+
+void send_error(httplib::Response& response, const RequestError& error) {
+  send_json(response, error.status, {{"error", error.message}, {"violations", error.violations}});
+}
+
+nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& violations) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& violation : violations) list.push_back({{"pointer", violation.pointer}, {"message", violation.message}});
+  return list;
+}
+
+// Compares without an early exit, so that response times do not reveal how much of a guess was right.
+bool same_token(const std::string& given, const std::string& expected) {
+  unsigned char difference = given.size() == expected.size() ? 0 : 1;
+  for (std::size_t i = 0; i < given.size(); ++i)
+    difference |= static_cast<unsigned char>(given[i] ^ expected[i % std::max<std::size_t>(expected.size(), 1)]);
+  return difference == 0;
+}
+
+std::size_t unsigned_parameter(const httplib::Request& request, const std::string& name, std::size_t fallback,
+                               std::size_t maximum) {
+  if (!request.has_param(name)) return fallback;
+  const std::string text = request.get_param_value(name);
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value > maximum)
+    throw RequestError{400, "query parameter '" + name + "' must be an integer from 0 to " + std::to_string(maximum) +
+                                " (got '" + text + "')"};
+  return value;
+}
+
+PageRequest page_request(const httplib::Request& request, const ServiceOptions& options) {
+  PageRequest page;
+  page.limit = unsigned_parameter(request, "limit", 100, options.max_page_size);
+  page.offset = unsigned_parameter(request, "offset", 0, std::size_t{1} << 40);
+  return page;
+}
+
+std::int64_t path_id(const httplib::Request& request) {
+  std::int64_t id = 0;
+  const std::string text = request.matches[1];
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (error != std::errc() || end != text.data() + text.size()) throw RequestError{404, "no such id: " + text};
+  return id;
+}
+
+StudyRecord existing_study(Store& store, std::int64_t id) {
+  auto study = store.study(id);
+  if (!study) throw RequestError{404, "no study " + std::to_string(id)};
+  return *study;
+}
+
+// Runs a handler, turning RequestError into its JSON answer.
+template <typename Handler>
+httplib::Server::Handler guarded(Handler handler) {
+  return [handler](const httplib::Request& request, httplib::Response& response) {
+    try {
+      handler(request, response);
+    } catch (const RequestError& error) {
+      send_error(response, error);
+    }
+  };
+}
+
+void submit_study(const httplib::Request& request, httplib::Response& response, Store& store, Scheduler* scheduler,
+                  const ServiceOptions& options) {
+  nlohmann::ordered_json document;
+  try {
+    document = nlohmann::ordered_json::parse(request.body);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw RequestError{400, "the body is not JSON", nlohmann::ordered_json::array({{{"pointer", ""},
+                                                                                  {"message", error.what()}}})};
+  }
+  try {
+    const Study study = parse_study(std::move(document), options.study_limits);
+    const auto receipt = store.submit_study(make_submission(study, expand_study(study)));
+    if (scheduler) scheduler->wake();
+    response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
+    send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));
+  } catch (const StudyError& error) {
+    throw RequestError{422, "the study is not valid", violations_json(error.violations())};
+  }
+}
+
+nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
+  nlohmann::ordered_json json{{"status", "ok"},
+                              {"version", std::string(version())},
+                              {"commit", std::string(git_commit())},
+                              {"store", {{"file", store.file().string()}, {"schema_version", store.schema_version()}}},
+                              {"queued_cases", store.claimable_cases()}};
+  if (!scheduler) {
+    json["scheduler"] = nullptr;
+    return json;
+  }
+  const auto status = scheduler->status();
+  json["scheduler"] = {{"launcher", status.launcher_command},
+                       {"job",
+                        status.job_running ? nlohmann::ordered_json{{"id", status.job_id},
+                                                                     {"pid", status.job_pid},
+                                                                     {"ready", status.job_ready},
+                                                                     {"ranks", status.ranks},
+                                                                     {"in_flight", status.in_flight}}
+                                           : nlohmann::ordered_json(nullptr)},
+                       {"jobs_started", status.jobs_started},
+                       {"results_committed", status.results_committed},
+                       {"consecutive_launch_failures", status.consecutive_launch_failures},
+                       {"last_error", status.last_error.empty() ? nlohmann::ordered_json(nullptr)
+                                                                : nlohmann::ordered_json(status.last_error)}};
+  if (status.consecutive_launch_failures > 0) json["status"] = "degraded";
+  return json;
+}
+
+}  // namespace
+
+void register_http_api(httplib::Server& server, Store& store, Scheduler* scheduler, const ServiceOptions& options) {
+  const bool token_required = options.token.has_value();
+  server.set_pre_routing_handler([&options, token_required](const httplib::Request& request, httplib::Response& response) {
+    if (!token_required || request.method == "GET" || request.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
+    const std::string header = request.get_header_value("Authorization");
+    const std::string prefix = "Bearer ";
+    if (header.rfind(prefix, 0) == 0 && same_token(header.substr(prefix.size()), *options.token))
+      return httplib::Server::HandlerResponse::Unhandled;
+    response.set_header("WWW-Authenticate", "Bearer");
+    send_error(response, {401, "this endpoint needs 'Authorization: Bearer TOKEN'"});
+    return httplib::Server::HandlerResponse::Handled;
+  });
+  server.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
+    if (!response.body.empty()) return;
+    if (response.status == 413)
+      send_error(response, {413, "the request body is larger than the service accepts"});
+    else if (response.status == 404)
+      send_error(response, {404, "no endpoint " + request.method + " " + request.path + " (see /api/openapi.json)"});
+    else
+      send_error(response, {response.status, "the request could not be served"});
+  });
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr error) {
+    std::string message = "internal error";
+    try {
+      std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+      message += std::string(": ") + e.what();
+    } catch (...) {
+    }
+    send_error(response, {500, message});
+  });
+
+  server.Get("/api/health", guarded([&store, scheduler](const httplib::Request&, httplib::Response& response) {
+    send_json(response, 200, health(store, scheduler));
+  }));
+  server.Get("/api/openapi.json", [](const httplib::Request&, httplib::Response& response) {
+    response.set_content(std::string(openapi_text()), "application/json");
+  });
+  server.Get("/api/studies", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+    const auto page = page_request(request, options);
+    const auto studies = store.studies(page);
+    nlohmann::ordered_json items = nlohmann::ordered_json::array();
+    for (const auto& study : studies.items) items.push_back(to_json(study, false));
+    send_json(response, 200,
+              {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  }));
+  server.Post("/api/studies",
+              guarded([&store, scheduler, &options](const httplib::Request& request, httplib::Response& response) {
+                submit_study(request, response, store, scheduler, options);
+              }));
+  server.Get(R"(/api/studies/(\d+))", guarded([&store](const httplib::Request& request, httplib::Response& response) {
+    const auto study = existing_study(store, path_id(request));
+    auto json = to_json(study, true);
+    json["progress"] = to_json(*store.progress(study.id));
+    send_json(response, 200, json);
+  }));
+  server.Get(R"(/api/studies/(\d+)/progress)",
+             guarded([&store](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               send_json(response, 200, to_json(*store.progress(study.id)));
+             }));
+  server.Get(R"(/api/studies/(\d+)/cases)",
+             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               std::optional<CaseStatus> status;
+               if (request.has_param("status")) {
+                 status = parse_case_status(request.get_param_value("status"));
+                 if (!status)
+                   throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
+               }
+               const auto page = page_request(request, options);
+               send_json(response, 200, page_json(store.cases(study.id, status, page), page));
+             }));
+  server.Get(R"(/api/studies/(\d+)/results)",
+             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               std::optional<std::string> outcome;
+               if (request.has_param("outcome")) {
+                 outcome = request.get_param_value("outcome");
+                 if (*outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
+                   throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
+               }
+               const auto page = page_request(request, options);
+               send_json(response, 200, page_json(store.results(study.id, outcome, page), page));
+             }));
+  server.Get(R"(/api/studies/(\d+)/outcomes)",
+             guarded([&store](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               auto json = outcome_table_json(store.outcomes(study.id));
+               json["study"] = study.id;
+               send_json(response, 200, json);
+             }));
+  server.Post(R"(/api/studies/(\d+)/cancel)",
+              guarded([&store](const httplib::Request& request, httplib::Response& response) {
+                const auto study = existing_study(store, path_id(request));
+                if (!store.cancel_study(study.id))
+                  throw RequestError{409, "study " + std::to_string(study.id) + " is already cancelled"};
+                send_json(response, 200, to_json(*store.progress(study.id)));
+              }));
+  server.Get(R"(/api/cases/(\d+))", guarded([&store](const httplib::Request& request, httplib::Response& response) {
+    const auto detail = store.case_detail(path_id(request));
+    if (!detail) throw RequestError{404, "no case " + std::string(request.matches[1])};
+    send_json(response, 200, to_json(*detail));
+  }));
+  server.Get("/api/jobs", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+    const auto limit = unsigned_parameter(request, "limit", 20, options.max_page_size);
+    nlohmann::ordered_json items = nlohmann::ordered_json::array();
+    for (const auto& job : store.jobs(limit)) items.push_back(to_json(job));
+    send_json(response, 200, {{"items", items}});
+  }));
+}
+
+}  // namespace aerobreak

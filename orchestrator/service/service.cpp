@@ -1,0 +1,54 @@
+#include "orchestrator/service/service.hpp"
+
+#include <httplib.h>
+#include <arpa/inet.h>
+
+#include <stdexcept>
+
+#include "orchestrator/service/http_api.hpp"
+
+namespace aerobreak {
+
+bool is_loopback_host(const std::string& host) {
+  if (host == "localhost" || host == "::1") return true;
+  in_addr address{};
+  return ::inet_pton(AF_INET, host.c_str(), &address) == 1 && (ntohl(address.s_addr) >> 24) == 127;
+}
+
+Service::Service(Store& store, Scheduler* scheduler, ServiceOptions options)
+    : store_(store), scheduler_(scheduler), options_(std::move(options)) {}
+
+Service::~Service() { stop(); }
+
+void Service::start() {
+  if (!is_loopback_host(options_.host) && !options_.token)
+    throw std::runtime_error("refusing to listen on " + options_.host +
+                             " without a bearer token: give --token-file (or listen on 127.0.0.1)");
+  server_ = std::make_unique<httplib::Server>();
+  const int threads = options_.threads;
+  server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
+  server_->set_payload_max_length(options_.max_body_bytes);
+  // Slow or stalled clients must not hold a worker thread for long.
+  server_->set_read_timeout(5, 0);
+  server_->set_write_timeout(5, 0);
+  server_->set_keep_alive_timeout(5);
+  register_http_api(*server_, store_, scheduler_, options_);
+  port_ = options_.port == 0 ? server_->bind_to_any_port(options_.host)
+                             : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);
+  if (port_ <= 0)
+    throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
+                             " (address in use? another port: --port)");
+  thread_ = std::thread([this] { server_->listen_after_bind(); });
+}
+
+void Service::stop() {
+  if (server_) server_->stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+std::string Service::url() const {
+  const std::string host = options_.host.find(':') != std::string::npos ? "[" + options_.host + "]" : options_.host;
+  return "http://" + host + ":" + std::to_string(port_);
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "orchestrator/scheduler/scheduler.hpp"
+#include "orchestrator/store/store.hpp"
+#include "orchestrator/study/study.hpp"
+
+namespace httplib {
+class Server;
+}
+
+namespace aerobreak {
+
+struct ServiceOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;  // 0: any free port (see Service::port())
+  // Required for POST endpoints when `host` is not a loopback address; optional (but then
+  // enforced) on loopback.
+  std::optional<std::string> token;
+  // What one request may ask for: body size, and the study limits (cases, primaries; no cluster
+  // files named by a client).
+  std::size_t max_body_bytes = 1 << 20;
+  StudyLimits study_limits{10000, 100000, false};
+  std::size_t max_page_size = 1000;
+  int threads = 8;
+};
+
+// True for 127.0.0.0/8, ::1 and "localhost".
+bool is_loopback_host(const std::string& host);
+
+// The REST service (schemas/openapi.json) over a store, and a scheduler that it wakes when a study
+// arrives (null for a read-only service). The HTTP server runs on threads of its own.
+class Service {
+ public:
+  Service(Store& store, Scheduler* scheduler, ServiceOptions options);
+  ~Service();
+  Service(const Service&) = delete;
+  Service& operator=(const Service&) = delete;
+
+  // Binds the socket (throws std::runtime_error naming the address when it cannot, or when a
+  // non-loopback address has no token) and starts serving.
+  void start();
+  void stop();
+  int port() const { return port_; }
+  std::string url() const;
+
+ private:
+  Store& store_;
+  Scheduler* scheduler_;
+  ServiceOptions options_;
+  std::unique_ptr<httplib::Server> server_;
+  std::thread thread_;
+  int port_ = 0;
+};
+
+}  // namespace aerobreak
