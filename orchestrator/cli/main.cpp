@@ -8,6 +8,7 @@
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
 #include "orchestrator/cli/cluster_command.hpp"
+#include "orchestrator/cli/study_expand_command.hpp"
 
 namespace {
 
@@ -45,7 +46,10 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   add_planned(app, "run", "Run a study to completion locally and print the outcome table", exit_code);
   add_planned(app, "serve", "Start the orchestrator service (REST API and web page)", exit_code);
-  add_planned(app, "study", "Submit, inspect or cancel studies on a running service", exit_code);
+  auto* study = app.add_subcommand(
+      "study", "Submit, inspect or cancel studies on a running service; expand a study offline");
+  study->require_subcommand(1);
+  aerobreak::add_study_expand_subcommand(*study);
   aerobreak::add_impact_command(app, exit_code);
   aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);
