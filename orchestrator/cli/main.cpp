@@ -11,6 +11,7 @@
 #include "orchestrator/cli/run_command.hpp"
 #include "orchestrator/cli/serve_command.hpp"
 #include "orchestrator/cli/study_client_command.hpp"
+#include "orchestrator/cli/study_expand_command.hpp"
 #include "orchestrator/cli/worker_command.hpp"
 
 namespace {
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   auto* study = app.add_subcommand("study", "Submit, inspect or cancel studies on a running service; expand a study offline");
   study->require_subcommand(1);
   aerobreak::add_study_client_subcommands(*study, exit_code);
+  aerobreak::add_study_expand_subcommand(*study);
   aerobreak::add_impact_command(app, exit_code);
   aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -46,6 +48,15 @@ bool is_integral(double x) { return std::isfinite(x) && std::floor(x) == x && st
 
 Json as_number(double x) { return is_integral(x) ? Json(static_cast<std::int64_t>(x)) : Json(x); }
 
+// x to 15 significant digits: 0.030000000000000013 from a log range between 0.003 and 0.3 reads
+// 0.03, the value a user would type. A double holds 15 digits exactly, and the change is below
+// 1e-15 relative.
+double fifteen_digits(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", x);
+  return std::strtod(text, nullptr);
+}
+
 // count values from `from` to `to`, evenly spaced in x or, for a log range, in log10 x; the end
 // points are set exactly, so that a range meets the values a user types in elsewhere.
 std::vector<Json> range_values(const Json& range, bool logarithmic) {
@@ -60,11 +71,10 @@ std::vector<Json> range_values(const Json& range, bool logarithmic) {
     } else if (k + 1 == count) {
       x = to;
     } else if (logarithmic) {
-      // Powers of ten from log10: a decade range then gives 0.001, not 0.0010000000000000002.
       const double a = std::log10(from), b = std::log10(to);
-      x = std::pow(10.0, a + (b - a) * static_cast<double>(k) / static_cast<double>(count - 1));
+      x = fifteen_digits(std::pow(10.0, a + (b - a) * static_cast<double>(k) / static_cast<double>(count - 1)));
     } else {
-      x = from + (to - from) * static_cast<double>(k) / static_cast<double>(count - 1);
+      x = fifteen_digits(from + (to - from) * static_cast<double>(k) / static_cast<double>(count - 1));
     }
     values.push_back(as_number(x));
   }

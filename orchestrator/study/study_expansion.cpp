@@ -70,8 +70,9 @@ Json case_document(const Study& study, const Json& grid_point, int replicate, co
   document.erase("description");
   document.erase("$schema");
   // Seeds first, so that an axis setting one wins. They depend on the replicate only, not on the
-  // grid point: replicate r impacts the same cluster in the same orientation at every speed
-  // (common random numbers), so that differences between grid points are not sampling noise.
+  // grid point: replicate r impacts the same cluster (for a given N) in the same orientation at
+  // every speed and gamma/k_n (common random numbers), so that the differences between grid points
+  // are not sampling noise.
   const auto generator = Json::json_pointer("/cluster/generator");
   if (document.contains(generator) && document[generator].is_object())
     document[generator]["seed"] = replicate_seed(study.seed, "cluster", replicate);

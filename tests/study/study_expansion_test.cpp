@@ -107,6 +107,18 @@ TEST_CASE("linear and log ranges include both end points exactly") {
   CHECK(Json(parse_study(s).axes[1].values) == Json{1e-4, 1e-3, 1e-2});
 }
 
+TEST_CASE("values inside a range are the decimal numbers a user would type") {
+  // 0.1 + 0.9 x 2/9 is 0.30000000000000004 and 10^(log10(0.003) + 1) is 0.030000000000000013: both
+  // are rounded to 15 significant digits.
+  Json s = minimal_study();
+  s["axes"]["impact_speed"] = {{"linear", {{"from", 0.1}, {"to", 1.0}, {"count", 10}}}};
+  s["axes"]["gamma_over_kn"] = {{"log", {{"from", 0.003}, {"to", 0.3}, {"count", 5}}}};
+  const Study study = parse_study(s);
+  CHECK(Json(study.axes[0].values) == Json{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0});
+  CHECK(study.axes[1].values[2].get<double>() == 0.03);
+  CHECK(study.axes[1].values[1].dump() == "0.00948683298050514");
+}
+
 TEST_CASE("replicate r gets seeds derived from the study seed and r, the same at every grid point") {
   const auto cases = expand_study(parse_study(grid_study()));
   std::set<std::uint64_t> cluster_seeds, orientation_seeds;

@@ -1,0 +1,117 @@
+// `aerobreak study expand` over the real binary, and the project's default study.
+#include <catch2/catch.hpp>
+
+#include <set>
+#include <string>
+
+#include "study_support.hpp"
+#include "tests/support/run_command.hpp"
+
+using namespace aerobreak;
+using aerobreak::testing::minimal_study;
+using aerobreak::testing::run_command;
+using aerobreak::testing::Scratch;
+using aerobreak::testing::source_path;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+const std::string kExpand = std::string(AEROBREAK_BINARY) + " study expand ";
+
+}  // namespace
+
+TEST_CASE("the default study parses, as a file and as a service would take it") {
+  const Study study = load_study(source_path("studies/default.study.json"));
+  CHECK(study.name == "default");
+  CHECK_FALSE(study.description.empty());
+  REQUIRE(study.axes.size() == 3);
+  CHECK(study.axes[0].name == "impact_speed");
+  CHECK(study.axes[1].name == "gamma_over_kn");
+  CHECK(study.axes[1].values.size() == 2);
+  CHECK(study.axes[2].name == "primaries");
+  CHECK(study.axes[2].values.size() == 2);
+  CHECK(study.replicates > 1);
+
+  const auto cases = expand_study(study);
+  CHECK(cases.size() == study.case_count());
+  std::set<std::string> hashes;
+  for (const auto& c : cases) {
+    hashes.insert(c.hash);
+    CHECK(c.document["wall"]["adhesive"] == true);
+    CHECK(c.document["model"]["damping"]["law"] == "viscoelastic");
+  }
+  CHECK(hashes.size() == cases.size());
+
+  // Over HTTP: no cluster files, tighter limits.
+  StudyLimits service;
+  service.max_cases = 1000;
+  service.max_primaries = 4096;
+  service.allow_cluster_files = false;
+  std::ifstream in(source_path("studies/default.study.json"));
+  CHECK(parse_study(Json::parse(in), service).hash == study.hash);
+}
+
+TEST_CASE("aerobreak study expand lists the cases: count, then index, hash, grid point and replicate") {
+  Scratch scratch("cli_table");
+  Json s = minimal_study();
+  s["replicates"] = {{"count", 2}};
+  const auto out = run_command(kExpand + scratch.write("study.json", s.dump()).string(), true);
+  INFO(out.text);
+  REQUIRE(out.exit_code == 0);
+  const Study study = parse_study(s);
+  const auto cases = expand_study(study);
+  CHECK_THAT(out.text, StartsWith("test study: 4 cases (study " + study.hash.substr(0, 12) + ")\n"));
+  CHECK_THAT(out.text, Contains("     0  " + cases[0].hash.substr(0, 12) +
+                                "  {\"impact_speed\":0.01,\"gamma_over_kn\":0.001,\"primaries\":8}  replicate 0\n"));
+  CHECK_THAT(out.text, Contains("     3  " + cases[3].hash.substr(0, 12) +
+                                "  {\"impact_speed\":0.02,\"gamma_over_kn\":0.001,\"primaries\":8}  replicate 1\n"));
+}
+
+TEST_CASE("aerobreak study expand --json prints the cases with their complete documents") {
+  const std::string study_file = source_path("studies/default.study.json").string();
+  const auto out = run_command(kExpand + study_file + " --json", true);
+  REQUIRE(out.exit_code == 0);
+  const Json printed = Json::parse(out.text);
+  const auto cases = expand_study(load_study(study_file));
+  REQUIRE(printed.size() == cases.size());
+  for (std::size_t k = 0; k < cases.size(); k += 37) {
+    INFO("case " << k);
+    CHECK(printed[k]["hash"] == cases[k].hash);
+    CHECK(printed[k]["grid_point"] == cases[k].grid_point);
+    CHECK(printed[k]["replicate"] == cases[k].replicate);
+    CHECK(printed[k]["document"] == cases[k].document);
+    CHECK(case_hash(printed[k]["document"]) == cases[k].hash);
+  }
+}
+
+TEST_CASE("aerobreak study expand refuses a bad study with each violation on stderr and status 2") {
+  Scratch scratch("cli_bad");
+  Json s = minimal_study();
+  s["axes"]["speed"] = {{"values", {1}}};
+  s["replicates"] = {{"count", 0}};
+  auto out = run_command(kExpand + scratch.write("bad.json", s.dump()).string());
+  CHECK(out.exit_code == 2);
+  CHECK_THAT(out.text, Contains("invalid study"));
+  CHECK_THAT(out.text, Contains("  /replicates/count: must be >= 1 (got 0)\n"));
+  CHECK_THAT(out.text, Contains("  /axes/speed: is neither an axis alias"));
+  CHECK(run_command(kExpand + scratch.write("bad.json", s.dump()).string(), true).text.empty());
+
+  out = run_command(kExpand + scratch.write("broken.json", "{").string());
+  CHECK(out.exit_code == 2);
+  CHECK_THAT(out.text, Contains("is not valid JSON"));
+
+  out = run_command(kExpand + (scratch.dir / "absent.json").string());
+  CHECK(out.exit_code == 2);
+  CHECK_THAT(out.text, Contains("cannot open study file"));
+}
+
+TEST_CASE("aerobreak study needs a subcommand") {
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " study");
+  CHECK(out.exit_code != 0);
+  CHECK_THAT(out.text, Contains("A subcommand is required"));
+  const auto help = run_command(std::string(AEROBREAK_BINARY) + " study --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.text, Contains("expand"));
+}
