@@ -27,20 +27,8 @@ const std::set<std::string>& assertion_keywords() {
   return keywords;
 }
 
-std::string escape_token(const std::string& token) {
-  std::string out;
-  for (char c : token) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
 
-std::string child(const std::string& pointer, const std::string& token) { return pointer + "/" + escape_token(token); }
+std::string child(const std::string& pointer, const std::string& token) { return pointer_child(pointer, token); }
 
 std::string type_name(const Json& v) {
   switch (v.type()) {
@@ -322,6 +310,19 @@ void JsonSchema::check(const nlohmann::ordered_json& schema, nlohmann::ordered_j
       check(schema["else"], value, pointer, complete, out);
     }
   }
+}
+
+std::string pointer_child(const std::string& pointer, const std::string& token) {
+  std::string out = pointer + "/";
+  for (char c : token) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
 }
 
 }  // namespace aerobreak

@@ -12,6 +12,9 @@ struct SchemaViolation {
   std::string message;
 };
 
+// The JSON pointer (RFC 6901) of member `token` under `pointer`: "~" and "/" in the token escaped.
+std::string pointer_child(const std::string& pointer, const std::string& token);
+
 // "POINTER: MESSAGE" per violation, one a line; the document itself is shown as "(document)".
 std::string describe(const std::vector<SchemaViolation>& violations);
 

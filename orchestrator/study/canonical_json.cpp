@@ -32,17 +32,5 @@ nlohmann::json canonical_json(const nlohmann::ordered_json& document) {
 
 std::string canonical_dump(const nlohmann::ordered_json& document) { return canonical_json(document).dump(); }
 
-std::string pointer_child(const std::string& pointer, const std::string& token) {
-  std::string out = pointer + "/";
-  for (char c : token) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
 
 }  // namespace aerobreak

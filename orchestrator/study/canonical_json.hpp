@@ -2,6 +2,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "engine/impact/json_schema.hpp"  // pointer_child
+
 namespace aerobreak {
 
 // The canonical form of a document, the one that content hashes are taken over: keys sorted
@@ -9,8 +11,5 @@ namespace aerobreak {
 // 16, 16.0 and 1.6e1 (one number to JSON and to the physics) hash the same.
 nlohmann::json canonical_json(const nlohmann::ordered_json& document);
 std::string canonical_dump(const nlohmann::ordered_json& document);
-
-// "/" + the token escaped as RFC 6901 asks ("~" -> "~0", "/" -> "~1"), appended to `pointer`.
-std::string pointer_child(const std::string& pointer, const std::string& token);
 
 }  // namespace aerobreak
