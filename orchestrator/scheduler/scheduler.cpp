@@ -63,10 +63,12 @@ void Scheduler::note(const std::string& line) {
 void Scheduler::run() {
   while (!stopping_) {
     if (job_) {
-      // Messages first: each one may free a rank for the next case.
-      while (auto message = job_->next_message(std::chrono::milliseconds(50))) {
+      // Wait for one message at most 50 ms, then take the ones already there without waiting:
+      // each may free a rank, and the freed rank gets its next case right after.
+      auto message = job_->next_message(std::chrono::milliseconds(50));
+      while (message && !stopping_) {
         handle(*message);
-        if (stopping_) break;
+        message = job_->next_message(std::chrono::milliseconds(0));
       }
       if (!stopping_) {
         feed_job();

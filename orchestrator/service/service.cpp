@@ -28,6 +28,8 @@ void Service::start() {
   const int threads = options_.threads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
   server_->set_payload_max_length(options_.max_body_bytes);
+  // Small JSON answers: without TCP_NODELAY, Nagle's algorithm and delayed ACKs add ~40 ms to each.
+  server_->set_tcp_nodelay(true);
   // Slow or stalled clients must not hold a worker thread for long.
   server_->set_read_timeout(5, 0);
   server_->set_write_timeout(5, 0);
