@@ -147,7 +147,7 @@ TEST_CASE("a contact in tension separates at delta = -delta_c, or at F = -F_c by
   }
 }
 
-TEST_CASE("restitution versus impact speed follows the JKR hysteresis loss; sticking below v_crit") {
+TEST_CASE("restitution versus impact speed follows the JKR hysteresis loss, with sticking below v_crit") {
   const SphereOnWall s = sphere_on_wall();
   const double loss = hysteresis_energy(s);
   const double critical_speed = std::sqrt(2.0 * loss / s.mass);

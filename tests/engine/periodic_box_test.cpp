@@ -98,7 +98,7 @@ TEST_CASE("periodic cell-list and brute-force pairs equal the explicit image sum
   }
 }
 
-TEST_CASE("a pair on opposite faces is listed through the boundary; the box must fit the reach") {
+TEST_CASE("a pair on opposite faces is listed through the boundary, and the box must fit the reach") {
   const PeriodicBox box{{6.0, 6.0, 6.0}};
   PairList list;
   CellListSearch(box).find_pairs({{0.1, 3.0, 3.0}, {5.2, 3.0, 3.0}}, {0.5, 0.5}, 0.0, list);

@@ -97,7 +97,7 @@ TEST_CASE("A killed worker job: its in-flight cases are queued again and the stu
   CHECK(service.get("/api/health").at("scheduler").at("jobs_started").get<int>() >= 2);
 }
 
-TEST_CASE("A case that keeps overrunning its wall time is failed after max_attempts; the others finish",
+TEST_CASE("A case that keeps overrunning its wall time is failed after max_attempts while the others finish",
           "[service][crash]") {
   ScratchDirectory scratch("poison");
   ServiceProcess service(scratch.path());

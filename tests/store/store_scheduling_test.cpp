@@ -4,7 +4,7 @@
 
 namespace aerobreak {
 
-TEST_CASE("Submitting stores each case once by hash; the same study again changes nothing", "[store]") {
+TEST_CASE("Submitting stores each case once by hash, and the same study again changes nothing", "[store]") {
   testing::TemporaryStoreFile file("submit");
   Store store(file.path());
   const auto first = store.submit_study(testing::submission("s1", "shared", {0.1, 0.2, 0.3}, 2));
