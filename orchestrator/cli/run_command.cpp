@@ -115,7 +115,7 @@ int run(RunOptions options) {
   Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
   Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
-  const auto receipt = store.submit_study(make_submission(study, expand_study(study)));
+  const auto receipt = store.submit_study(make_submission(study));
   const auto service = start_service(store, scheduler, options.port);
   scheduler.start();
 

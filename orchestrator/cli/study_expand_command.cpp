@@ -34,7 +34,7 @@ void print_json(const std::vector<StudyCase>& cases) {
 void expand(const ExpandOptions& o) {
   try {
     const Study study = load_study(o.study_file);
-    const std::vector<StudyCase> cases = expand_study(study);
+    const std::vector<StudyCase> cases = study.cases;
     if (o.json)
       print_json(cases);
     else

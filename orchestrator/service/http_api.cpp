@@ -100,7 +100,7 @@ void submit_study(const httplib::Request& request, httplib::Response& response, 
   }
   try {
     const Study study = parse_study(std::move(document), options.study_limits);
-    const auto receipt = store.submit_study(make_submission(study, expand_study(study)));
+    const auto receipt = store.submit_study(make_submission(study));
     if (scheduler) scheduler->wake();
     response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
     send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));

@@ -2,7 +2,7 @@
 
 namespace aerobreak {
 
-StudySubmission make_submission(const Study& study, const std::vector<StudyCase>& cases) {
+StudySubmission make_submission(const Study& study) {
   StudySubmission submission;
   submission.hash = study.hash;
   submission.name = study.name;
@@ -10,8 +10,8 @@ StudySubmission make_submission(const Study& study, const std::vector<StudyCase>
   submission.document = study.document;
   submission.max_attempts = study.max_attempts;
   submission.case_wall_time = study.case_wall_time;
-  submission.cases.reserve(cases.size());
-  for (const auto& study_case : cases)
+  submission.cases.reserve(study.cases.size());
+  for (const auto& study_case : study.cases)
     submission.cases.push_back(
         {study_case.hash, study_case.document, study_case.grid_point, study_case.grid_key, study_case.replicate});
   return submission;

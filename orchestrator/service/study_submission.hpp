@@ -5,6 +5,6 @@
 namespace aerobreak {
 
 // A parsed study and its expanded cases in the form the store takes.
-StudySubmission make_submission(const Study& study, const std::vector<StudyCase>& cases);
+StudySubmission make_submission(const Study& study);
 
 }  // namespace aerobreak

@@ -138,6 +138,7 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
   study.document = std::move(document);
   StudyExpansion expansion = expand_with_violations(study);
   if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
+  study.cases = std::move(expansion.cases);
 
   // The name is part of what was submitted; only the reference to the schema file is not.
   Json hashed = study.document;
@@ -156,12 +157,6 @@ Study load_study(const std::filesystem::path& path, const StudyLimits& limits) {
     throw StudyError({{"", path.string() + " is not valid JSON: " + e.what()}});
   }
   return parse_study(std::move(document), limits, std::filesystem::absolute(path).parent_path());
-}
-
-std::vector<StudyCase> expand_study(const Study& study) {
-  StudyExpansion expansion = expand_with_violations(study);
-  if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
-  return std::move(expansion.cases);
 }
 
 }  // namespace aerobreak

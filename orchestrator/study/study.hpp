@@ -27,6 +27,15 @@ struct StudyAxis {
   std::vector<nlohmann::ordered_json> values;
 };
 
+// One case of a study.
+struct StudyCase {
+  nlohmann::ordered_json document;    // complete case document, schema defaults filled in
+  std::string hash;                   // case_hash(document)
+  nlohmann::ordered_json grid_point;  // axis name -> value, in axis order
+  std::string grid_key;               // grid_point.dump(): groups the replicates of one grid point
+  int replicate = 0;                  // 0-based
+};
+
 // A study (schemas/study.schema.json), checked: parse_study has validated every case it expands to.
 struct Study {
   nlohmann::ordered_json document;  // as given, completed with the schema's defaults; cluster file paths made absolute
@@ -38,16 +47,11 @@ struct Study {
   double case_wall_time = 3600.0;  // seconds
   std::string hash;                // sha256 of the canonical completed study document (identifies a resubmission)
   std::size_t case_count() const;  // product of axis sizes x replicates (saturating)
+  // The cases, expanded and validated once by parse_study: the first axis varies slowest, the
+  // replicates fastest.
+  std::vector<StudyCase> cases;
 };
 
-// One case of a study.
-struct StudyCase {
-  nlohmann::ordered_json document;    // complete case document, schema defaults filled in
-  std::string hash;                   // case_hash(document)
-  nlohmann::ordered_json grid_point;  // axis name -> value, in axis order
-  std::string grid_key;               // grid_point.dump(): groups the replicates of one grid point
-  int replicate = 0;                  // 0-based
-};
 
 // A study that breaks its schema, its rules or the submitter's limits, or expands to an invalid
 // case: every violation, each naming the field by its JSON pointer into the study document.
@@ -65,7 +69,7 @@ class StudyError : public std::invalid_argument {
 const JsonSchema& study_schema();
 
 // Validates a study document against its schema and rules and the limits, checking the number of
-// cases before expanding anything, then expands it once and validates every case
+// cases before expanding anything, then expands it once (Study::cases) and validates every case
 // (parse_impact_case). Relative cluster file paths are made absolute against `base_directory`.
 // Throws StudyError.
 Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits = {},
@@ -73,9 +77,6 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits = {
 // Reads and parses a study file (cluster files relative to its directory); a file that cannot be
 // read or is not JSON throws StudyError naming why.
 Study load_study(const std::filesystem::path& path, const StudyLimits& limits = {});
-
-// The cases of a parsed study: the first axis varies slowest, the replicates fastest.
-std::vector<StudyCase> expand_study(const Study& study);
 
 // The content hash of a completed case document: sha256 over its physics, i.e. the canonical form
 // (sorted keys, integral numbers written as integers) without the labels /name, /description and

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "tests/support/run_command.hpp"
+#include "tests/support/scratch_directory.hpp"
 
 #include <unistd.h>
 
@@ -33,29 +34,6 @@ CommandOutput run_aerobreak_stdout(const std::string& arguments) {
   return aerobreak::testing::run_command(std::string(AEROBREAK_BINARY) + " " + arguments, true);
 }
 
-// A fresh directory, removed with everything in it at the end of the test.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    static std::atomic<unsigned> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("aerobreak_cluster_cli_" + std::to_string(::getpid()) + "_" + std::to_string(std::random_device{}()) +
-             "_" + std::to_string(counter++));
-    std::filesystem::create_directories(path_);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
-
 std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -74,7 +52,7 @@ const char* const kSmallLibrary = "cluster generate --primaries 32 --count 3 --s
 }  // namespace
 
 TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a table and as JSON") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string library = dir.file("clusters.h5");
   const CommandOutput generated = run_aerobreak(std::string(kSmallLibrary) + " --output " + library);
   INFO(generated.text);
@@ -116,7 +94,7 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
 }
 
 TEST_CASE("cluster analyze fits Df and kf over a library of several sizes") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string library = dir.file("sizes.h5");
   for (const char* size : {"8", "16", "32"})
     REQUIRE(run_aerobreak("cluster generate --no-relax --count 2 --seed 1 --primaries " + std::string(size) +
@@ -136,7 +114,7 @@ TEST_CASE("cluster analyze fits Df and kf over a library of several sizes") {
 }
 
 TEST_CASE("cluster generate --generator tunable records the prefactor it imposed") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string library = dir.file("tunable.h5");
   const CommandOutput generated = run_aerobreak(
       "cluster generate --generator tunable --df 1.8 --kf 1.3 --primaries 32 --count 2 --seed 3 --output " + library);
@@ -157,7 +135,7 @@ TEST_CASE("cluster generate --generator tunable records the prefactor it imposed
 }
 
 TEST_CASE("cluster convert turns a library entry into XYZ and back without change") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string library = dir.file("clusters.h5");
   REQUIRE(run_aerobreak(std::string(kSmallLibrary) + " --output " + library).exit_code == 0);
 
@@ -177,7 +155,7 @@ TEST_CASE("cluster convert turns a library entry into XYZ and back without chang
 }
 
 TEST_CASE("cluster generate is deterministic for a seed and differs between seeds") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string base = "cluster generate --primaries 32 --xyz ";
   REQUIRE(run_aerobreak(base + dir.file("a.xyz") + " --seed 9").exit_code == 0);
   REQUIRE(run_aerobreak(base + dir.file("b.xyz") + " --seed 9").exit_code == 0);
@@ -188,7 +166,7 @@ TEST_CASE("cluster generate is deterministic for a seed and differs between seed
 }
 
 TEST_CASE("cluster commands reject bad input with a message and a non-zero exit") {
-  const TemporaryDirectory dir;
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
   const std::string library = dir.file("lib.h5");
   const auto fails_with = [](const std::string& arguments, const std::string& message) {
     const CommandOutput out = run_aerobreak(arguments);

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "tests/support/run_command.hpp"
+#include "tests/support/scratch_directory.hpp"
 
 #include <array>
 #include <cstdio>
@@ -23,33 +24,17 @@ namespace {
 
 using aerobreak::testing::run_command;
 
-// A scratch directory removed with its contents at the end of the test.
-struct Scratch {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                              ("aerobreak_impact_cli_" + std::to_string(::getpid()));
-  Scratch() { std::filesystem::create_directories(dir); }
-  ~Scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
-  std::string write(const std::string& name, const Json& document) const {
-    const auto path = dir / name;
-    std::ofstream(path) << document.dump(2);
-    return path.string();
-  }
-};
-
 }  // namespace
 
 TEST_CASE("aerobreak impact runs a case and writes a valid result document and trajectories") {
-  Scratch scratch;
+  const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   Json c = testing::minimal_case();
   c["run"]["time_limit"] = 400.0;
   c["run"]["snapshot_interval"] = 100.0;
-  const std::string case_file = scratch.write("case.json", c);
-  const std::string result_file = (scratch.dir / "result.json").string();
-  const std::string trajectory = (scratch.dir / "trajectory.h5").string();
-  const std::string xyz = (scratch.dir / "trajectory.xyz").string();
+  const std::string case_file = scratch.write("case.json", c.dump(2)).string();
+  const std::string result_file = (scratch.path() / "result.json").string();
+  const std::string trajectory = (scratch.path() / "trajectory.h5").string();
+  const std::string xyz = (scratch.path() / "trajectory.xyz").string();
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + case_file + " -o " + result_file +
                                " --trajectory " + trajectory + " --xyz " + xyz + " --progress-seconds 0.001");
   INFO(out.text);
@@ -70,18 +55,18 @@ TEST_CASE("aerobreak impact runs a case and writes a valid result document and t
 }
 
 TEST_CASE("aerobreak impact refuses an invalid case and names the field") {
-  Scratch scratch;
+  const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   Json c = testing::minimal_case();
   c["model"] = {{"friction", -0.5}};
-  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c));
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c.dump(2)).string());
   CHECK(out.exit_code == 1);
   CHECK_THAT(out.text, Contains("/model/friction: must be >= 0 (got -0.5)"));
 }
 
 TEST_CASE("aerobreak impact --check writes the case completed with its defaults") {
-  Scratch scratch;
+  const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact --check " +
-                               scratch.write("case.json", testing::minimal_case()));
+                               scratch.write("case.json", testing::minimal_case().dump(2)).string());
   REQUIRE(out.exit_code == 0);
   const Json completed = Json::parse(out.text);
   CHECK(completed["model"]["normal"] == "jkr");

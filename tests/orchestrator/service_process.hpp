@@ -17,25 +17,12 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/scratch_directory.hpp"
+
 namespace aerobreak::testing {
 
 using Json = nlohmann::ordered_json;
 using namespace std::chrono_literals;
-
-// A fresh directory, removed with everything in it at the end of the test.
-class ScratchDirectory {
- public:
-  explicit ScratchDirectory(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / ("aerobreak-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDirectory() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // Polls `done` every 100 ms until it holds or `limit` passes; returns whether it held.
 inline bool eventually(const std::function<bool()>& done, std::chrono::milliseconds limit) {

@@ -7,23 +7,18 @@
 #include <string>
 
 #include "orchestrator/store/store.hpp"
+#include "tests/support/scratch_directory.hpp"
 
 namespace aerobreak::testing {
 
 // A store file in a fresh temporary directory, removed with the object.
 class TemporaryStoreFile {
  public:
-  explicit TemporaryStoreFile(const std::string& name)
-      : directory_(std::filesystem::temp_directory_path() / ("aerobreak-store-" + name + "-" +
-                                                             std::to_string(::getpid()))) {
-    std::filesystem::remove_all(directory_);
-    std::filesystem::create_directories(directory_);
-  }
-  ~TemporaryStoreFile() { std::filesystem::remove_all(directory_); }
-  std::filesystem::path path() const { return directory_ / "store.sqlite"; }
+  explicit TemporaryStoreFile(const std::string& name) : directory_("store_" + name) {}
+  std::filesystem::path path() const { return directory_.path() / "store.sqlite"; }
 
  private:
-  std::filesystem::path directory_;
+  ScratchDirectory directory_;
 };
 
 // A study of `speeds` x `replicates` cases whose hashes are made from the study tag, so that two

@@ -25,11 +25,11 @@ Json reversed_keys(const Json& document) {
 
 std::set<std::string> case_hashes(const Json& study) {
   std::set<std::string> out;
-  for (const auto& c : expand_study(parse_study(study))) out.insert(c.hash);
+  for (const auto& c : parse_study(study).cases) out.insert(c.hash);
   return out;
 }
 
-Json first_case(const Json& study) { return expand_study(parse_study(study)).front().document; }
+Json first_case(const Json& study) { return parse_study(study).cases.front().document; }
 
 }  // namespace
 
@@ -98,7 +98,7 @@ TEST_CASE("a number hashes the same however it is written") {
 }
 
 TEST_CASE("a cluster file enters the case hash by its content, not its path") {
-  const aerobreak::testing::Scratch scratch("hash_file");
+  const aerobreak::testing::ScratchDirectory scratch("hash_file");
   const auto rod = scratch.write("rod.xyz", aerobreak::testing::kRodXyz);
   const auto copy = scratch.write("copy.xyz", aerobreak::testing::kRodXyz);
   const auto bent = scratch.write("bent.xyz", "4\nbent\nC 0 0 0\nC 1 0 0\nC 2 0 0\nC 2 1 0\n");
@@ -118,7 +118,7 @@ TEST_CASE("a cluster file enters the case hash by its content, not its path") {
   CHECK(case_hash(c) != reference);
 
   Json missing = c;
-  missing["cluster"]["file"]["path"] = (scratch.dir / "absent.xyz").string();
+  missing["cluster"]["file"]["path"] = (scratch.path() / "absent.xyz").string();
   CHECK_THROWS_AS(case_hash(missing), std::runtime_error);
 }
 

@@ -10,7 +10,7 @@
 using namespace aerobreak;
 using aerobreak::testing::minimal_study;
 using aerobreak::testing::run_command;
-using aerobreak::testing::Scratch;
+using aerobreak::testing::ScratchDirectory;
 using aerobreak::testing::source_path;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
@@ -34,7 +34,7 @@ TEST_CASE("the default study parses, as a file and as a service would take it") 
   CHECK(study.axes[2].values.size() == 2);
   CHECK(study.replicates > 1);
 
-  const auto cases = expand_study(study);
+  const auto cases = study.cases;
   CHECK(cases.size() == study.case_count());
   std::set<std::string> hashes;
   for (const auto& c : cases) {
@@ -54,14 +54,14 @@ TEST_CASE("the default study parses, as a file and as a service would take it") 
 }
 
 TEST_CASE("aerobreak study expand lists the cases: count, then index, hash, grid point and replicate") {
-  Scratch scratch("cli_table");
+  ScratchDirectory scratch("cli_table");
   Json s = minimal_study();
   s["replicates"] = {{"count", 2}};
   const auto out = run_command(kExpand + scratch.write("study.json", s.dump()).string(), true);
   INFO(out.text);
   REQUIRE(out.exit_code == 0);
   const Study study = parse_study(s);
-  const auto cases = expand_study(study);
+  const auto cases = study.cases;
   CHECK_THAT(out.text, StartsWith("test study: 4 cases (study " + study.hash.substr(0, 12) + ")\n"));
   CHECK_THAT(out.text, Contains("     0  " + cases[0].hash.substr(0, 12) +
                                 "  {\"impact_speed\":0.01,\"gamma_over_kn\":0.001,\"primaries\":8}  replicate 0\n"));
@@ -74,7 +74,7 @@ TEST_CASE("aerobreak study expand --json prints the cases with their complete do
   const auto out = run_command(kExpand + study_file + " --json", true);
   REQUIRE(out.exit_code == 0);
   const Json printed = Json::parse(out.text);
-  const auto cases = expand_study(load_study(study_file));
+  const auto cases = load_study(study_file).cases;
   REQUIRE(printed.size() == cases.size());
   for (std::size_t k = 0; k < cases.size(); k += 37) {
     INFO("case " << k);
@@ -87,7 +87,7 @@ TEST_CASE("aerobreak study expand --json prints the cases with their complete do
 }
 
 TEST_CASE("aerobreak study expand refuses a bad study with each violation on stderr and status 2") {
-  Scratch scratch("cli_bad");
+  ScratchDirectory scratch("cli_bad");
   Json s = minimal_study();
   s["axes"]["speed"] = {{"values", {1}}};
   s["replicates"] = {{"count", 0}};
@@ -102,7 +102,7 @@ TEST_CASE("aerobreak study expand refuses a bad study with each violation on std
   CHECK(out.exit_code == 2);
   CHECK_THAT(out.text, Contains("is not valid JSON"));
 
-  out = run_command(kExpand + (scratch.dir / "absent.json").string());
+  out = run_command(kExpand + (scratch.path() / "absent.json").string());
   CHECK(out.exit_code == 2);
   CHECK_THAT(out.text, Contains("cannot open study file"));
 }

@@ -1,4 +1,4 @@
-// expand_study: every combination of one value per axis (first axis slowest, replicates fastest),
+// Study::cases: every combination of one value per axis (first axis slowest, replicates fastest),
 // ranges with exact end points, replicate seeds derived from the study seed and the replicate only.
 #include <catch2/catch.hpp>
 
@@ -40,7 +40,7 @@ Json grid_study() {
 TEST_CASE("cases run through the axes in key order, the first slowest, replicates fastest") {
   const Study study = parse_study(grid_study());
   REQUIRE(study.case_count() == 24);
-  const auto cases = expand_study(study);
+  const auto cases = study.cases;
   REQUIRE(cases.size() == 24);
 
   std::size_t k = 0;
@@ -72,7 +72,7 @@ TEST_CASE("case documents are complete, named after the study, grid point and re
   Json s = grid_study();
   s["description"] = "not copied";
   s["base"]["description"] = "not copied either";
-  const auto cases = expand_study(parse_study(s));
+  const auto cases = parse_study(s).cases;
   const Json& d = cases[5].document;
   CHECK(d["name"] == "test study | impact_speed=0.01 gamma_over_kn=0.001 primaries=8 | replicate 1");
   CHECK(d.begin().key() == "name");
@@ -120,7 +120,7 @@ TEST_CASE("values inside a range are the decimal numbers a user would type") {
 }
 
 TEST_CASE("replicate r gets seeds derived from the study seed and r, the same at every grid point") {
-  const auto cases = expand_study(parse_study(grid_study()));
+  const auto cases = parse_study(grid_study()).cases;
   std::set<std::uint64_t> cluster_seeds, orientation_seeds;
   for (const auto& c : cases) {
     const auto cluster = ptr(c.document, "/cluster/generator/seed").get<std::uint64_t>();
@@ -141,9 +141,9 @@ TEST_CASE("replicate r gets seeds derived from the study seed and r, the same at
 
 TEST_CASE("the seeds of replicate r do not depend on how many replicates the study has") {
   Json s = grid_study();
-  const auto two = expand_study(parse_study(s));
+  const auto two = parse_study(s).cases;
   s["replicates"]["count"] = 5;
-  const auto five = expand_study(parse_study(s));
+  const auto five = parse_study(s).cases;
   CHECK(two[1].hash == five[1].hash);
   CHECK(two[1].document["cluster"] == five[1].document["cluster"]);
 }
@@ -151,7 +151,7 @@ TEST_CASE("the seeds of replicate r do not depend on how many replicates the stu
 TEST_CASE("an axis setting a seed wins over the derived one") {
   Json s = grid_study();
   s["axes"]["/impact/orientation_seed"] = {{"values", {5, 6}}};
-  const auto cases = expand_study(parse_study(s));
+  const auto cases = parse_study(s).cases;
   REQUIRE(cases.size() == 48);
   CHECK(ptr(cases[0].document, "/impact/orientation_seed") == 5);
   CHECK(ptr(cases[1].document, "/impact/orientation_seed") == 5);  // replicate 1, same swept seed
@@ -160,11 +160,11 @@ TEST_CASE("an axis setting a seed wins over the derived one") {
 }
 
 TEST_CASE("a cluster read from a file gets no generator seed, only an orientation seed") {
-  const aerobreak::testing::Scratch scratch("file_seed");
+  const aerobreak::testing::ScratchDirectory scratch("file_seed");
   Json s = grid_study();
   s["axes"].erase("primaries");
   s["base"]["cluster"] = {{"file", {{"path", scratch.write("rod.xyz", aerobreak::testing::kRodXyz).string()}}}};
-  const auto cases = expand_study(parse_study(s));
+  const auto cases = parse_study(s).cases;
   REQUIRE(cases.size() == 12);
   CHECK_FALSE(cases[0].document["cluster"].contains("generator"));
   CHECK(ptr(cases[1].document, "/impact/orientation_seed") == replicate_seed(2026, "orientation", 1));

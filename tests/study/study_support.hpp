@@ -1,4 +1,5 @@
 #pragma once
+#include "tests/support/scratch_directory.hpp"
 // Builders and checks shared by the study tests.
 #include <catch2/catch.hpp>
 #include <unistd.h>
@@ -50,24 +51,6 @@ inline std::string message_at(const std::vector<SchemaViolation>& violations, co
   FAIL("no violation at " << pointer << "; got:\n" << describe(violations));
   return {};
 }
-
-// A scratch directory removed with its contents at the end of the test.
-struct Scratch {
-  std::filesystem::path dir;
-  explicit Scratch(const std::string& tag)
-      : dir(std::filesystem::temp_directory_path() / ("aerobreak_study_" + tag + "_" + std::to_string(::getpid()))) {
-    std::filesystem::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    const auto path = dir / name;
-    std::ofstream(path) << text;
-    return path;
-  }
-};
 
 // Four primaries in a row, touching: a cluster file.
 inline const char* kRodXyz = "4\nrod\nC 0 0 0\nC 1 0 0\nC 2 0 0\nC 3 0 0\n";

@@ -208,22 +208,22 @@ TEST_CASE("cluster files are refused where the submitter may not name files, bef
 }
 
 TEST_CASE("relative cluster file paths are made absolute against the study's directory") {
-  const aerobreak::testing::Scratch scratch("paths");
+  const aerobreak::testing::ScratchDirectory scratch("paths");
   scratch.write("rod.xyz", aerobreak::testing::kRodXyz);
   Json s = minimal_study();
   s["axes"].erase("primaries");
   s["base"]["cluster"] = {{"file", {{"path", "rod.xyz"}}}};
-  const Study study = parse_study(s, {}, scratch.dir);
-  const std::string resolved = (scratch.dir / "rod.xyz").string();
+  const Study study = parse_study(s, {}, scratch.path());
+  const std::string resolved = (scratch.path() / "rod.xyz").string();
   CHECK(study.document["base"]["cluster"]["file"]["path"] == resolved);
-  CHECK(expand_study(study)[0].document["cluster"]["file"]["path"] == resolved);
+  CHECK(study.cases[0].document["cluster"]["file"]["path"] == resolved);
 
-  const auto v = violations_of(s, {}, scratch.dir / "elsewhere");
-  CHECK_THAT(message_at(v, "/base/cluster/file/path"), Contains("no such file: " + (scratch.dir / "elsewhere/rod.xyz").string()));
+  const auto v = violations_of(s, {}, scratch.path() / "elsewhere");
+  CHECK_THAT(message_at(v, "/base/cluster/file/path"), Contains("no such file: " + (scratch.path() / "elsewhere/rod.xyz").string()));
 }
 
 TEST_CASE("load_study names a file that is missing or not JSON") {
-  const aerobreak::testing::Scratch scratch("load");
+  const aerobreak::testing::ScratchDirectory scratch("load");
   try {
     load_study(scratch.write("broken.json", "{\"name\": "));
     FAIL("accepted a file that is not JSON");
@@ -232,7 +232,7 @@ TEST_CASE("load_study names a file that is missing or not JSON") {
     CHECK(e.violations()[0].pointer.empty());
     CHECK_THAT(e.violations()[0].message, Contains("broken.json is not valid JSON: [json.exception.parse_error"));
   }
-  CHECK_THROWS_WITH(load_study(scratch.dir / "absent.json"), Contains("cannot open study file"));
+  CHECK_THROWS_WITH(load_study(scratch.path() / "absent.json"), Contains("cannot open study file"));
 }
 
 TEST_CASE("the study schema file is the one compiled in") {

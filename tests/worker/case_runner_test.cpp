@@ -16,6 +16,7 @@
 #include "engine/io/h5md_reader.hpp"
 #include "engine/io/hdf5_datasets.hpp"
 #include "engine/io/hdf5_handle.hpp"
+#include "tests/support/scratch_directory.hpp"
 #include "orchestrator/worker/case_runner.hpp"
 #include "worker_cases.hpp"
 
@@ -23,17 +24,6 @@ using namespace aerobreak;
 using Catch::Matchers::Contains;
 
 namespace {
-
-// A scratch directory removed with its contents at the end of the test.
-struct Scratch {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                              ("aerobreak_case_runner_" + std::to_string(::getpid()));
-  Scratch() { std::filesystem::create_directories(dir); }
-  ~Scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
-};
 
 std::vector<std::int32_t> read_fragment_index(const std::filesystem::path& file) {
   const Hdf5Handle h5 = checked_handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open", file);
@@ -65,8 +55,8 @@ TEST_CASE("run_case refuses an invalid document with a CaseError naming the fiel
 }
 
 TEST_CASE("A short wall time stops a long case within a bounded time") {
-  Scratch scratch;
-  const auto data_file = scratch.dir / "stopped.h5";
+  const testing::ScratchDirectory scratch("case_runner");
+  const auto data_file = scratch.path() / "stopped.h5";
   const auto start = std::chrono::steady_clock::now();
   // About 30 s of work without the limit.
   CHECK_THROWS_AS(run_case(testing::slow_case(1e6), 0.3, data_file), WallTimeExceeded);
@@ -74,12 +64,12 @@ TEST_CASE("A short wall time stops a long case within a bounded time") {
   CHECK(elapsed < 2.0);
   // Neither a file under the name nor a half-written one is left behind.
   CHECK_FALSE(std::filesystem::exists(data_file));
-  CHECK_FALSE(std::filesystem::exists(scratch.dir / "stopped.h5.partial"));
+  CHECK_FALSE(std::filesystem::exists(scratch.path() / "stopped.h5.partial"));
 }
 
 TEST_CASE("The bulk file holds the first and last states and each primary's final fragment") {
-  Scratch scratch;
-  const auto data_file = scratch.dir / "new" / "folder" / "case.h5";
+  const testing::ScratchDirectory scratch("case_runner");
+  const auto data_file = scratch.path() / "new" / "folder" / "case.h5";
   const CaseRunOutcome outcome = run_case(testing::tiny_case(), 0.0, data_file);
   CHECK(outcome.data_file == data_file.string());
   REQUIRE(std::filesystem::exists(data_file));
