@@ -39,7 +39,6 @@ struct ContactLoad {
 // once per run, so the pair loop holds no model switches.
 template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
 struct ContactModel {
-  using normal_type = Normal;
 
   Normal normal;
   Damping damping;
@@ -56,15 +55,17 @@ struct ContactModel {
   }
 
   // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
-  ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt, DissipationTally& tally) const {
-    return evaluate_solved(s, m, Normal::solve(m.overlap * s.constants.overlap_scale), dt, tally);
+  [[gnu::always_inline]] ContactLoad evaluate(ContactState& s, const ContactMotion& m, double dt,
+                                              DissipationTally& tally) const {
+    return evaluate(s, s.constants, m, dt, tally);
   }
 
-  // The same, with the normal law's equation already solved for this overlap (Normal::solve).
-  [[gnu::always_inline]] ContactLoad evaluate_solved(ContactState& s, const ContactMotion& m, double solved, double dt,
-                                                     DissipationTally& tally) const {
-    const ContactConstants& c = s.constants;
-    const NormalResponse response = normal.respond_solved(solved, c);
+  // The same for a history and constants kept apart (the pair loop reads them from the pool's
+  // columns). Straight-line code with selects for the laws' limits, so that a loop over
+  // contacts vectorises.
+  [[gnu::always_inline]] ContactLoad evaluate(ContactHistory& s, const ContactConstants& c, const ContactMotion& m,
+                                              double dt, DissipationTally& tally) const {
+    const NormalResponse response = normal.respond(m.overlap, c);
     const Vec3 contact_velocity = m.velocity + cross(m.lever_i * m.spin_i + m.lever_j * m.spin_j, m.normal);
     const double approach_rate = dot(contact_velocity, m.normal);
     const double damping_force = damping.coefficient(response, c) * approach_rate;

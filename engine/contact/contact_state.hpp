@@ -6,10 +6,9 @@
 
 namespace aerobreak {
 
-// Everything one live contact remembers between steps. Contacts live in a pool, so their history
-// survives neighbour-list rebuilds untouched.
-struct ContactState {
-  ContactConstants constants;
+// What one live contact carries from step to step: the springs' history and the values of its
+// last evaluation. The laws update it (ContactModel::evaluate).
+struct ContactHistory {
   Vec3 tangential_stretch;     // Mindlin spring (eqs 11-14)
   Vec3 rolling_displacement;   // xi (eq 18)
   double twist_angle = 0.0;    // phi (eq 17)
@@ -19,6 +18,12 @@ struct ContactState {
   double elastic_force = 0.0;  // elastic normal force at the last evaluation
   double damping_force = 0.0;  // normal damping force at the last evaluation (for its work)
   double rolling_stiffness = 0.0;  // k_r at the last evaluation (eq 18)
+};
+
+// Everything one live contact remembers between steps. Contacts live in a pool, so their history
+// survives neighbour-list rebuilds untouched.
+struct ContactState : ContactHistory {
+  ContactConstants constants;
   std::uint32_t i = 0;         // particle
   std::uint32_t j = 0;         // second particle, or the wall index for a wall contact
   bool with_wall = false;

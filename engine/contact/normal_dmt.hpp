@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "engine/contact/contact_constants.hpp"
+#include "engine/core/fast_math.hpp"
 #include "engine/contact/normal_hertz.hpp"
 
 namespace aerobreak {
@@ -21,14 +22,11 @@ struct DmtNormal {
     c.equilibrium_radius = std::sqrt(c.radius * delta0);
   }
 
-  static double solve(double delta) { return delta; }
-  NormalResponse respond(double delta, const ContactConstants& c) const { return respond_solved(delta, c); }
-
-  NormalResponse respond_solved(double delta, const ContactConstants& c) const {
-    NormalResponse r = HertzNormal{}.respond_solved(delta, c);
+  [[gnu::always_inline]] NormalResponse respond(double delta, const ContactConstants& c) const {
+    NormalResponse r = HertzNormal{}.respond(delta, c);
     r.coulomb_load = r.force;  // the Hertz part, F_n + F_c
     r.force -= c.pull_off_force;
-    r.energy -= c.pull_off_force * std::max(0.0, delta);
+    r.energy -= c.pull_off_force * positive_part(delta);
     const double x = r.contact_radius / c.equilibrium_radius;
     r.radius_ratio_three_halves = x * std::sqrt(x);
     return r;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/contact/contact_constants.hpp"
+#include "engine/core/fast_math.hpp"
 
 namespace aerobreak {
 
@@ -19,11 +20,8 @@ struct HertzNormal {
     c.break_overlap = 0.0;
   }
 
-  static double solve(double delta) { return delta; }
-  NormalResponse respond(double delta, const ContactConstants& c) const { return respond_solved(delta, c); }
-
-  NormalResponse respond_solved(double delta, const ContactConstants& c) const {
-    const double overlap = std::max(0.0, delta);
+  [[gnu::always_inline]] NormalResponse respond(double delta, const ContactConstants& c) const {
+    const double overlap = positive_part(delta);
     NormalResponse r;
     r.force = c.hertz_coefficient * overlap * std::sqrt(overlap);
     r.contact_radius = std::sqrt(c.radius * overlap);

@@ -27,14 +27,14 @@ enum class JkrSeparation {
 // Returns y = sqrt(a/a0); jkr_radius_ratio gives x = a/a0 = y^2.
 [[gnu::always_inline]] inline double jkr_root_radius_ratio(double overlap_ratio) {
   const double d = overlap_ratio;
-  const double s = std::sqrt(std::max(0.0, 1.0 / 1296.0 + d * d * d / 27.0));
+  const double s = std::sqrt(positive_part(1.0 / 1296.0 + d * d * d / 27.0));
   const double t = 1.0 / 36.0 + s;
   const double inverse_u = inverse_cube_root(t);
   const double u = t * inverse_u * inverse_u;
   const double v = d * inverse_u * (1.0 / 3.0);
   const double w = std::sqrt(18.0 * (u * u + u * v + v * v));
   const double inverse_w = 1.0 / w;
-  const double inner = std::max(0.0, 2.0 * std::numbers::sqrt2 / 3.0 * w - 2.0 * inverse_w * inverse_w);
+  const double inner = positive_part(2.0 * std::numbers::sqrt2 / 3.0 * w - 2.0 * inverse_w * inverse_w);
   return 0.5 * (std::numbers::sqrt2 * inverse_w + std::sqrt(inner));
 }
 
@@ -69,16 +69,9 @@ struct JkrNormal {
     c.overlap_scale = 1.0 / a0_squared_over_r;
   }
 
-  // The pair loop solves eq 2 for a whole batch of contacts first (solve), then builds each
-  // response from its solution (respond_solved); respond does both for one contact.
-  [[gnu::always_inline]] static double solve(double scaled_overlap) { return jkr_root_radius_ratio(scaled_overlap); }
-
+  // Eq 2 solved in closed form for y = sqrt(a/a0), then eqs 1 and 5.
   [[gnu::always_inline]] NormalResponse respond(double delta, const ContactConstants& c) const {
-    return respond_solved(solve(delta * c.overlap_scale), c);
-  }
-
-  // y = sqrt(a/a0) from solve.
-  [[gnu::always_inline]] NormalResponse respond_solved(double y, const ContactConstants& c) const {
+    const double y = jkr_root_radius_ratio(delta * c.overlap_scale);
     const double a0 = c.equilibrium_radius;
     const double x = y * y;
     const double x_three_halves = x * y;
@@ -88,7 +81,7 @@ struct JkrNormal {
     r.contact_radius = a0 * x;
     r.radius_ratio_three_halves = x_three_halves;
     // eq 14: the friction limit is mu (F_n + 2 F_c)
-    r.coulomb_load = std::max(0.0, r.force + 2.0 * c.pull_off_force);
+    r.coulomb_load = positive_part(r.force + 2.0 * c.pull_off_force);
     r.energy = 4.0 * c.pull_off_force * a0 * a0 / c.radius * (energy_primitive(x, y) - kTouchPrimitive);
     return r;
   }

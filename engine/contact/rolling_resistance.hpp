@@ -17,13 +17,13 @@ struct NoRolling {
 // v_L = -R* (w_i - w_j) x n, rolling stiffness k_r = 4 F_c (a/a0)^(3/2), torque on i
 // M = k_r n x xi with |M| <= k_r xi_crit: xi is held at length xi_crit while the contact rolls on.
 // The spring energy is k_r |xi|^2 / (2 R*), so that M does the work of the spring exactly.
+// Without adhesion (F_c = 0) k_r = 0 and the law exerts nothing.
 struct RollingResistance {
   double critical_displacement = 0.0;  // xi_crit
 
   // previous_stiffness: k_r of the last step, replaced by this step's.
   [[gnu::always_inline]] Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin, const SpringContext& s,
               const ContactConstants& c, double& energy, DissipationTally& tally) const {
-    if (c.pull_off_force <= 0.0) return {};
     displacement = rotate_into_plane(displacement, s.normal);
     const double stiffness = 4.0 * c.pull_off_force * s.radius_ratio_three_halves;
     const double compliance = 0.5 / c.radius;
@@ -32,10 +32,9 @@ struct RollingResistance {
     const Vec3 increment = -c.radius * cross(relative_spin, s.normal) * s.dt;
     displacement += increment;
     const double length2 = norm2(displacement);
-    if (length2 > critical_displacement * critical_displacement) {
-      displacement *= critical_displacement / std::sqrt(length2);
-      tally.rolling += slip_dissipation(2.0 * compliance * stiffness, before, increment, displacement);
-    }
+    const bool slips = length2 > critical_displacement * critical_displacement;  // selects: see Mindlin
+    displacement *= slips ? critical_displacement / std::sqrt(length2) : 1.0;
+    tally.rolling += slips ? slip_dissipation(2.0 * compliance * stiffness, before, increment, displacement) : 0.0;
     energy += compliance * stiffness * norm2(displacement);
     previous_stiffness = stiffness;
     return stiffness * cross(s.normal, displacement);

@@ -9,8 +9,8 @@ namespace aerobreak {
   const Vec3 projected = stretch - dot(stretch, n) * n;
   const double before = norm2(stretch);
   const double after = norm2(projected);
-  if (after <= 0.0) return {};
-  return projected * std::sqrt(before / after);
+  // A select, not a branch: the pair loop evaluates several contacts per vector instruction.
+  return projected * (after > 0.0 ? std::sqrt(before / after) : 0.0);
 }
 
 // Energy a capped spring dissipates in one step: the work its force does along the stretch

@@ -24,16 +24,17 @@ struct TwistingResistance {
     const double a = s.contact_radius;
     const double stiffness = 4.0 * c.shear * a * a * a;
     const double a_prev = s.previous_radius;
-    tally.stiffness_work += 0.5 * (stiffness - 4.0 * c.shear * a_prev * a_prev * a_prev) * angle * angle;
+    // 0.5 (k_tw - k_tw,previous) phi^2 with a^3 - a_prev^3 factored: exactly zero at a constant radius.
+    tally.stiffness_work += 2.0 * c.shear * (a - a_prev) * (a * a + a * a_prev + a_prev * a_prev) * angle * angle;
     const double before = angle;
     const double increment = dot(relative_spin, s.normal) * s.dt;
     angle += increment;
     const double limit = 2.0 / 3.0 * friction * a * s.coulomb_load;
     const double trial = stiffness * std::fabs(angle);
-    if (trial > limit) {
-      angle = trial > 0.0 ? std::copysign(limit / stiffness, angle) : 0.0;
-      tally.twisting += slip_dissipation(stiffness, {before, 0.0, 0.0}, {increment, 0.0, 0.0}, {angle, 0.0, 0.0});
-    }
+    const bool slips = trial > limit;  // selects: see Mindlin
+    angle = slips ? (trial > 0.0 ? std::copysign(limit / stiffness, angle) : 0.0) : angle;
+    tally.twisting +=
+        slips ? slip_dissipation(stiffness, {before, 0.0, 0.0}, {increment, 0.0, 0.0}, {angle, 0.0, 0.0}) : 0.0;
     energy += 0.5 * stiffness * angle * angle;
     return -stiffness * angle * s.normal;
   }

@@ -40,12 +40,14 @@ double add_body_forces(Particles& p, const BodyForces& body, std::int64_t step, 
 
   double work = 0.0;
   const Langevin& l = body.langevin;
+  // At zero temperature only the drag acts (relaxation): no noise to draw.
+  const bool noisy = l.temperature > 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double diameter = 2.0 * p.radius[i];
     const double zeta = l.drag_per_diameter * diameter;
     const double zeta_spin = zeta * diameter * diameter / 3.0;
-    double g[6];
-    gaussians(l.seed, step, i, g);
+    double g[6] = {};
+    if (noisy) gaussians(l.seed, step, i, g);
     const double kick = std::sqrt(2.0 * zeta * l.temperature / dt);
     const double spin_kick = std::sqrt(2.0 * zeta_spin * l.temperature / dt);
     const Vec3 force = -zeta * p.velocity[i] + kick * Vec3{g[0], g[1], g[2]};

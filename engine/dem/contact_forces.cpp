@@ -12,6 +12,7 @@
 #include "engine/contact/rolling_resistance.hpp"
 #include "engine/contact/tangential_mindlin.hpp"
 #include "engine/contact/twisting_resistance.hpp"
+#include "engine/dem/contact_motion_columns.hpp"
 
 namespace aerobreak {
 namespace {
@@ -57,14 +58,15 @@ class ContactForcesFor final : public ContactForces {
         ++ledger.events.made;
         hand_over(local, -overlap, state.constants.radius, +1.0);
       }
-      ContactState& state = ledger.pool[slot];
-      if (overlap < -state.constants.break_overlap) {
+      if (overlap < -ledger.pool.constants(slot).break_overlap) {
         close(slot, overlap, dot(p.velocity[i], into_wall), dt, local);
         continue;
       }
+      ContactState state = ledger.pool.state(slot);
       const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
                                  p.radius[i] - overlap, 0.0};
       const ContactLoad load = model_.evaluate(state, motion, dt, tally);
+      ledger.pool.store(slot, state);
       deepest = std::max(deepest, overlap / state.constants.radius);
       p.force[i] += load.force_i;
       p.torque[i] += load.torque_i;
@@ -74,30 +76,36 @@ class ContactForcesFor final : public ContactForces {
   }
 
  private:
-  // Three passes: (1) geometry and bookkeeping (contacts form and break), collecting the live
-  // contacts; (2) the normal law's equation (eq 2 for JKR) for all of them, a tight loop whose
-  // independent solutions overlap in the processor instead of each waiting on the last;
-  // (3) the remaining laws and the force and torque sums.
+  // Three passes: (1) over the listed pairs, geometry and bookkeeping (contacts form and break),
+  // the motion of each live contact written to its slot; (2) over all slots, every law of every
+  // contact, which the compiler evaluates several contacts per vector instruction (the pool's
+  // columns and the motion are contiguous in slot order, and the laws are straight-line code);
+  // (3) over the pairs again, the loads of the live contacts added to the particles (a free
+  // slot, evaluated in (2) on whatever its columns held, is never read).
   // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
   // inlines: the open-space instantiation is the plain loop. Inlined into both callers, so that
   // each is compiled as the one loop it is.
   template <class Space>
-  [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs, const MaterialTable& materials,
-                          double dt, double formation_gap, ContactLedger ledger) const {
+  [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs,
+                                                 const MaterialTable& materials, double dt, double formation_gap,
+                                                 ContactLedger ledger) const {
+    DissipationTally tally;
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
+    record_motion(separation_of, p, pairs, materials, dt, formation_gap, local);
+    evaluate_slots(dt, ledger.pool);
+    apply_loads(p, pairs, ledger.pool, local);
+    ledger.tally += tally;
+  }
+
+  template <class Space>
+  [[gnu::always_inline]] void record_motion(const Space& separation_of, const Particles& p, PairList& pairs,
+                                            const MaterialTable& materials, double dt, double formation_gap,
+                                            ContactLedger& ledger) const {
     const Vec3* position = p.position.data();
     const Vec3* velocity = p.velocity.data();
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
-    Vec3* force = p.force.data();
-    Vec3* torque = p.torque.data();
     const std::size_t n = pairs.particles();
-    // A local tally: written through the ledger's reference it could alias the force arrays and
-    // would be reloaded and stored at every contact.
-    DissipationTally tally;
-    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
-    double deepest = ledger.events.deepest_overlap_ratio;
-
-    live_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -111,34 +119,92 @@ class ContactForcesFor final : public ContactForces {
           // A contact forms when the spheres overlap (delta > 0), or come within formation_gap.
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
-          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
+          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), ledger);
+          motion_.resize(ledger.pool.capacity());
         }
-        const ContactState& state = ledger.pool[slot];
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
-        const Vec3 normal = separation / distance;
-        if (overlap < -state.constants.break_overlap) {
-          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
+        const Vec3 normal = separation * (1.0 / distance);
+        if (overlap < -ledger.pool.constants(slot).break_overlap) {
+          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, ledger);
           continue;
         }
-        live_.push_back({normal, overlap, overlap * state.constants.overlap_scale, i, j, slot});
+        motion_.set(slot, {normal, overlap, velocity[i] - velocity[j], spin[i], spin[j], radius_i - 0.5 * overlap,
+                           radius[j] - 0.5 * overlap});
       }
     }
+  }
 
-    for (LiveContact& c : live_) c.solved = Model::normal_type::solve(c.solved);
-
-    for (const LiveContact& c : live_) {
-      ContactState& state = ledger.pool[c.slot];
-      const ContactMotion motion{c.normal, c.overlap, velocity[c.i] - velocity[c.j], spin[c.i], spin[c.j],
-                                 radius[c.i] - 0.5 * c.overlap, radius[c.j] - 0.5 * c.overlap};
-      const ContactLoad load = model_.evaluate_solved(state, motion, c.solved, dt, tally);
-      deepest = std::max(deepest, c.overlap / state.constants.radius);
-      force[c.i] += load.force_i;
-      force[c.j] -= load.force_i;
-      torque[c.i] += load.torque_i;
-      torque[c.j] += load.torque_j;
+  void evaluate_slots(double dt, ContactPool& pool) const {
+    const std::size_t slots = pool.capacity();
+    motion_.resize(slots);
+    const ContactConstantColumns& constants = pool.constant_columns;
+    double* stretch_x = pool.stretch_x.data();
+    double* stretch_y = pool.stretch_y.data();
+    double* stretch_z = pool.stretch_z.data();
+    double* rolling_x = pool.rolling_x.data();
+    double* rolling_y = pool.rolling_y.data();
+    double* rolling_z = pool.rolling_z.data();
+    double* twist = pool.twist.data();
+    double* contact_radius = pool.contact_radius.data();
+    double* stored_energy = pool.stored_energy.data();
+    double* overlap = pool.overlap.data();
+    double* elastic_force = pool.elastic_force.data();
+    double* damping_force = pool.damping_force.data();
+    double* rolling_stiffness = pool.rolling_stiffness.data();
+    ContactMotionColumns& m = motion_;
+    // Every column is indexed by the slot alone: no iteration depends on another.
+#pragma GCC ivdep
+    for (std::size_t s = 0; s < slots; ++s) {
+      const ContactConstants c = constants.get(s);
+      ContactHistory state;
+      state.tangential_stretch = {stretch_x[s], stretch_y[s], stretch_z[s]};
+      state.rolling_displacement = {rolling_x[s], rolling_y[s], rolling_z[s]};
+      state.twist_angle = twist[s];
+      state.contact_radius = contact_radius[s];
+      state.damping_force = damping_force[s];
+      state.rolling_stiffness = rolling_stiffness[s];
+      DissipationTally tally;
+      const ContactLoad load = model_.evaluate(state, c, m.get(s), dt, tally);
+      stretch_x[s] = state.tangential_stretch.x;
+      stretch_y[s] = state.tangential_stretch.y;
+      stretch_z[s] = state.tangential_stretch.z;
+      rolling_x[s] = state.rolling_displacement.x;
+      rolling_y[s] = state.rolling_displacement.y;
+      rolling_z[s] = state.rolling_displacement.z;
+      twist[s] = state.twist_angle;
+      contact_radius[s] = state.contact_radius;
+      stored_energy[s] = state.stored_energy;
+      overlap[s] = state.overlap;
+      elastic_force[s] = state.elastic_force;
+      damping_force[s] = state.damping_force;
+      rolling_stiffness[s] = state.rolling_stiffness;
+      m.set_result(s, load, tally);
     }
-    ledger.tally += tally;
+  }
+
+  // The loads of the live contacts added to their particles, their dissipation to the tally, in
+  // the order of the pairs (not of the slots, which depends on when contacts formed and the list
+  // was rebuilt): the sums, to the last bit, do not depend on the skin.
+  void apply_loads(Particles& p, const PairList& pairs, const ContactPool& pool, ContactLedger& ledger) const {
+    Vec3* force = p.force.data();
+    Vec3* torque = p.torque.data();
+    const double* reduced_radius = pool.constant_columns.radius.data();
+    double deepest = ledger.events.deepest_overlap_ratio;
+    const std::size_t n = pairs.particles();
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
+        const std::int32_t s = pairs.contact[k];
+        if (s < 0) continue;
+        const std::uint32_t j = pairs.neighbor[k];
+        const ContactLoad load = motion_.load(s);
+        force[i] += load.force_i;
+        force[j] -= load.force_i;
+        torque[i] += load.torque_i;
+        torque[j] += load.torque_j;
+        ledger.tally += motion_.dissipation(s);
+        deepest = std::max(deepest, motion_.overlap[s] / reduced_radius[s]);
+      }
     ledger.events.deepest_overlap_ratio = deepest;
   }
 
@@ -158,7 +224,7 @@ class ContactForcesFor final : public ContactForces {
   // The energy still stored in a contact when it lets go is lost to the system (for JKR, the
   // work of the loading/unloading hysteresis).
   static void close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) {
-    const ContactState& state = ledger.pool[slot];
+    const ContactState state = ledger.pool.state(slot);
     book_release(state, overlap, approach_rate, dt, ledger.tally);
     hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
@@ -171,16 +237,8 @@ class ContactForcesFor final : public ContactForces {
     if (ledger.van_der_waals) ledger.tally.van_der_waals_handover += sign * ledger.van_der_waals->at_gap(gap, reduced_radius).energy;
   }
 
-  struct LiveContact {
-    Vec3 normal;
-    double overlap;
-    double solved;  // the scaled overlap, then the normal law's solution for it
-    std::uint32_t i, j;
-    std::int32_t slot;
-  };
-
   Model model_;
-  mutable std::vector<LiveContact> live_;  // scratch of add_pair_forces, kept to reuse its memory
+  mutable ContactMotionColumns motion_;  // scratch of add_pair_forces, by pool slot, kept to reuse its memory
 };
 
 using NormalChoice = std::variant<JkrNormal, DmtNormal, HertzNormal>;

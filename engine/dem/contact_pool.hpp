@@ -3,22 +3,32 @@
 #include <vector>
 
 #include "engine/contact/contact_state.hpp"
+#include "engine/dem/contact_constant_columns.hpp"
 
 namespace aerobreak {
 
-// Storage of the live contacts. Slots are reused; a slot's index is stable while its contact
-// lives, so neighbour lists and wall tables refer to contacts by index.
+// Storage of the live contacts of one kind (particle-particle or particle-wall), one column per
+// field of ContactState (structure of arrays): the pair force loop streams the columns it needs
+// in slot order, several contacts per vector instruction. Slots are reused; a slot's index is
+// stable while its contact lives (neighbour lists and wall tables refer to contacts by slot)
+// until renumber() packs the live contacts into the order the caller gives.
 class ContactPool {
  public:
+  explicit ContactPool(bool with_wall) : with_wall_(with_wall) {}
+
   std::int32_t open(const ContactState& state) {
+    std::int32_t slot;
     if (free_.empty()) {
-      states_.push_back(state);
-      live_.push_back(1);
-      return static_cast<std::int32_t>(states_.size() - 1);
+      slot = static_cast<std::int32_t>(live_.size());
+      grow();
+    } else {
+      slot = free_.back();
+      free_.pop_back();
     }
-    const std::int32_t slot = free_.back();
-    free_.pop_back();
-    states_[slot] = state;
+    store(slot, state);
+    i_[slot] = state.i;
+    j_[slot] = state.j;
+    constant_columns.set(slot, state.constants);
     live_[slot] = 1;
     return slot;
   }
@@ -27,22 +37,91 @@ class ContactPool {
     free_.push_back(slot);
   }
 
-  ContactState& operator[](std::int32_t slot) { return states_[slot]; }
-  const ContactState& operator[](std::int32_t slot) const { return states_[slot]; }
+  // The contact in one piece (a copy), and its history written back.
+  ContactState state(std::int32_t slot) const {
+    ContactState s;
+    s.constants = constant_columns.get(slot);
+    s.tangential_stretch = {stretch_x[slot], stretch_y[slot], stretch_z[slot]};
+    s.rolling_displacement = {rolling_x[slot], rolling_y[slot], rolling_z[slot]};
+    s.twist_angle = twist[slot];
+    s.contact_radius = contact_radius[slot];
+    s.stored_energy = stored_energy[slot];
+    s.overlap = overlap[slot];
+    s.elastic_force = elastic_force[slot];
+    s.damping_force = damping_force[slot];
+    s.rolling_stiffness = rolling_stiffness[slot];
+    s.i = i_[slot];
+    s.j = j_[slot];
+    s.with_wall = with_wall_;
+    return s;
+  }
+  void store(std::int32_t slot, const ContactState& s) {
+    stretch_x[slot] = s.tangential_stretch.x;
+    stretch_y[slot] = s.tangential_stretch.y;
+    stretch_z[slot] = s.tangential_stretch.z;
+    rolling_x[slot] = s.rolling_displacement.x;
+    rolling_y[slot] = s.rolling_displacement.y;
+    rolling_z[slot] = s.rolling_displacement.z;
+    twist[slot] = s.twist_angle;
+    contact_radius[slot] = s.contact_radius;
+    stored_energy[slot] = s.stored_energy;
+    overlap[slot] = s.overlap;
+    elastic_force[slot] = s.elastic_force;
+    damping_force[slot] = s.damping_force;
+    rolling_stiffness[slot] = s.rolling_stiffness;
+  }
+
+  ContactConstants constants(std::int32_t slot) const { return constant_columns.get(slot); }
+  std::uint32_t i(std::size_t slot) const { return i_[slot]; }
+  std::uint32_t j(std::size_t slot) const { return j_[slot]; }
   bool live(std::size_t slot) const { return live_[slot] != 0; }
-  std::size_t capacity() const { return states_.size(); }
-  std::size_t size() const { return states_.size() - free_.size(); }
+  std::size_t capacity() const { return live_.size(); }
+  std::size_t size() const { return live_.size() - free_.size(); }
+
+  // Packs the live contacts into slots 0 .. size()-1 in the order in which `references` names
+  // them, and rewrites `references` (slots, -1 for none) to match. Every live contact must be
+  // named exactly once: the pair force loop then meets the contacts in the neighbour list's
+  // order, without holes.
+  void renumber(std::vector<std::int32_t>& references);
 
   template <class Visit>
   void for_each(Visit&& visit) const {
-    for (std::size_t s = 0; s < states_.size(); ++s)
-      if (live_[s]) visit(states_[s]);
+    for (std::size_t s = 0; s < live_.size(); ++s)
+      if (live_[s]) visit(state(static_cast<std::int32_t>(s)));
+  }
+
+  ContactConstantColumns constant_columns;
+  // History columns (eqs 11-18) and the values of the last evaluation, indexed by slot.
+  std::vector<double> stretch_x, stretch_y, stretch_z;     // Mindlin spring (eqs 11-14)
+  std::vector<double> rolling_x, rolling_y, rolling_z;     // xi (eq 18)
+  std::vector<double> twist;                               // phi (eq 17)
+  std::vector<double> contact_radius, stored_energy, overlap, elastic_force, damping_force, rolling_stiffness;
+
+ private:
+  void grow();
+  template <class Column>
+  static void permute(Column& column, const std::vector<std::int32_t>& order);
+
+  bool with_wall_;
+  std::vector<std::uint32_t> i_, j_;
+  std::vector<std::uint8_t> live_;
+  std::vector<std::int32_t> free_;
+};
+
+// Every live contact of a run, particle-particle and particle-wall.
+class ContactsView {
+ public:
+  ContactsView(const ContactPool& pairs, const ContactPool& walls) : pairs_(pairs), walls_(walls) {}
+  std::size_t size() const { return pairs_.size() + walls_.size(); }
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    pairs_.for_each(visit);
+    walls_.for_each(visit);
   }
 
  private:
-  std::vector<ContactState> states_;
-  std::vector<std::uint8_t> live_;
-  std::vector<std::int32_t> free_;
+  const ContactPool& pairs_;
+  const ContactPool& walls_;
 };
 
 }  // namespace aerobreak

@@ -28,12 +28,11 @@ void VerletNeighborList::rebuild(const Particles& particles, const ContactPool& 
   // Hand every live particle-particle contact its slot in the new list (rows are sorted by j).
   for (std::size_t slot = 0; slot < pool.capacity(); ++slot) {
     if (!pool.live(slot)) continue;
-    const ContactState& c = pool[static_cast<std::int32_t>(slot)];
-    if (c.with_wall) continue;
-    const auto first = pairs_.neighbor.begin() + pairs_.row_start[c.i];
-    const auto last = pairs_.neighbor.begin() + pairs_.row_start[c.i + 1];
-    const auto at = std::lower_bound(first, last, c.j);
-    if (at != last && *at == c.j)
+    const std::uint32_t i = pool.i(slot), j = pool.j(slot);
+    const auto first = pairs_.neighbor.begin() + pairs_.row_start[i];
+    const auto last = pairs_.neighbor.begin() + pairs_.row_start[i + 1];
+    const auto at = std::lower_bound(first, last, j);
+    if (at != last && *at == j)
       pairs_.contact[at - pairs_.neighbor.begin()] = static_cast<std::int32_t>(slot);
     else
       lost.push_back(static_cast<std::int32_t>(slot));

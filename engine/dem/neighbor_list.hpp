@@ -11,7 +11,8 @@ namespace aerobreak {
 
 // Verlet list with a skin: pairs within R_i + R_j + margin + skin are listed, and the list is
 // rebuilt only when some particle has moved more than skin/2 since the last build, so no pair
-// can come within `margin` unlisted. Live contacts keep their pool slots across rebuilds.
+// can come within `margin` unlisted. Live contacts keep their pool slots across rebuilds. `pool`
+// holds the particle-particle contacts only.
 class VerletNeighborList {
  public:
   VerletNeighborList(std::unique_ptr<NeighborSearch> search, double margin, double skin);

@@ -185,19 +185,21 @@ void Simulation::compute_forces(double formation_gap) {
   if (neighbors_->stale(particles_)) {
     // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
     if (settings_.periodic) wrap_positions();
-    neighbors_->rebuild(particles_, pool_, lost);
+    neighbors_->rebuild(particles_, pair_pool_, lost);
+    close_lost_contacts(lost);
+    // The force loop then walks the contacts' columns in the order of the pairs, without holes.
+    pair_pool_.renumber(neighbors_->pairs().contact);
   }
-  close_lost_contacts(lost);
   const VanDerWaals* long_range = spec_.van_der_waals ? &spec_.hamaker : nullptr;
   if (settings_.periodic)
     pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
-                                           formation_gap, {pool_, tally_, pair_events_, long_range});
+                                           formation_gap, {pair_pool_, tally_, pair_events_, long_range});
   else
     pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
-                                  {pool_, tally_, pair_events_, long_range});
+                                  {pair_pool_, tally_, pair_events_, long_range});
   for (std::size_t w = 0; w < walls_.size(); ++w)
     wall_forces_[w]->add_wall_forces(particles_, walls_[w], static_cast<std::uint32_t>(w), wall_slots_[w], materials_,
-                                     dt_, {pool_, tally_, wall_events_, walls_[w].adhesive ? long_range : nullptr});
+                                     dt_, {wall_pool_, tally_, wall_events_, walls_[w].adhesive ? long_range : nullptr});
   if (spec_.van_der_waals) {
     if (settings_.periodic)
       add_van_der_waals(PeriodicSpace(*settings_.periodic));
@@ -227,14 +229,14 @@ Vec3 Simulation::separation(std::size_t i, std::size_t j) const {
 
 void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
   for (std::int32_t slot : lost) {
-    const ContactState& c = pool_[slot];
+    const ContactState c = pair_pool_.state(slot);
     const Vec3 separation = this->separation(c.i, c.j);
     const double distance = norm(separation);
     const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
     const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
     book_release(c, -gap, approach, dt_, tally_);
     if (spec_.van_der_waals) tally_.van_der_waals_handover -= spec_.hamaker.at_gap(gap, c.constants.radius).energy;
-    pool_.close(slot);
+    pair_pool_.close(slot);
     ++pair_events_.broken;
   }
 }
@@ -277,7 +279,9 @@ EnergyBudget Simulation::energy() const {
     e.translational_kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]);
     e.rotational_kinetic += 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
   }
-  pool_.for_each([&](const ContactState& c) { e.contact_elastic += c.stored_energy; });
+  for (const ContactPool* pool : {&pair_pool_, &wall_pool_})
+    for (std::size_t s = 0; s < pool->capacity(); ++s)
+      if (pool->live(s)) e.contact_elastic += pool->stored_energy[s];
   e.van_der_waals = van_der_waals_energy_;
   e.gravitational = gravitational_energy(p, settings_.body.gravity);
   e.dissipation = tally_;

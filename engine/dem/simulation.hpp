@@ -56,7 +56,7 @@ class Simulation {
   std::int64_t step_count() const { return steps_; }
 
   EnergyBudget energy() const;
-  const ContactPool& contacts() const { return pool_; }
+  ContactsView contacts() const { return {pair_pool_, wall_pool_}; }
   const ContactEvents& pair_events() const { return pair_events_; }
   const ContactEvents& wall_events() const { return wall_events_; }
   std::uint64_t neighbor_builds() const { return neighbors_->builds(); }
@@ -91,7 +91,8 @@ class Simulation {
   std::vector<std::unique_ptr<ContactForces>> wall_forces_;
   std::vector<std::vector<std::int32_t>> wall_slots_;
   std::unique_ptr<VerletNeighborList> neighbors_;
-  ContactPool pool_;
+  ContactPool pair_pool_{false};
+  ContactPool wall_pool_{true};
   ContactEvents pair_events_;
   ContactEvents wall_events_;
   DissipationTally tally_;
