@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/contact/damping.hpp"
 #include "engine/dem/simulation.hpp"
 
 namespace aerobreak {
@@ -40,9 +41,13 @@ RelaxationResult relax_cluster(Particles particles, const std::vector<Material>&
   const double stiffness = c.equilibrium_radius > 0.0
                                ? 3.6 * c.pull_off_force * c.radius / (c.equilibrium_radius * c.equilibrium_radius)
                                : c.hertz_coefficient * std::sqrt(c.radius);
-  const double critical = 2.0 * std::sqrt(stiffness * c.mass);
-  spec.damping = DampingLaw::viscoelastic;
-  spec.dissipative_time = critical / (2.0 * c.modulus * std::max(c.equilibrium_radius, 1e-3 * c.radius));
+  // Tsuji damping (eq 9) at the critical value about equilibrium for every contact, small or
+  // large (tsuji_alpha_for_jkr_damping_ratio; for DMT the same alpha is 0.77 of critical).
+  // Visco-elastic damping with one A, critical for the largest spheres, is over-critical by
+  // (R*_large / R*)^(7/6) for smaller ones, and beyond the explicit stability limit
+  // (eta dt/m* > 2) for the smallest ones of a strongly polydisperse cluster.
+  spec.damping = DampingLaw::tsuji;
+  spec.restitution = tsuji_restitution(tsuji_alpha_for_jkr_damping_ratio(1.0));
 
   for (auto& v : particles.velocity) v = {};
   for (auto& w : particles.angular_velocity) w = {};

@@ -27,9 +27,10 @@ struct RelaxationResult {
 
 // Brings a cluster built at touching distance to mechanical equilibrium (DESIGN.md "Clusters"):
 // contacts at their equilibrium overlap, internal kinetic energy ~0. It runs the model's normal
-// law only (so no tangential, rolling or twisting spring is left stretched), with near-critical
-// visco-elastic damping of the contacts and a drag on every particle, which also stills the
-// floppy modes of the open fractal network that contact damping cannot reach.
+// law only (so no tangential, rolling or twisting spring is left stretched), with Tsuji damping
+// that is critical about equilibrium for every contact whatever its size (so polydisperse clusters
+// relax too), and a drag on every particle, which also stills the floppy modes of the open
+// fractal network that contact damping cannot reach. docs/MODEL.md section 11.1.
 RelaxationResult relax_cluster(Particles particles, const std::vector<Material>& materials,
                                const ContactModelSpec& model, const RelaxationSettings& settings = {});
 
