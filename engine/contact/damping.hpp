@@ -46,4 +46,17 @@ inline double tsuji_alpha(double restitution) {
   return std::sqrt(5.0) * -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
 }
 
+// The inverse of tsuji_alpha: e = exp(-alpha pi / sqrt(5 - alpha^2)), for 0 <= alpha < sqrt(5).
+inline double tsuji_restitution(double alpha) {
+  return std::exp(-alpha * std::numbers::pi / std::sqrt(5.0 - alpha * alpha));
+}
+
+// alpha that makes Tsuji damping the share `ratio` of the critical damping 2 sqrt(k m*) of a JKR
+// contact about its equilibrium a = a0, for every R*, m* and E* alike. There eq 9 at the Hertz
+// overlap a0^2/R* gives eta = alpha sqrt((4/3) E* a0 m*), and the stiffness is
+// k = dF/d(delta) = 3.6 F_c R*/a0^2 = 1.2 E* a0 (eqs 2, 4, 5), so eta / (2 sqrt(k m*)) = alpha / sqrt(3.6).
+// (Visco-elastic damping, eta = 2 A E* a, has no such constant share: with one A it grows
+// relative to critical as R*^(-7/6).)
+inline double tsuji_alpha_for_jkr_damping_ratio(double ratio) { return std::sqrt(3.6) * ratio; }
+
 }  // namespace aerobreak

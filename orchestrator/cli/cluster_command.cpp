@@ -245,7 +245,7 @@ void require_intact(const RelaxationResult& relaxation, const std::string& name,
   if (!relaxation.converged)
     throw std::runtime_error(which + ": relaxation did not converge in " + std::to_string(relaxation.steps) +
                              " steps (largest net force " + format_number(relaxation.largest_force) +
-                             " F_c); not stored");
+                             " times the primary's own F_c); not stored");
   if (relaxation.contacts_broken > 0)
     throw std::runtime_error(which + ": relaxation broke " + std::to_string(relaxation.contacts_broken) +
                              " contacts (the cluster came apart); not stored");

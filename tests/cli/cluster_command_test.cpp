@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdio>
@@ -91,6 +92,41 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
   const CommandOutput one = run_aerobreak_stdout("cluster analyze --json --name bcca-N32-seed5-1 " + library);
   REQUIRE(one.exit_code == 0);
   CHECK(nlohmann::json::parse(one.text).at("clusters").size() == 1);
+}
+
+// Strongly polydisperse primaries (diameter ratio ~10 within 64 of them) relax too (MODEL.md
+// 11.1: Tsuji damping critical for every contact size). Before that fix the relaxation of the
+// first of them broke 4 contacts and the command refused to store it.
+TEST_CASE("cluster generate stores relaxed BCCA clusters of lognormal primaries with gsd 1.8") {
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
+  const std::string library = dir.file("polydisperse.h5");
+  const CommandOutput generated =
+      run_aerobreak("cluster generate --primaries 64 --gsd 1.8 --count 2 --seed 3 --output " + library);
+  INFO(generated.text);
+  REQUIRE(generated.exit_code == 0);
+  CHECK(generated.text.find("stored 2 clusters in " + library) != std::string::npos);
+
+  const nlohmann::json parsed = nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json " + library).text);
+  REQUIRE(parsed.at("clusters").size() == 2);
+  for (const auto& cluster : parsed.at("clusters")) {
+    CHECK(cluster.at("primary_count") == 64);
+    CHECK(cluster.at("relaxed") == true);
+    CHECK(cluster.at("component_count") == 1);
+    CHECK(cluster.at("contact_count").get<int>() >= 63);
+  }
+
+  const std::string xyz = dir.file("first.xyz");
+  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name bcca-N64-seed3-0").exit_code == 0);
+  std::vector<double> radii;
+  for (const std::string& line : lines_of(file_bytes(xyz))) {
+    if (line[0] == '#') continue;
+    std::istringstream row(line);
+    double x, y, z, radius;
+    REQUIRE(row >> x >> y >> z >> radius);
+    radii.push_back(radius);
+  }
+  REQUIRE(radii.size() == 64);
+  CHECK(*std::max_element(radii.begin(), radii.end()) > 4.0 * *std::min_element(radii.begin(), radii.end()));
 }
 
 TEST_CASE("cluster analyze fits Df and kf over a library of several sizes") {

@@ -1,15 +1,18 @@
 // Normal damping laws (report eqs 8 and 9) with a plain Hertz normal law, checked through the
 // coefficient of restitution e of a unit sphere hitting a wall head-on, and through the energy
-// the damping channel of the budget records.
+// the damping channel of the budget records; and their share of critical damping about JKR
+// equilibrium for contacts of different sizes (what the relaxation of polydisperse clusters needs).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "engine/contact/damping.hpp"
 #include "engine/contact/normal_hertz.hpp"
+#include "engine/contact/normal_jkr.hpp"
 #include "law_support.hpp"
 
 using namespace aerobreak;
@@ -54,6 +57,18 @@ double continuous_tsuji_restitution(double alpha, double h) {
     x = x_next;
     v = v_next;
   }
+}
+
+// Share of critical damping, eta / (2 sqrt(k m*)), about JKR equilibrium (delta = a0^2/(3 R*),
+// where a = a0, eqs 2, 4) for a damping law; k = dF/d(delta) there by central differences of the
+// JKR force.
+template <class Damping>
+double jkr_equilibrium_damping_ratio(const Damping& damping, const ContactConstants& c) {
+  const JkrNormal jkr;
+  const double equilibrium = c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius);
+  const double h = 1e-5 * equilibrium;
+  const double stiffness = (jkr.respond(equilibrium + h, c).force - jkr.respond(equilibrium - h, c).force) / (2.0 * h);
+  return damping.coefficient(jkr.respond(equilibrium, c), c) / (2.0 * std::sqrt(stiffness * c.mass));
 }
 
 // Slope of the least-squares line through (ln x, ln y).
@@ -189,4 +204,50 @@ TEST_CASE("Tsuji damping: the damping channel equals the kinetic energy lost in 
   CHECK(damping_work == Approx(lost).epsilon(2e-3));
   CHECK(e.dissipation.damping == Approx(lost).epsilon(1e-3));
   CHECK(e.balance() == Approx(kinetic_before).epsilon(1e-3));
+}
+
+TEST_CASE("tsuji_restitution is the inverse of tsuji_alpha") {
+  for (double e : {1e-3, 6.5e-3, 0.1, 0.5, 0.9, 1.0}) {
+    INFO("e = " << e);
+    CHECK(tsuji_restitution(tsuji_alpha(e)) == Approx(e).epsilon(1e-12));
+  }
+  for (double alpha : {0.0, 0.5, 1.0, 1.897, 2.2}) {
+    INFO("alpha = " << alpha);
+    CHECK(tsuji_alpha(tsuji_restitution(alpha)) == Approx(alpha).epsilon(1e-12).margin(1e-15));
+  }
+}
+
+// Eq 9 at the Hertz overlap a0^2/R* against the stiffness about equilibrium, 1.2 E* a0 (eqs 2, 4,
+// 5): the share is alpha / sqrt(3.6) whatever R*, m* and E*. The stiffness here is measured from
+// the JKR force, not taken from that formula. Central differences: error ~1e-10.
+TEST_CASE("Tsuji damping is the same share of critical damping about JKR equilibrium for every contact size") {
+  const Material soft = reduced_material(0.001, 0.3);
+  const Material stiff = reduced_material(0.01, 0.2);
+  for (double ratio : {0.3, 1.0}) {
+    const TsujiDamping tsuji{tsuji_alpha_for_jkr_damping_ratio(ratio)};
+    for (const auto& [ri, rj] : {std::pair{0.05, 0.05}, std::pair{0.05, 2.5}, std::pair{0.5, 0.5}, std::pair{2.5, 2.5}})
+      for (const auto& [mi, mj] : {std::pair{soft, soft}, std::pair{soft, stiff}}) {
+        INFO("share " << ratio << ", radii " << ri << " and " << rj);
+        const ContactConstants c = contact_constants(JkrNormal{}, mi, mj, ri, rj);
+        CHECK(jkr_equilibrium_damping_ratio(tsuji, c) == Approx(ratio).epsilon(1e-6));
+      }
+  }
+}
+
+// Why relax_cluster uses Tsuji damping: eta = 2 A E* a0 (eq 8) against 2 sqrt(1.2 E* a0 m*) with
+// a0 ~ R*^(2/3) and m* ~ R*^3 (like spheres of one density) makes the share grow as R*^(-7/6).
+// Critical for two unit spheres, it is 20^(7/6) = 33 x critical for spheres of a twentieth of the
+// diameter, whose explicit integration is then unstable even at 50 steps per period of their own
+// contact: eta dt/m* = 4 pi x 33 / 50 = 8 > 2.
+TEST_CASE("visco-elastic damping with one constant A is far over-critical for small contacts") {
+  const Material material = reduced_material(0.001, 0.3);
+  const ContactConstants unit = contact_constants(JkrNormal{}, material, material);
+  const double critical_a = 1.0 / jkr_equilibrium_damping_ratio(ViscoElasticDamping{1.0}, unit);
+  const ViscoElasticDamping damping{critical_a};
+  CHECK(jkr_equilibrium_damping_ratio(damping, unit) == Approx(1.0).epsilon(1e-6));
+  for (double radius : {0.25, 0.1, 0.025}) {
+    INFO("radius " << radius);
+    const ContactConstants small = contact_constants(JkrNormal{}, material, material, radius, radius);
+    CHECK(jkr_equilibrium_damping_ratio(damping, small) == Approx(std::pow(0.5 / radius, 7.0 / 6.0)).epsilon(1e-6));
+  }
 }
