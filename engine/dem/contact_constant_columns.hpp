@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/dem/column_permutation.hpp"
 #include "engine/contact/contact_constants.hpp"
 
 namespace aerobreak {
@@ -17,12 +18,7 @@ class ContactConstantColumns {
   }
   // Moves slot order[k] to slot k.
   void permute(const std::vector<std::int32_t>& order) {
-    for (auto* column : columns()) {
-      std::vector<double> packed;
-      packed.reserve(order.size());
-      for (std::int32_t slot : order) packed.push_back((*column)[slot]);
-      *column = std::move(packed);
-    }
+    for (auto* column : columns()) permute_column(*column, order);
   }
 
   [[gnu::always_inline]] ContactConstants get(std::size_t s) const {

@@ -12,7 +12,7 @@
 #include "engine/contact/rolling_resistance.hpp"
 #include "engine/contact/tangential_mindlin.hpp"
 #include "engine/contact/twisting_resistance.hpp"
-#include "engine/dem/contact_motion_columns.hpp"
+#include "engine/dem/contact_block.hpp"
 
 namespace aerobreak {
 namespace {
@@ -76,12 +76,12 @@ class ContactForcesFor final : public ContactForces {
   }
 
  private:
-  // Three passes: (1) over the listed pairs, geometry and bookkeeping (contacts form and break),
-  // the motion of each live contact written to its slot; (2) over all slots, every law of every
-  // contact, which the compiler evaluates several contacts per vector instruction (the pool's
-  // columns and the motion are contiguous in slot order, and the laws are straight-line code);
-  // (3) over the pairs again, the loads of the live contacts added to the particles (a free
-  // slot, evaluated in (2) on whatever its columns held, is never read).
+  // Over the listed pairs, in blocks of ContactBlock::capacity live contacts: (1) geometry and
+  // bookkeeping (contacts form and break), each live contact's motion written to the block;
+  // (2) every law of every contact in the block, which the compiler evaluates several contacts
+  // per vector instruction (the columns are contiguous and the laws straight-line code); (3) the
+  // loads added to the particles in the order of the pairs, so that the sums, to the last bit,
+  // do not depend on the skin or on when the list was rebuilt.
   // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
   // inlines: the open-space instantiation is the plain loop. Inlined into both callers, so that
   // each is compiled as the one loop it is.
@@ -89,22 +89,15 @@ class ContactForcesFor final : public ContactForces {
   [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs,
                                                  const MaterialTable& materials, double dt, double formation_gap,
                                                  ContactLedger ledger) const {
-    DissipationTally tally;
-    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
-    record_motion(separation_of, p, pairs, materials, dt, formation_gap, local);
-    evaluate_slots(dt, ledger.pool);
-    apply_loads(p, pairs, ledger.pool, local);
-    ledger.tally += tally;
-  }
-
-  template <class Space>
-  [[gnu::always_inline]] void record_motion(const Space& separation_of, const Particles& p, PairList& pairs,
-                                            const MaterialTable& materials, double dt, double formation_gap,
-                                            ContactLedger& ledger) const {
     const Vec3* position = p.position.data();
     const Vec3* velocity = p.velocity.data();
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
+    ContactPool& pool = ledger.pool;
+    DissipationTally tally;
+    ContactLedger local{pool, tally, ledger.events, ledger.van_der_waals};
+    ContactBlock& block = block_;
+    block.clear();
     const std::size_t n = pairs.particles();
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3 position_i = position[i];
@@ -119,93 +112,75 @@ class ContactForcesFor final : public ContactForces {
           // A contact forms when the spheres overlap (delta > 0), or come within formation_gap.
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
-          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), ledger);
-          motion_.resize(ledger.pool.capacity());
+          slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
         }
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
         const Vec3 normal = separation * (1.0 / distance);
-        if (overlap < -ledger.pool.constants(slot).break_overlap) {
-          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, ledger);
+        if (overlap < -pool.constant_columns.break_overlap[slot]) {
+          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
           continue;
         }
-        motion_.set(slot, {normal, overlap, velocity[i] - velocity[j], spin[i], spin[j], radius_i - 0.5 * overlap,
-                           radius[j] - 0.5 * overlap});
+        block.add(slot, i, j,
+                  {normal, overlap, velocity[i] - velocity[j], spin[i], spin[j], radius_i - 0.5 * overlap,
+                   radius[j] - 0.5 * overlap});
+        if (block.full()) finish_block(block, p, dt, local);
       }
     }
+    finish_block(block, p, dt, local);
+    ledger.tally += tally;
   }
 
-  void evaluate_slots(double dt, ContactPool& pool) const {
-    const std::size_t slots = pool.capacity();
-    motion_.resize(slots);
-    const ContactConstantColumns& constants = pool.constant_columns;
-    double* stretch_x = pool.stretch_x.data();
-    double* stretch_y = pool.stretch_y.data();
-    double* stretch_z = pool.stretch_z.data();
-    double* rolling_x = pool.rolling_x.data();
-    double* rolling_y = pool.rolling_y.data();
-    double* rolling_z = pool.rolling_z.data();
-    double* twist = pool.twist.data();
-    double* contact_radius = pool.contact_radius.data();
-    double* stored_energy = pool.stored_energy.data();
-    double* overlap = pool.overlap.data();
-    double* elastic_force = pool.elastic_force.data();
-    double* damping_force = pool.damping_force.data();
-    double* rolling_stiffness = pool.rolling_stiffness.data();
-    ContactMotionColumns& m = motion_;
-    // Every column is indexed by the slot alone: no iteration depends on another.
-#pragma GCC ivdep
-    for (std::size_t s = 0; s < slots; ++s) {
-      const ContactConstants c = constants.get(s);
-      ContactHistory state;
-      state.tangential_stretch = {stretch_x[s], stretch_y[s], stretch_z[s]};
-      state.rolling_displacement = {rolling_x[s], rolling_y[s], rolling_z[s]};
-      state.twist_angle = twist[s];
-      state.contact_radius = contact_radius[s];
-      state.damping_force = damping_force[s];
-      state.rolling_stiffness = rolling_stiffness[s];
-      DissipationTally tally;
-      const ContactLoad load = model_.evaluate(state, c, m.get(s), dt, tally);
-      stretch_x[s] = state.tangential_stretch.x;
-      stretch_y[s] = state.tangential_stretch.y;
-      stretch_z[s] = state.tangential_stretch.z;
-      rolling_x[s] = state.rolling_displacement.x;
-      rolling_y[s] = state.rolling_displacement.y;
-      rolling_z[s] = state.rolling_displacement.z;
-      twist[s] = state.twist_angle;
-      contact_radius[s] = state.contact_radius;
-      stored_energy[s] = state.stored_energy;
-      overlap[s] = state.overlap;
-      elastic_force[s] = state.elastic_force;
-      damping_force[s] = state.damping_force;
-      rolling_stiffness[s] = state.rolling_stiffness;
-      m.set_result(s, load, tally);
+  void finish_block(ContactBlock& block, Particles& p, double dt, ContactLedger& ledger) const {
+    ContactPool& pool = ledger.pool;
+    const std::size_t size = block.size();
+    if (size == 0) return;
+    // Slots follow the pairs since the last rebuild, so a block's contacts usually hold
+    // consecutive slots: then the laws work on the pool's columns in place. Otherwise (a contact
+    // formed or broke since) they work on copies in the block.
+    const std::int32_t first_slot = block.slot[0];
+    bool consecutive = true;
+    for (std::size_t q = 1; q < size; ++q) consecutive = consecutive && block.slot[q] == first_slot + std::int32_t(q);
+    if (consecutive) {
+      evaluate(pool.history, pool.constant_columns, static_cast<std::size_t>(first_slot), block.motion, size, dt);
+    } else {
+      for (std::size_t q = 0; q < size; ++q) {
+        block.history.set(q, pool.history.get(block.slot[q]));
+        block.constants.set(q, pool.constant_columns.get(block.slot[q]));
+      }
+      evaluate(block.history, block.constants, 0, block.motion, size, dt);
+      for (std::size_t q = 0; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
     }
-  }
-
-  // The loads of the live contacts added to their particles, their dissipation to the tally, in
-  // the order of the pairs (not of the slots, which depends on when contacts formed and the list
-  // was rebuilt): the sums, to the last bit, do not depend on the skin.
-  void apply_loads(Particles& p, const PairList& pairs, const ContactPool& pool, ContactLedger& ledger) const {
     Vec3* force = p.force.data();
     Vec3* torque = p.torque.data();
-    const double* reduced_radius = pool.constant_columns.radius.data();
     double deepest = ledger.events.deepest_overlap_ratio;
-    const std::size_t n = pairs.particles();
-    for (std::uint32_t i = 0; i < n; ++i)
-      for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
-        const std::int32_t s = pairs.contact[k];
-        if (s < 0) continue;
-        const std::uint32_t j = pairs.neighbor[k];
-        const ContactLoad load = motion_.load(s);
-        force[i] += load.force_i;
-        force[j] -= load.force_i;
-        torque[i] += load.torque_i;
-        torque[j] += load.torque_j;
-        ledger.tally += motion_.dissipation(s);
-        deepest = std::max(deepest, motion_.overlap[s] / reduced_radius[s]);
-      }
+    for (std::size_t q = 0; q < size; ++q) {
+      const ContactLoad load = block.motion.load(q);
+      const std::uint32_t i = block.first[q], j = block.second[q];
+      force[i] += load.force_i;
+      force[j] -= load.force_i;
+      torque[i] += load.torque_i;
+      torque[j] += load.torque_j;
+      ledger.tally += block.motion.dissipation(q);
+      deepest = std::max(deepest, block.motion.overlap[q] / pool.constant_columns.radius[block.slot[q]]);
+    }
     ledger.events.deepest_overlap_ratio = deepest;
+    block.clear();
+  }
+
+  // The laws of `size` contacts whose history and constants are at `offset` onwards of the given
+  // columns and whose motion is at 0 onwards of `motion`.
+  void evaluate(ContactHistoryColumns& history, const ContactConstantColumns& constants, std::size_t offset,
+                ContactMotionColumns& motion, std::size_t size, double dt) const {
+    // Every column is indexed by the contact alone: no iteration depends on another.
+#pragma GCC ivdep
+    for (std::size_t q = 0; q < size; ++q) {
+      ContactHistory state = history.get(offset + q);
+      DissipationTally tally;
+      const ContactLoad load = model_.evaluate(state, constants.get(offset + q), motion.get(q), dt, tally);
+      history.set(offset + q, state);
+      motion.set_result(q, load, tally);
+    }
   }
 
   std::int32_t open_pair(const Particles& p, const MaterialTable& materials, std::uint32_t i, std::uint32_t j,
@@ -238,7 +213,7 @@ class ContactForcesFor final : public ContactForces {
   }
 
   Model model_;
-  mutable ContactMotionColumns motion_;  // scratch of add_pair_forces, by pool slot, kept to reuse its memory
+  mutable ContactBlock block_;  // scratch of add_pair_forces, kept to reuse its memory
 };
 
 using NormalChoice = std::variant<JkrNormal, DmtNormal, HertzNormal>;

@@ -6,14 +6,13 @@
 
 namespace aerobreak {
 
-// The motion of every contact at this step and the load and dissipation its laws answer with,
-// one column per
-// component, indexed by contact-pool slot: the pair loop's hand-over between its scalar
-// bookkeeping pass and its vectorised evaluation pass (dem/contact_forces.cpp).
+// The motion of a block of contacts at this step and the load and dissipation their laws answer
+// with, one column per component: the pair loop's hand-over between its scalar bookkeeping pass,
+// its vectorised evaluation pass and the pass that adds the loads up (dem/contact_forces.cpp).
 class ContactMotionColumns {
  public:
-  void resize(std::size_t slots) {
-    for (auto* column : columns()) column->resize(slots);
+  void resize(std::size_t contacts) {
+    for (auto* column : columns()) column->resize(contacts);
   }
 
   [[gnu::always_inline]] void set(std::size_t s, const ContactMotion& m) {

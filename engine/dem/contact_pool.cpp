@@ -1,23 +1,15 @@
 #include "engine/dem/contact_pool.hpp"
 
+#include <stdexcept>
+
 namespace aerobreak {
 
 void ContactPool::grow() {
-  for (auto* column : {&stretch_x, &stretch_y, &stretch_z, &rolling_x, &rolling_y, &rolling_z, &twist, &contact_radius,
-                       &stored_energy, &overlap, &elastic_force, &damping_force, &rolling_stiffness})
-    column->push_back(0.0);
+  history.resize(live_.size() + 1);
   constant_columns.resize(live_.size() + 1);
   i_.push_back(0);
   j_.push_back(0);
   live_.push_back(0);
-}
-
-template <class Column>
-void ContactPool::permute(Column& column, const std::vector<std::int32_t>& order) {
-  Column packed;
-  packed.reserve(order.size());
-  for (std::int32_t slot : order) packed.push_back(column[slot]);
-  column = std::move(packed);
 }
 
 void ContactPool::renumber(std::vector<std::int32_t>& references) {
@@ -28,12 +20,11 @@ void ContactPool::renumber(std::vector<std::int32_t>& references) {
     order.push_back(slot);
     slot = static_cast<std::int32_t>(order.size() - 1);
   }
-  for (auto* column : {&stretch_x, &stretch_y, &stretch_z, &rolling_x, &rolling_y, &rolling_z, &twist, &contact_radius,
-                       &stored_energy, &overlap, &elastic_force, &damping_force, &rolling_stiffness})
-    permute(*column, order);
+  if (order.size() != size()) throw std::logic_error("ContactPool::renumber: a live contact is not referenced");
+  history.permute(order);
   constant_columns.permute(order);
-  permute(i_, order);
-  permute(j_, order);
+  permute_column(i_, order);
+  permute_column(j_, order);
   live_.assign(order.size(), 1);
   free_.clear();
 }

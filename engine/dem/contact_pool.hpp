@@ -4,12 +4,13 @@
 
 #include "engine/contact/contact_state.hpp"
 #include "engine/dem/contact_constant_columns.hpp"
+#include "engine/dem/contact_history_columns.hpp"
 
 namespace aerobreak {
 
 // Storage of the live contacts of one kind (particle-particle or particle-wall), one column per
-// field of ContactState (structure of arrays): the pair force loop streams the columns it needs
-// in slot order, several contacts per vector instruction. Slots are reused; a slot's index is
+// field of ContactState (structure of arrays), so that the pair force loop, which meets the
+// contacts in slot order, streams just the columns it needs. Slots are reused; a slot's index is
 // stable while its contact lives (neighbour lists and wall tables refer to contacts by slot)
 // until renumber() packs the live contacts into the order the caller gives.
 class ContactPool {
@@ -40,36 +41,14 @@ class ContactPool {
   // The contact in one piece (a copy), and its history written back.
   ContactState state(std::int32_t slot) const {
     ContactState s;
+    static_cast<ContactHistory&>(s) = history.get(slot);
     s.constants = constant_columns.get(slot);
-    s.tangential_stretch = {stretch_x[slot], stretch_y[slot], stretch_z[slot]};
-    s.rolling_displacement = {rolling_x[slot], rolling_y[slot], rolling_z[slot]};
-    s.twist_angle = twist[slot];
-    s.contact_radius = contact_radius[slot];
-    s.stored_energy = stored_energy[slot];
-    s.overlap = overlap[slot];
-    s.elastic_force = elastic_force[slot];
-    s.damping_force = damping_force[slot];
-    s.rolling_stiffness = rolling_stiffness[slot];
     s.i = i_[slot];
     s.j = j_[slot];
     s.with_wall = with_wall_;
     return s;
   }
-  void store(std::int32_t slot, const ContactState& s) {
-    stretch_x[slot] = s.tangential_stretch.x;
-    stretch_y[slot] = s.tangential_stretch.y;
-    stretch_z[slot] = s.tangential_stretch.z;
-    rolling_x[slot] = s.rolling_displacement.x;
-    rolling_y[slot] = s.rolling_displacement.y;
-    rolling_z[slot] = s.rolling_displacement.z;
-    twist[slot] = s.twist_angle;
-    contact_radius[slot] = s.contact_radius;
-    stored_energy[slot] = s.stored_energy;
-    overlap[slot] = s.overlap;
-    elastic_force[slot] = s.elastic_force;
-    damping_force[slot] = s.damping_force;
-    rolling_stiffness[slot] = s.rolling_stiffness;
-  }
+  void store(std::int32_t slot, const ContactHistory& h) { history.set(slot, h); }
 
   ContactConstants constants(std::int32_t slot) const { return constant_columns.get(slot); }
   std::uint32_t i(std::size_t slot) const { return i_[slot]; }
@@ -90,17 +69,11 @@ class ContactPool {
       if (live_[s]) visit(state(static_cast<std::int32_t>(s)));
   }
 
+  ContactHistoryColumns history;
   ContactConstantColumns constant_columns;
-  // History columns (eqs 11-18) and the values of the last evaluation, indexed by slot.
-  std::vector<double> stretch_x, stretch_y, stretch_z;     // Mindlin spring (eqs 11-14)
-  std::vector<double> rolling_x, rolling_y, rolling_z;     // xi (eq 18)
-  std::vector<double> twist;                               // phi (eq 17)
-  std::vector<double> contact_radius, stored_energy, overlap, elastic_force, damping_force, rolling_stiffness;
 
  private:
   void grow();
-  template <class Column>
-  static void permute(Column& column, const std::vector<std::int32_t>& order);
 
   bool with_wall_;
   std::vector<std::uint32_t> i_, j_;

@@ -281,7 +281,7 @@ EnergyBudget Simulation::energy() const {
   }
   for (const ContactPool* pool : {&pair_pool_, &wall_pool_})
     for (std::size_t s = 0; s < pool->capacity(); ++s)
-      if (pool->live(s)) e.contact_elastic += pool->stored_energy[s];
+      if (pool->live(s)) e.contact_elastic += pool->history.stored_energy[s];
   e.van_der_waals = van_der_waals_energy_;
   e.gravitational = gravitational_energy(p, settings_.body.gravity);
   e.dissipation = tally_;
