@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/dem/column_permutation.hpp"
+#include "engine/dem/column_set.hpp"
 #include "engine/contact/contact_constants.hpp"
 
 namespace aerobreak {
@@ -11,16 +11,8 @@ namespace aerobreak {
 // ContactConstants of every slot of a contact pool, one column per field: a loop over contacts
 // reads them with plain vector loads (an array of the structs would need a gather per field,
 // which stops the pair loop vectorising).
-class ContactConstantColumns {
+class ContactConstantColumns : public ColumnSet<ContactConstantColumns> {
  public:
-  void resize(std::size_t slots) {
-    for (auto* column : columns()) column->resize(slots);
-  }
-  // Moves slot order[k] to slot k.
-  void permute(const std::vector<std::int32_t>& order) {
-    for (auto* column : columns()) permute_column(*column, order);
-  }
-
   [[gnu::always_inline]] ContactConstants get(std::size_t s) const {
     ContactConstants c;
     c.radius = radius[s];
@@ -54,6 +46,7 @@ class ContactConstantColumns {
       pull_off_force, critical_overlap, break_overlap, overlap_scale;
 
  private:
+  friend class ColumnSet<ContactConstantColumns>;
   std::vector<std::vector<double>*> columns() {
     return {&radius,         &mass,           &modulus,          &shear,         &work_of_adhesion, &hertz_coefficient,
             &equilibrium_radius, &pull_off_force, &critical_overlap, &break_overlap, &overlap_scale};

@@ -3,22 +3,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/dem/column_permutation.hpp"
+#include "engine/dem/column_set.hpp"
 #include "engine/contact/contact_state.hpp"
 
 namespace aerobreak {
 
 // ContactHistory of every slot, one column per field.
-class ContactHistoryColumns {
+class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
  public:
-  void resize(std::size_t slots) {
-    for (auto* column : columns()) column->resize(slots);
-  }
-  // Moves slot order[k] to slot k.
-  void permute(const std::vector<std::int32_t>& order) {
-    for (auto* column : columns()) permute_column(*column, order);
-  }
-
   [[gnu::always_inline]] ContactHistory get(std::size_t s) const {
     ContactHistory h;
     h.tangential_stretch = {stretch_x[s], stretch_y[s], stretch_z[s]};
@@ -54,6 +46,7 @@ class ContactHistoryColumns {
   std::vector<double> contact_radius, stored_energy, overlap, elastic_force, damping_force, rolling_stiffness;
 
  private:
+  friend class ColumnSet<ContactHistoryColumns>;
   std::vector<std::vector<double>*> columns() {
     return {&stretch_x,      &stretch_y,     &stretch_z, &rolling_x,     &rolling_y,     &rolling_z,        &twist,
             &contact_radius, &stored_energy, &overlap,   &elastic_force, &damping_force, &rolling_stiffness};

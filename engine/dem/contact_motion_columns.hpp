@@ -3,18 +3,15 @@
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/dem/column_set.hpp"
 
 namespace aerobreak {
 
 // The motion of a block of contacts at this step and the load and dissipation their laws answer
 // with, one column per component: the pair loop's hand-over between its scalar bookkeeping pass,
 // its vectorised evaluation pass and the pass that adds the loads up (dem/contact_forces.cpp).
-class ContactMotionColumns {
+class ContactMotionColumns : public ColumnSet<ContactMotionColumns> {
  public:
-  void resize(std::size_t contacts) {
-    for (auto* column : columns()) column->resize(contacts);
-  }
-
   [[gnu::always_inline]] void set(std::size_t s, const ContactMotion& m) {
     normal_x[s] = m.normal.x;
     normal_y[s] = m.normal.y;
@@ -76,6 +73,7 @@ class ContactMotionColumns {
   std::vector<double> normal_x, normal_y, normal_z, overlap;
 
  private:
+  friend class ColumnSet<ContactMotionColumns>;
   std::vector<std::vector<double>*> columns() {
     return {&normal_x, &normal_y,   &normal_z,   &overlap,    &velocity_x, &velocity_y, &velocity_z, &spin_i_x,
             &spin_i_y, &spin_i_z,   &spin_j_x,   &spin_j_y,   &spin_j_z,   &lever_i,    &lever_j,    &force_x,
