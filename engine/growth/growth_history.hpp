@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/cluster/fractal_scaling_fit.hpp"
-#include "engine/dem/simulation.hpp"
+#include "engine/growth/contact_clusters.hpp"
 
 namespace aerobreak {
 
@@ -19,7 +19,8 @@ class GrowthHistory {
  public:
   explicit GrowthHistory(std::size_t smallest = 2) : smallest_(smallest) {}
 
-  void record(const Simulation& simulation);
+  // Every cluster of a look, of primaries of one radius.
+  void record(const std::vector<ContactCluster>& clusters, double primary_radius);
   // One sample per cluster seen with at least `smallest` primaries, final one included.
   std::vector<SizeRadiusSample> samples() const;
 

@@ -74,6 +74,7 @@ TEST_CASE("the same seed grows the same cluster, another seed another") {
 
 TEST_CASE("the growth stops at the step limit, saying how many clusters remain") {
   DiffusionLimitedParameters p = parameters(40, true);
+  p.far_field_motion = DiffusionLimitedParameters::FarField::engine;
   p.max_steps = 20000;
   std::vector<std::size_t> seen;
   const auto record = [&](const DiffusionLimitedProgress& g) { seen.push_back(g.clusters); };
@@ -86,6 +87,18 @@ TEST_CASE("the growth stops at the step limit, saying how many clusters remain")
   CHECK(std::is_sorted(seen.rbegin(), seen.rend()));
 }
 
+TEST_CASE("the rigid far-field growth stops at its rigid step limit and looks whenever clusters merge") {
+  DiffusionLimitedParameters p = parameters(40, true);
+  p.max_steps = 200;
+  std::vector<std::size_t> seen;
+  const auto record = [&](const DiffusionLimitedProgress& g) { seen.push_back(g.clusters); };
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record), Catch::Contains("clusters remain") &&
+                                                              Catch::Contains("after 200 rigid steps"));
+  REQUIRE(seen.size() >= 2);
+  CHECK(seen.front() == 40);
+  CHECK(std::adjacent_find(seen.begin(), seen.end()) == seen.end());
+}
+
 TEST_CASE("invalid growth parameters are rejected by name") {
   DiffusionLimitedParameters p;
   p.volume_fraction = 0.0;
@@ -96,6 +109,9 @@ TEST_CASE("invalid growth parameters are rejected by name") {
   p = {};
   p.persistence_length = 0.0;
   CHECK_THROWS_WITH(grow_diffusion_limited(p, 1), Catch::Contains("persistence_length"));
+  p = {};
+  p.far_field.release_gap = 0.1;
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1), Catch::Contains("release_gap"));
   p = {};
   p.primary_count = 1;
   CHECK(diffusion_limited_aggregation(p, 1).size() == 1);
@@ -117,7 +133,7 @@ TEST_CASE("the DLCA ensemble fractal dimension lies in a band around 1.78") {
   // 1.89, inside: their compaction is local (twice the contacts), which the next test checks.
   // These seeds give 1.65 (k_f = 1.71, 81 clusters).
   GrowthHistory history(4);
-  const auto record = [&](const DiffusionLimitedProgress& g) { history.record(*g.simulation); };
+  const auto record = [&](const DiffusionLimitedProgress& g) { history.record(*g.components, 0.5); };
   for (std::uint64_t seed = 1; seed <= 8; ++seed) grow_diffusion_limited(parameters(32, true), seed, record);
   const std::vector<SizeRadiusSample> samples = history.samples();
   const FractalScalingFit fit = fit_fractal_scaling(samples, 0.5);
