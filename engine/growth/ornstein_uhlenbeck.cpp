@@ -21,7 +21,7 @@ OrnsteinUhlenbeckStep ornstein_uhlenbeck_step(double mass, double drag, double t
   const double x = gamma * dt;
   const double e = -std::expm1(-x);
   OrnsteinUhlenbeckStep s;
-  s.velocity_decay = 1.0 - e;
+  s.velocity_decay = std::exp(-x);
   s.drift_per_velocity = e / gamma;
   const double velocity_variance = sigma2 * e * (2.0 - e);
   s.velocity_spread = std::sqrt(velocity_variance);

@@ -79,7 +79,8 @@ RigidCluster rigid_cluster(std::vector<std::size_t> members, std::span<const Vec
   return c;
 }
 
-void propagate(RigidCluster& c, double dt, double temperature, RandomStream& random) {
+double propagate(RigidCluster& c, double dt, double temperature, RandomStream& random) {
+  const Vec3 start = c.centre;
   const OrnsteinUhlenbeckStep translation = ornstein_uhlenbeck_step(c.mass, c.drag, temperature, dt);
   advance_axes({translation, translation, translation}, c.centre, c.velocity, random);
   // Rotation angles about the principal axes over the step, then one rotation by that vector in
@@ -95,6 +96,7 @@ void propagate(RigidCluster& c, double dt, double temperature, RandomStream& ran
     const Eigen::Quaterniond q = (quaternion(c) * increment).normalized();
     c.orientation = {q.w(), q.x(), q.y(), q.z()};
   }
+  return norm(c.centre - start) + c.reach * turn;
 }
 
 Rotation orientation_matrix(const RigidCluster& c) {

@@ -59,8 +59,9 @@ RigidCluster rigid_cluster(std::vector<std::size_t> members, std::span<const Vec
                            std::span<const Vec3> velocity, std::span<const Vec3> angular_velocity,
                            const PrimaryBath& bath);
 
-// Advances by dt, drawing twelve standard normals from `random`.
-void propagate(RigidCluster& cluster, double dt, double temperature, RandomStream& random);
+// Advances by dt, drawing twelve standard normals from `random`. Returns a bound on how far any
+// member moved: the centre's displacement plus reach times the rotation angle.
+double propagate(RigidCluster& cluster, double dt, double temperature, RandomStream& random);
 
 // Body to space.
 Rotation orientation_matrix(const RigidCluster& cluster);

@@ -41,6 +41,7 @@ struct Encounter {
   std::uint64_t events = 0;  // contacts made and broken so far
   double quiet_since = 0.0;  // growth time of the last contact made or broken (or of the start)
   std::size_t clusters = 0;  // components of its contact graph
+  std::vector<Vec3> searched_position;  // at the last gap search
 };
 
 std::uint64_t contact_events(const Simulation& s) { return s.pair_events().made + s.pair_events().broken; }
@@ -77,7 +78,47 @@ class Growth {
 
  private:
   // One step: hand close clusters to the engine, then move everything by the largest safe step.
+  // The gaps come from a search only when the displacements since the last one may have eaten
+  // half of a cluster's gap (Verlet 1967's skin, with the displacements actually taken): between
+  // searches, clusters g and h are at least gap_g - moved_g - max_h moved_h apart.
   void advance() {
+    if (searched_gap_.empty()) search();
+    const double most = *std::max_element(moved_.begin(), moved_.end());
+    double step = std::numeric_limits<double>::infinity();
+    for (std::size_t g = 0; g < searched_gap_.size(); ++g) {
+      const RigidCluster& c = g < frozen_.size() ? frozen_[g].body : free_primary_;
+      const double gap = searched_gap_[g] - moved_[g] - most;
+      step = std::min(step, step_for_reach(c, bath_.temperature, settings_.step_fraction * gap, kMaxAngle));
+    }
+    if (!encounters_.empty()) {
+      const double dt = base_.time_step;
+      const auto engine_steps = static_cast<std::int64_t>(
+          std::clamp(std::floor(step / dt), 1.0, static_cast<double>(settings_.engine_chunk)));
+      step = static_cast<double>(engine_steps) * dt;
+      for (std::size_t e = 0; e < encounters_.size(); ++e) {
+        Encounter& enc = encounters_[e];
+        enc.simulation->run(engine_steps);
+        outcome_.engine_particle_steps += engine_steps * static_cast<std::int64_t>(enc.members.size());
+        const auto& x = enc.simulation->particles().position;
+        double& moved = moved_[frozen_.size() + e];
+        for (std::size_t k = 0; k < x.size(); ++k)
+          moved = std::max(moved, norm(box_.minimum_image(x[k] - enc.searched_position[k])));
+      }
+    }
+    for (std::size_t g = 0; g < frozen_.size(); ++g) moved_[g] += propagate(frozen_[g].body, step, bath_.temperature, random_);
+    time_ += step;
+    ++outcome_.rigid_steps;
+    const std::size_t groups = frozen_.size() + encounters_.size();
+    release_settled();
+    const double farthest = *std::max_element(moved_.begin(), moved_.end());
+    bool stale = groups != frozen_.size() + encounters_.size();
+    for (std::size_t g = 0; g < searched_gap_.size() && !stale; ++g)
+      stale = searched_gap_[g] - moved_[g] - farthest < 0.5 * searched_gap_[g];
+    if (stale) searched_gap_.clear();
+  }
+
+  // Finds the gaps; clusters closer than the encounter gap become encounters first.
+  void search() {
     GroupProximity near = proximity();
     for (std::size_t g = 0; g < frozen_.size(); ++g)
       if (near.gap[g] < 0.0) ++outcome_.overlaps;
@@ -85,25 +126,9 @@ class Growth {
       merge(near.close);
       near = proximity();
     }
-    double step = std::numeric_limits<double>::infinity();
-    for (std::size_t g = 0; g < near.gap.size(); ++g) {
-      const RigidCluster& c = g < frozen_.size() ? frozen_[g].body : free_primary_;
-      step = std::min(step, step_for_reach(c, bath_.temperature, settings_.step_fraction * near.gap[g], kMaxAngle));
-    }
-    if (!encounters_.empty()) {
-      const double dt = base_.time_step;
-      const auto engine_steps = static_cast<std::int64_t>(
-          std::clamp(std::floor(step / dt), 1.0, static_cast<double>(settings_.engine_chunk)));
-      step = static_cast<double>(engine_steps) * dt;
-      for (Encounter& e : encounters_) {
-        e.simulation->run(engine_steps);
-        outcome_.engine_particle_steps += engine_steps * static_cast<std::int64_t>(e.members.size());
-      }
-    }
-    for (FrozenCluster& c : frozen_) propagate(c.body, step, bath_.temperature, random_);
-    time_ += step;
-    ++outcome_.rigid_steps;
-    release_settled();
+    searched_gap_ = std::move(near.gap);
+    moved_.assign(searched_gap_.size(), 0.0);
+    for (Encounter& e : encounters_) e.searched_position = e.simulation->particles().position;
   }
 
   // Particle positions, groups (frozen clusters first, then encounters) and bounding spheres.
@@ -317,6 +342,8 @@ class Growth {
   std::vector<FrozenCluster> frozen_;
   std::vector<Encounter> encounters_;
   RigidCluster free_primary_;
+  std::vector<double> searched_gap_;  // per group, at the last search; empty: search next step
+  std::vector<double> moved_;         // per group: farthest any member moved since
   double time_ = 0.0;
   RigidFarFieldOutcome outcome_;
 };
