@@ -12,7 +12,8 @@ namespace aerobreak {
 // The clusters a growth run forms on its way, for ensemble fractal scaling (report figure 2b):
 // recorded at every look (e.g. from the DiffusionLimitedProgress callback), each cluster keeps the
 // radius of gyration of its reassembled centres (contact_clusters) at the last look before it grew
-// into a larger one. One run of N primaries so yields up to N - 1 clusters of sizes 2..N. They
+// into a larger one. One run of N primaries so yields up to N - 1 clusters of sizes 2..N (one
+// history per run: the names below are particle indices, which another run reuses). They
 // are not independent (a cluster contains its predecessors), so a fit's standard error is
 // optimistic.
 class GrowthHistory {

@@ -17,10 +17,12 @@ using namespace aerobreak;
 
 namespace {
 
-DiffusionLimitedParameters parameters(std::size_t n, bool sintering) {
+// At 1 % volume fraction unless said otherwise: the plain engine's cost grows as the box's volume.
+DiffusionLimitedParameters parameters(std::size_t n, bool sintering, double volume_fraction = 0.01) {
   DiffusionLimitedParameters p;
   p.primary_count = n;
   p.sintering = sintering;
+  p.volume_fraction = volume_fraction;
   return p;
 }
 
@@ -117,32 +119,34 @@ TEST_CASE("invalid growth parameters are rejected by name") {
   CHECK(diffusion_limited_aggregation(p, 1).size() == 1);
 }
 
-TEST_CASE("the DLCA ensemble fractal dimension lies in a band around 1.78") {
-  // Rg vs N over every cluster of 4..32 primaries that eight sintered runs of 32 formed on their
-  // way (GrowthHistory), fitted as N = k_f (Rg/a)^D_f (report figure 2b).
-  // Measured over 16 seeds, this estimator has a mean of 1.66 and a seed-to-seed standard
-  // deviation of 0.066 for eight runs (400 draws of 8 of the 16; the fit's own standard error,
-  // ~0.04, is optimistic because a cluster contains its predecessors). The mean sits 0.12 below
-  // the asymptotic DLCA value 1.78 (Meakin 1983; Jullien & Botet 1987): clusters of 4..32
-  // primaries are far from the scaling limit, and thermal flexing closes a few loops (~9 % more
-  // contacts than a tree). Longer histories (12 runs of 64, n >= 8) give 1.84 +- 0.06 and the
-  // final clusters alone of N = 16..64 1.95 +- 0.17 (crowding in the 1 % box, docs/MODEL.md
-  // 11.3). The band 1.78 +- 0.30 holds the estimator's mean with 2.7 standard deviations below
-  // and 6 above; chain-like structure (< 1.4) falls outside, and so does compact structure
-  // above 2.1 (unsintered final clusters give 2.14 +- 0.29). Unsintered growth histories give
-  // 1.89, inside: their compaction is local (twice the contacts), which the next test checks.
-  // These seeds give 1.65 (k_f = 1.71, 81 clusters).
-  GrowthHistory history(4);
-  const auto record = [&](const DiffusionLimitedProgress& g) { history.record(*g.components, 0.5); };
-  for (std::uint64_t seed = 1; seed <= 8; ++seed) grow_diffusion_limited(parameters(32, true), seed, record);
-  const std::vector<SizeRadiusSample> samples = history.samples();
+TEST_CASE("the DLCA ensemble fractal dimension is the measured 1.64 within what twelve runs justify") {
+  // Rg vs N over every cluster of 4..64 primaries that twelve sintered runs of 64 at the default
+  // 0.1 % volume fraction formed on their way (GrowthHistory), fitted as N = k_f (Rg/a)^D_f
+  // (report figure 2b). Measured over 24 seeds: D_f = 1.642 (k_f = 1.76), per-run standard
+  // deviation 0.107, so twelve runs pooled scatter by ~0.107 / sqrt(12) = 0.031 (0.04 allowing
+  // for the fit's pooling); the band +-0.15 is ~4 of those. These seeds give 1.633. The value
+  // lies below the 1.78 of DLCA without rotation [Meakin 1983; Kolb, Botet & Jullien 1983]: the
+  // clusters here turn by rotational diffusion as they approach, which lowers D_f (the same runs
+  // with the rigid rotation switched off give 1.89 +- 0.09; Jungblut, Joswig & Eychmueller 2018,
+  // arXiv:1810.07109), and it does not depend measurably on the volume fraction from 0.03 % to
+  // 1 % (docs/VALIDATION.md section 7). Chain-like (< 1.49) or compact (> 1.79; unsintered
+  // growth gives 1.87 +- 0.05 at N = 64) structure falls outside.
+  // One history per run: a history names its clusters by lowest member and size, which another
+  // run's clusters would share.
+  std::vector<SizeRadiusSample> samples;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    GrowthHistory history(4);
+    const auto record = [&](const DiffusionLimitedProgress& g) { history.record(*g.components, 0.5); };
+    grow_diffusion_limited(parameters(64, true, DiffusionLimitedParameters{}.volume_fraction), seed, record);
+    for (const SizeRadiusSample& s : history.samples()) samples.push_back(s);
+  }
   const FractalScalingFit fit = fit_fractal_scaling(samples, 0.5);
   INFO("D_f = " << fit.fractal_dimension << " +- " << fit.fractal_dimension_standard_error << ", k_f = "
                 << fit.prefactor << ", " << samples.size() << " clusters");
-  REQUIRE(samples.size() > 60);
-  CHECK(fit.max_primary_count == 32);
-  CHECK(fit.fractal_dimension > 1.78 - 0.30);
-  CHECK(fit.fractal_dimension < 1.78 + 0.30);
+  REQUIRE(samples.size() > 300);
+  CHECK(fit.max_primary_count == 64);
+  CHECK(fit.fractal_dimension > 1.64 - 0.15);
+  CHECK(fit.fractal_dimension < 1.64 + 0.15);
 }
 
 TEST_CASE("sintering keeps the clusters more open (report figure 3)") {
@@ -151,8 +155,9 @@ TEST_CASE("sintering keeps the clusters more open (report figure 3)") {
   // collisions that built them. Measured over 8-16 seeds at N = 16: Rg 1.33 +- 0.12 unsintered
   // against 1.88 +- 0.29 sintered (ratio 1.41), and 2.2 against 1.04 contacts per primary. With
   // six seeds each the ratio of the means has a standard error of ~0.10, so 1.10 lies 3 standard
-  // errors below the measured ratio (these seeds give 1.84 / 1.49 = 1.23); the contact counts
-  // differ far more (these seeds: 203 against 101).
+  // errors below the measured ratio (these seeds give 1.84 / 1.49 = 1.24, sintered with the rigid
+  // far field, unsintered with the engine throughout, the defaults); the contact counts differ far
+  // more (these seeds: 203 against 97).
   double open = 0.0, folded = 0.0;
   std::size_t open_contacts = 0, folded_contacts = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
