@@ -44,6 +44,11 @@ struct Encounter {
   std::vector<Vec3> searched_position;  // at the last gap search
 };
 
+// The search gap, shortened where the box is small: a pair must not reach half the box (one image).
+double searchable_gap(const PeriodicBox& box, double wanted, double radius) {
+  return std::min(wanted, 0.499 * box.shortest_edge() - 2.0 * radius);
+}
+
 std::uint64_t contact_events(const Simulation& s) { return s.pair_events().made + s.pair_events().broken; }
 
 class Growth {
@@ -53,7 +58,8 @@ class Growth {
          std::uint64_t seed)
       : material_(material), model_(model), base_(base), bath_(bath), settings_(settings), seed_(seed),
         random_(mix(seed ^ 0x243f6a8885a308d3ULL)), box_(*base.periodic),
-        proximity_(*base.periodic, settings.search_gap), radius_(primaries.radius) {
+        proximity_(*base.periodic, searchable_gap(*base.periodic, settings.search_gap, bath.radius)),
+        radius_(primaries.radius) {
     const Vec3 still;
     for (std::size_t i = 0; i < primaries.size(); ++i)
       frozen_.push_back({rigid_cluster({i}, {&primaries.position[i], 1}, {&still, 1}, {&still, 1}, bath), 0, 0, 0.0});

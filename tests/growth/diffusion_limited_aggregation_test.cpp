@@ -101,6 +101,17 @@ TEST_CASE("the rigid far-field growth stops at its rigid step limit and looks wh
   CHECK(std::adjacent_find(seen.begin(), seen.end()) == seen.end());
 }
 
+TEST_CASE("a few primaries in a box smaller than the gap search still grow into one cluster") {
+  // At 1 % the box of 2 to 8 primaries is 4.7 to 7.5 d: the rigid far field shortens its search gap
+  // to keep one image per pair.
+  for (std::size_t n : {2, 3, 8}) {
+    INFO(n << " primaries");
+    const DiffusionLimitedResult r = grow_diffusion_limited(parameters(n, true), 1);
+    CHECK(r.cluster.size() == n);
+    CHECK(r.contacts >= n - 1);
+  }
+}
+
 TEST_CASE("invalid growth parameters are rejected by name") {
   DiffusionLimitedParameters p;
   p.volume_fraction = 0.0;
