@@ -49,12 +49,15 @@ Particles primaries_at(const std::vector<Vec3>& positions, double density) {
   return particles;
 }
 
-// Runs until one cluster is left; returns the steps taken.
+// Runs the plain engine until one cluster is left; returns the steps taken.
 std::int64_t grow(Simulation& sim, const DiffusionLimitedParameters& p, const DiffusionLimitedProgressCallback& progress) {
   const std::size_t n = sim.particles().size();
   while (true) {
     const auto sizes = connected_component_sizes(n, contact_edges(sim));
-    if (progress) progress({sim.step_count(), sim.time(), sizes.size(), sizes.front(), &sim});
+    if (progress) {
+      const std::vector<ContactCluster> components = contact_clusters(sim);
+      progress({sim.step_count(), sim.time(), sizes.size(), sizes.front(), &components});
+    }
     if (sizes.size() == 1) return sim.step_count();
     if (sim.step_count() >= p.max_steps)
       throw std::runtime_error("diffusion-limited aggregation: " + std::to_string(sizes.size()) +
@@ -65,12 +68,16 @@ std::int64_t grow(Simulation& sim, const DiffusionLimitedParameters& p, const Di
   }
 }
 
-// The grown cluster, relaxed to JKR equilibrium (relax_cluster) and centred. Contacts the growth
-// left in tension re-form in the relaxation through its bond gap.
-Cluster relaxed(const ContactCluster& grown, const Simulation& sim, const Material& material,
-                const ContactModelSpec& spec, std::int64_t& steps) {
+double largest_tension(const Simulation& sim) {
   double tension = 0.0;
   sim.contacts().for_each([&](const ContactState& c) { tension = std::max(tension, -c.overlap); });
+  return tension;
+}
+
+// The grown cluster, relaxed to JKR equilibrium (relax_cluster) and centred. Contacts the growth
+// left in tension re-form in the relaxation through its bond gap.
+Cluster relaxed(const ContactCluster& grown, double tension, const Material& material, const ContactModelSpec& spec,
+                std::int64_t& steps) {
   RelaxationSettings settings;
   settings.bond_gap = std::max(settings.bond_gap, 1.001 * tension);
   const RelaxationResult r = relax_cluster(primaries_at(grown.position, material.density), {material}, spec, settings);
@@ -102,6 +109,15 @@ void DiffusionLimitedParameters::validate() const {
   require(steps_per_period > 0.0, "steps_per_period must be > 0");
   require(max_steps > 0, "max_steps must be > 0");
   require(check_interval > 0, "check_interval must be > 0");
+  require(far_field.encounter_gap > 0.0, "far_field.encounter_gap must be > 0");
+  require(far_field.release_gap >= far_field.encounter_gap, "far_field.release_gap must be >= encounter_gap");
+  require(far_field.settle_time >= 0.0, "far_field.settle_time must be >= 0");
+  require(far_field.step_fraction > 0.0 && far_field.step_fraction <= 0.5, "far_field.step_fraction must lie in (0, 0.5]");
+  require(far_field.search_gap >= far_field.release_gap, "far_field.search_gap must be >= release_gap");
+}
+
+bool DiffusionLimitedParameters::rigid_far_field() const {
+  return far_field_motion == FarField::rigid || (far_field_motion == FarField::rigid_when_sintered && sintering);
 }
 
 DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& p, std::uint64_t seed,
@@ -125,17 +141,46 @@ DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& 
   // A Langevin stream apart from the placement's: counter-based on (seed, step, particle).
   settings.body.langevin = {result.conditions.temperature, result.conditions.drag_per_diameter,
                             seed ^ 0x6a09e667f3bcc909ULL};
-  Simulation sim(primaries_at(random_sequential_positions(p.primary_count, box, kDiameter, random), material.density),
-                 {material}, {}, spec, settings);
+  Particles primaries = primaries_at(random_sequential_positions(p.primary_count, box, kDiameter, random), material.density);
+  Simulation sim(primaries, {material}, {}, spec, settings);
   result.time_step = sim.time_step();
-  result.steps = grow(sim, p, progress);
-  result.time = sim.time();
-  result.contacts_broken = sim.pair_events().broken;
-
-  const ContactCluster grown = contact_clusters(sim).front();
+  ContactCluster grown;
+  double tension = 0.0;
+  if (p.rigid_far_field()) {
+    settings.time_step = sim.time_step();
+    // Contacts inside a cluster that re-enters the engine are re-formed out to the break-off
+    // overlap: a bond in tension stays bonded. A new contact between clusters still needs a touch
+    // (they enter at encounter_gap, far beyond it), unless a rigid step overshot (overlaps).
+    settings.initial_bond_gap = primary_contact(material, spec, kDiameter, kMass).break_overlap;
+    const PrimaryBath bath{0.5 * kDiameter, kMass, primaries.inertia.front(), result.conditions.drag,
+                           result.conditions.drag * kDiameter * kDiameter / 3.0, result.conditions.temperature};
+    RigidFarFieldSettings far = p.far_field;
+    far.engine_chunk = p.check_interval;
+    far.max_steps = p.max_steps;
+    const auto look = [&](const RigidFarFieldLook& l) {
+      if (progress)
+        progress({l.rigid_steps, l.time, l.clusters->size(), l.clusters->front().members.size(), l.clusters});
+    };
+    RigidFarFieldOutcome o = grow_with_rigid_far_field(primaries, material, spec, settings, bath, far, seed, look);
+    result.steps = o.rigid_steps;
+    result.time = o.time;
+    result.contacts_broken = o.contacts_broken;
+    result.engine_particle_steps = o.engine_particle_steps;
+    result.encounters = o.encounters;
+    result.overlaps = o.overlaps;
+    grown = std::move(o.grown);
+    tension = o.tension;
+  } else {
+    result.steps = grow(sim, p, progress);
+    result.time = sim.time();
+    result.contacts_broken = sim.pair_events().broken;
+    result.engine_particle_steps = result.steps * static_cast<std::int64_t>(p.primary_count);
+    grown = contact_clusters(sim).front();
+    tension = largest_tension(sim);
+  }
   result.contacts = grown.contacts;
   result.image_contacts = grown.image_contacts;
-  result.cluster = relaxed(grown, sim, material, spec, result.relaxation_steps);
+  result.cluster = relaxed(grown, tension, material, spec, result.relaxation_steps);
   return result;
 }
 

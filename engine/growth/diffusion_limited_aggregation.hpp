@@ -6,6 +6,8 @@
 #include "engine/cluster/cluster.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/growth/brownian_conditions.hpp"
+#include "engine/growth/contact_clusters.hpp"
+#include "engine/growth/rigid_far_field_growth.hpp"
 
 namespace aerobreak {
 
@@ -18,7 +20,11 @@ namespace aerobreak {
 // as wholes, with the free-draining drag and noise of their primaries.
 struct DiffusionLimitedParameters {
   std::size_t primary_count = 64;
-  double volume_fraction = 0.01;   // solid volume over box volume, sets the box edge
+  // Solid volume over box volume; sets the box edge. 0.1 %: dilute enough that clusters of a few
+  // hundred primaries stay well inside the box to the end (at 1 % a cluster of 1024 has Rg ~ half
+  // the box edge); the fractal dimension does not change measurably between 0.03 % and 1 % at
+  // N = 256 (docs/VALIDATION.md section 7).
+  double volume_fraction = 0.001;
   double gamma_over_kn = 0.01;     // reduced material (eq 7; reduced_material)
   double poisson_ratio = 0.3;
   // The report's sintering constraints: rolling (eq 18) and twisting (eq 17) resistance. On,
@@ -56,22 +62,39 @@ struct DiffusionLimitedParameters {
   // Verlet is stable up to ~3 steps per period and its configurational temperature error in a
   // harmonic well, (omega dt)^2 / 4, is 1.6 % at 25.
   double steps_per_period = 25.0;
+  // How clusters move while far apart.
+  // - rigid: a cluster far from every other moves as one rigid body with the exact
+  //   Ornstein-Uhlenbeck propagation of its free-draining Langevin dynamics (rigid_cluster.hpp),
+  //   over steps as long as its gaps allow; only clusters that come within `far_field`'s
+  //   encounter gap of one another run in the engine, with its contact time step
+  //   (rigid_far_field_growth.hpp). The same dynamics as `engine` for clusters that are rigid,
+  //   as sintered ones are (their joints bend by ~0.03 rad), at a fraction of the cost.
+  // - engine: the engine moves every primary at every step the whole time (~N^2.44 cost).
+  //   Unsintered clusters are not rigid: their joints roll freely, and they fold up between
+  //   collisions too, which only this mode follows.
+  // - rigid_when_sintered (default): rigid with sintering, engine without.
+  enum class FarField { rigid_when_sintered, rigid, engine };
+  FarField far_field_motion = FarField::rigid_when_sintered;
+  RigidFarFieldSettings far_field;  // engine_chunk and max_steps are taken from the fields below
+  bool rigid_far_field() const;
+  // Plain mode: engine steps; rigid far field: rigid steps.
   std::int64_t max_steps = 50'000'000;
-  std::int64_t check_interval = 1000;  // steps between looks at the contact graph
+  std::int64_t check_interval = 1000;  // engine steps between looks at the contact graph
 
   // Throws std::invalid_argument naming the offending field.
   void validate() const;
 };
 
 // Where a growth run stands, at every look at the contact graph.
+// Plain mode: every check_interval steps; rigid far field: at the start and whenever the number of
+// clusters changes.
 struct DiffusionLimitedProgress {
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;       // engine steps (plain) or rigid steps (rigid far field)
   double time = 0.0;            // in tau = sqrt(m / k_n)
   std::size_t clusters = 0;     // connected components of the contact graph, monomers included
   std::size_t largest = 0;      // primaries in the largest
-  // The run itself, to read more (e.g. contact_clusters for the growth history); valid only
-  // during the call.
-  const Simulation* simulation = nullptr;
+  // Every cluster, reassembled, largest first (e.g. for GrowthHistory); valid only during the call.
+  const std::vector<ContactCluster>* components = nullptr;
 };
 using DiffusionLimitedProgressCallback = std::function<void(const DiffusionLimitedProgress&)>;
 
@@ -79,8 +102,8 @@ struct DiffusionLimitedResult {
   Cluster cluster;  // relaxed, centred on its centre of mass
   BrownianConditions conditions;
   double box_edge = 0.0;
-  double time_step = 0.0;
-  std::int64_t steps = 0;     // growth steps until one cluster remained
+  double time_step = 0.0;     // of the engine
+  std::int64_t steps = 0;     // growth steps until one cluster remained (engine or rigid steps)
   double time = 0.0;          // growth time, tau
   std::size_t contacts = 0;   // contacts of the grown cluster (before relaxation)
   // Contacts that broke during the growth: DLCA assumes none (bonds are permanent); a few mean
@@ -90,6 +113,11 @@ struct DiffusionLimitedResult {
   // the extracted copy lacks them. Non-zero when the cluster has grown about as large as the box.
   std::size_t image_contacts = 0;
   std::int64_t relaxation_steps = 0;
+  // Engine steps times the primaries they moved: N steps in plain mode; with the rigid far field
+  // those of the encounters, and `encounters` how many there were.
+  std::int64_t engine_particle_steps = 0;
+  std::uint64_t encounters = 0;
+  std::uint64_t overlaps = 0;  // RigidFarFieldOutcome::overlaps
 };
 
 // Throws std::invalid_argument for bad parameters and std::runtime_error, naming how many

@@ -3,15 +3,13 @@
 #include <algorithm>
 
 #include "engine/cluster/cluster_analysis.hpp"
-#include "engine/growth/contact_clusters.hpp"
 
 namespace aerobreak {
 
-void GrowthHistory::record(const Simulation& simulation) {
-  for (const ContactCluster& c : contact_clusters(simulation)) {
+void GrowthHistory::record(const std::vector<ContactCluster>& clusters, double primary_radius) {
+  for (const ContactCluster& c : clusters) {
     if (c.members.size() < smallest_) continue;
-    Cluster cluster{c.position, {}};
-    for (std::size_t m : c.members) cluster.radius.push_back(simulation.particles().radius[m]);
+    const Cluster cluster{c.position, std::vector<double>(c.members.size(), primary_radius)};
     radius_[{*std::min_element(c.members.begin(), c.members.end()), c.members.size()}] = radius_of_gyration(cluster);
   }
 }

@@ -2,20 +2,24 @@
 // second and seconds per cluster, each size repeated until at least a second has been spent.
 // Then tunable (FracVAL) aggregation at Df = 1.8 and 2.6, likewise, and diffusion-limited
 // aggregation grown by the engine (engine/growth, default parameters, sintered), one cluster per
-// size.
+// size: `bench_cluster [N ...]` (default 256 1024 4096).
 #include <chrono>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <utility>
+#include <vector>
 
 #include "engine/cluster/ballistic_aggregation.hpp"
 #include "engine/cluster/tunable_aggregation.hpp"
 #include "engine/growth/diffusion_limited_aggregation.hpp"
 
-int main() {
+int main(int argc, char** argv) {
   using clock = std::chrono::steady_clock;
+  std::vector<std::size_t> dlca_sizes;
+  for (int a = 1; a < argc; ++a) dlca_sizes.push_back(static_cast<std::size_t>(std::strtoull(argv[a], nullptr, 10)));
+  if (dlca_sizes.empty()) dlca_sizes = {256, 1024, 4096};
   std::printf("%8s %10s %16s %18s\n", "N", "clusters", "clusters/s", "seconds/cluster");
   std::uint64_t seed = 1;
   for (std::size_t n : {256, 1024, 4096}) {
@@ -49,28 +53,19 @@ int main() {
     }
   }
 
-  // DLCA: one cluster at N = 64 and 256 (minutes; the time varies several-fold with the seed,
-  // since the last two clusters meet after an exponentially distributed wait). At a fixed volume
-  // fraction one cluster costs ~N^2.44: N primaries times a growth time ~N^(2 - 1/D_f) (free-
-  // draining clusters, D ~ 1/n, collision radius ~n^(1/D_f)). The 1024 and 4096 rows are that
-  // extrapolation from 256, not measurements, and at 1 % volume fraction such clusters would
-  // also crowd the box (D_f rises); a dilute box costs more still.
-  std::printf("\nDLCA (engine/growth, sintered, defaults)\n%8s %10s %16s %18s\n", "N", "clusters", "clusters/s",
-              "seconds/cluster");
-  double seconds_at_256 = 0.0;
-  for (std::size_t n : {64, 256}) {
+  // DLCA grown by the engine with the rigid far field (the default for sintered growth), one
+  // cluster per size; the time varies several-fold with the seed (the last clusters meet after an
+  // exponentially distributed wait). Sizes from the command line (default 256 1024 4096).
+  std::printf("\nDLCA (engine/growth, sintered, defaults: volume fraction %.3g, rigid far field)\n%8s %10s %16s %18s\n",
+              aerobreak::DiffusionLimitedParameters{}.volume_fraction, "N", "clusters", "clusters/s", "seconds/cluster");
+  for (std::size_t n : dlca_sizes) {
     aerobreak::DiffusionLimitedParameters p;
     p.primary_count = n;
-    p.sintering = true;
     const auto start = clock::now();
     aerobreak::diffusion_limited_aggregation(p, 1);
     const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
-    std::printf("%8zu %10d %16.4f %18.2f\n", n, 1, 1.0 / elapsed, elapsed);
-    seconds_at_256 = elapsed;
-  }
-  for (std::size_t n : {1024, 4096}) {
-    const double estimate = seconds_at_256 * std::pow(static_cast<double>(n) / 256.0, 2.44);
-    std::printf("%8zu %10s %16.2e %18.3g  (estimate, N^2.44 from 256)\n", n, "-", 1.0 / estimate, estimate);
+    std::printf("%8zu %10d %16.3g %18.1f\n", n, 1, 1.0 / elapsed, elapsed);
+    std::fflush(stdout);
   }
   return 0;
 }
