@@ -3,6 +3,7 @@
 #include <httplib.h>
 #include <arpa/inet.h>
 
+#include <chrono>
 #include <stdexcept>
 
 #include "orchestrator/service/http_api.hpp"
@@ -40,7 +41,15 @@ void Service::start() {
   if (port_ <= 0)
     throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
                              " (address in use? another port: --port)");
-  thread_ = std::thread([this] { server_->listen_after_bind(); });
+  listening_ended_ = false;
+  thread_ = std::thread([this] {
+    server_->listen_after_bind();
+    listening_ended_ = true;
+  });
+  // cpp-httplib's stop() does nothing to a server whose thread has not yet begun to listen, and
+  // that thread would then wait in accept() for good (seen: `aerobreak run` finishing a study
+  // within milliseconds hung at exit). Return once it listens, or has already given up.
+  while (!server_->is_running() && !listening_ended_) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 void Service::stop() {

@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -54,6 +55,7 @@ class Service {
   ServiceOptions options_;
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
+  std::atomic<bool> listening_ended_{false};  // the listening thread has returned
   int port_ = 0;
 };
 
