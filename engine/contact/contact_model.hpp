@@ -39,7 +39,6 @@ struct ContactLoad {
 // once per run, so the pair loop holds no model switches.
 template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
 struct ContactModel {
-
   Normal normal;
   Damping damping;
   Tangential tangential;

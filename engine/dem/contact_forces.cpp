@@ -58,7 +58,7 @@ class ContactForcesFor final : public ContactForces {
         ++ledger.events.made;
         hand_over(local, -overlap, state.constants.radius, +1.0);
       }
-      if (overlap < -ledger.pool.constants(slot).break_overlap) {
+      if (overlap < -ledger.pool.constant_columns.break_overlap[slot]) {
         close(slot, overlap, dot(p.velocity[i], into_wall), dt, local);
         continue;
       }
@@ -66,7 +66,7 @@ class ContactForcesFor final : public ContactForces {
       const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
                                  p.radius[i] - overlap, 0.0};
       const ContactLoad load = model_.evaluate(state, motion, dt, tally);
-      ledger.pool.store(slot, state);
+      ledger.pool.history.set(slot, state);
       deepest = std::max(deepest, overlap / state.constants.radius);
       p.force[i] += load.force_i;
       p.torque[i] += load.torque_i;

@@ -26,7 +26,7 @@ class ContactPool {
       slot = free_.back();
       free_.pop_back();
     }
-    store(slot, state);
+    history.set(slot, state);
     i_[slot] = state.i;
     j_[slot] = state.j;
     constant_columns.set(slot, state.constants);
@@ -38,7 +38,7 @@ class ContactPool {
     free_.push_back(slot);
   }
 
-  // The contact in one piece (a copy), and its history written back.
+  // The contact in one piece (a copy).
   ContactState state(std::int32_t slot) const {
     ContactState s;
     static_cast<ContactHistory&>(s) = history.get(slot);
@@ -48,9 +48,6 @@ class ContactPool {
     s.with_wall = with_wall_;
     return s;
   }
-  void store(std::int32_t slot, const ContactHistory& h) { history.set(slot, h); }
-
-  ContactConstants constants(std::int32_t slot) const { return constant_columns.get(slot); }
   std::uint32_t i(std::size_t slot) const { return i_[slot]; }
   std::uint32_t j(std::size_t slot) const { return j_[slot]; }
   bool live(std::size_t slot) const { return live_[slot] != 0; }

@@ -105,17 +105,17 @@ RelaxationResult relax_cluster(Particles particles, const std::vector<Material>&
 
   RelaxationResult result;
   // Kinetic energy alone can be small while a heavily dragged network still creeps: both must be.
+  Residual r = residual(sim.particles(), own);
   while (sim.step_count() < settings.max_steps) {
     sim.run(500);
-    const Residual r = residual(sim.particles(), own);
+    r = residual(sim.particles(), own);
     if (r.kinetic_per_particle < settings.kinetic_tolerance && r.largest_force < settings.force_tolerance) {
       result.converged = true;
       break;
     }
   }
-  const Residual final_residual = residual(sim.particles(), own);
-  result.largest_force = final_residual.largest_force;
-  result.kinetic_per_particle = final_residual.kinetic_per_particle;
+  result.largest_force = r.largest_force;
+  result.kinetic_per_particle = r.kinetic_per_particle;
   result.steps = sim.step_count();
   result.contacts = sim.contacts().size();
   result.contacts_broken = sim.pair_events().broken;

@@ -31,8 +31,9 @@ ContactModelSpec growth_model(const DiffusionLimitedParameters& p, const Materia
   spec.critical_rolling = p.critical_rolling;
   spec.twisting = p.sintering;
   if (p.damping_ratio > 0.0) {
-    // As relaxation.cpp: stiffness about equilibrium 3.6 F_c R* / a0^2 (eqs 2, 5), critical
-    // coefficient 2 sqrt(k m*), and eta = 2 A E* a (eq 8) equal to the wanted share of it at a = a0.
+    // Stiffness about equilibrium 3.6 F_c R* / a0^2 (eqs 2, 5), critical coefficient
+    // 2 sqrt(k m*), and eta = 2 A E* a (eq 8) equal to the wanted share of it at a = a0 (one A
+    // serves: the primaries are all alike).
     const ContactConstants c = primary_contact(material, spec, kDiameter, kMass);
     const double stiffness = 3.6 * c.pull_off_force * c.radius / (c.equilibrium_radius * c.equilibrium_radius);
     spec.damping = DampingLaw::viscoelastic;
