@@ -1,34 +1,22 @@
 #pragma once
-#include <unistd.h>
-
-#include <atomic>
 #include <filesystem>
-#include <random>
 #include <string>
-#include <system_error>
+
+#include "tests/support/scratch_directory.hpp"
 
 namespace aerobreak::test {
 
-// A unique file name in the system's temporary directory; the file (if any) is removed when the
-// object goes out of scope.
+// A unique file name, ending in `suffix`, in a scratch directory of its own; the file (if any) is
+// removed with the directory when the object goes out of scope.
 class TemporaryPath {
  public:
-  explicit TemporaryPath(const std::string& suffix) {
-    static std::atomic<unsigned> counter{0};
-    const std::string name = "aerobreak_io_test_" + std::to_string(::getpid()) + "_" +
-                             std::to_string(std::random_device{}()) + "_" + std::to_string(counter++) + suffix;
-    path_ = std::filesystem::temp_directory_path() / name;
-  }
-  TemporaryPath(const TemporaryPath&) = delete;
-  TemporaryPath& operator=(const TemporaryPath&) = delete;
-  ~TemporaryPath() {
-    std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
-  }
+  explicit TemporaryPath(const std::string& suffix)
+      : directory_("io_test"), path_(directory_.path() / ("file" + suffix)) {}
 
   const std::filesystem::path& path() const { return path_; }
 
  private:
+  testing::ScratchDirectory directory_;
   std::filesystem::path path_;
 };
 
