@@ -19,6 +19,8 @@ struct ContactConstants {
   double critical_overlap = 0.0;   // delta_c, eq 3
   double break_overlap = 0.0;      // the contact ends when delta < -break_overlap
   double overlap_scale = 1.0;      // delta times this is the overlap the law solves for (JKR: R*/a0^2)
+
+  bool operator==(const ContactConstants&) const = default;
 };
 
 // What the normal law hands to the other slots (DESIGN.md "Style": explicit, no shared state).

@@ -58,7 +58,7 @@ class ContactForcesFor final : public ContactForces {
         ++ledger.events.made;
         hand_over(local, -overlap, state.constants.radius, +1.0);
       }
-      if (overlap < -ledger.pool.constant_columns.break_overlap[slot]) {
+      if (overlap < -ledger.pool.break_overlap(slot)) {
         close(slot, overlap, dot(p.velocity[i], into_wall), dt, local);
         continue;
       }
@@ -117,7 +117,7 @@ class ContactForcesFor final : public ContactForces {
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
         const Vec3 normal = separation * (1.0 / distance);
-        if (overlap < -pool.constant_columns.break_overlap[slot]) {
+        if (overlap < -pool.break_overlap(slot)) {
           close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
           continue;
         }
@@ -135,22 +135,10 @@ class ContactForcesFor final : public ContactForces {
     ContactPool& pool = ledger.pool;
     const std::size_t size = block.size();
     if (size == 0) return;
-    // Slots follow the pairs since the last rebuild, so a block's contacts usually hold
-    // consecutive slots: then the laws work on the pool's columns in place. Otherwise (a contact
-    // formed or broke since) they work on copies in the block.
-    const std::int32_t first_slot = block.slot[0];
-    bool consecutive = true;
-    for (std::size_t q = 1; q < size; ++q) consecutive = consecutive && block.slot[q] == first_slot + std::int32_t(q);
-    if (consecutive) {
-      evaluate(pool.history, pool.constant_columns, static_cast<std::size_t>(first_slot), block.motion, size, dt);
-    } else {
-      for (std::size_t q = 0; q < size; ++q) {
-        block.history.set(q, pool.history.get(block.slot[q]));
-        block.constants.set(q, pool.constant_columns.get(block.slot[q]));
-      }
-      evaluate(block.history, block.constants, 0, block.motion, size, dt);
-      for (std::size_t q = 0; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
-    }
+    if (pool.shared_constants())
+      evaluate_block(block, pool, SharedConstants{*pool.shared_constants()}, dt);
+    else
+      evaluate_block(block, pool, ColumnConstants{pool.constant_columns()}, dt);
     Vec3* force = p.force.data();
     Vec3* torque = p.torque.data();
     double deepest = ledger.events.deepest_overlap_ratio;
@@ -162,22 +150,61 @@ class ContactForcesFor final : public ContactForces {
       torque[i] += load.torque_i;
       torque[j] += load.torque_j;
       ledger.tally += block.motion.dissipation(q);
-      deepest = std::max(deepest, block.motion.overlap[q] / pool.constant_columns.radius[block.slot[q]]);
+      deepest = std::max(deepest, block.motion.overlap[q] / pool.reduced_radius(block.slot[q]));
     }
     ledger.events.deepest_overlap_ratio = deepest;
     block.clear();
   }
 
-  // The laws of `size` contacts whose history and constants are at `offset` onwards of the given
-  // columns and whose motion is at 0 onwards of `motion`.
-  void evaluate(ContactHistoryColumns& history, const ContactConstantColumns& constants, std::size_t offset,
+  // Where the laws read a contact's constants: one set shared by the whole pool ...
+  struct SharedConstants {
+    ContactConstants shared;
+    [[gnu::always_inline]] ContactConstants get(std::size_t) const { return shared; }
+    SharedConstants from(std::size_t) const { return *this; }
+    SharedConstants copied(ContactBlock&, const ContactPool&) const { return *this; }
+  };
+  // ... or columns, from `offset` on.
+  struct ColumnConstants {
+    const ContactConstantColumns& columns;
+    std::size_t offset = 0;
+    [[gnu::always_inline]] ContactConstants get(std::size_t q) const { return columns.get(offset + q); }
+    ColumnConstants from(std::size_t first) const { return {columns, first}; }
+    ColumnConstants copied(ContactBlock& block, const ContactPool& pool) const {
+      for (std::size_t q = 0; q < block.size(); ++q) block.constants.set(q, pool.constant_columns().get(block.slot[q]));
+      return {block.constants, 0};
+    }
+  };
+
+  // Slots follow the pairs since the last rebuild, so a block's contacts usually hold consecutive
+  // slots: then the laws work on the pool's columns in place. Otherwise (a contact formed or broke
+  // since) they work on copies in the block.
+  template <class Constants>
+  void evaluate_block(ContactBlock& block, ContactPool& pool, const Constants& constants, double dt) const {
+    const std::size_t size = block.size();
+    const std::int32_t first_slot = block.slot[0];
+    bool consecutive = true;
+    for (std::size_t q = 1; q < size; ++q) consecutive = consecutive && block.slot[q] == first_slot + std::int32_t(q);
+    if (consecutive) {
+      const auto offset = static_cast<std::size_t>(first_slot);
+      evaluate(pool.history, offset, constants.from(offset), block.motion, size, dt);
+      return;
+    }
+    for (std::size_t q = 0; q < size; ++q) block.history.set(q, pool.history.get(block.slot[q]));
+    evaluate(block.history, 0, constants.copied(block, pool), block.motion, size, dt);
+    for (std::size_t q = 0; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
+  }
+
+  // The laws of `size` contacts whose history is at `offset` onwards of `history` and whose
+  // motion is at 0 onwards of `motion`.
+  template <class Constants>
+  void evaluate(ContactHistoryColumns& history, std::size_t offset, const Constants& constants,
                 ContactMotionColumns& motion, std::size_t size, double dt) const {
     // Every column is indexed by the contact alone: no iteration depends on another.
 #pragma GCC ivdep
     for (std::size_t q = 0; q < size; ++q) {
       ContactHistory state = history.get(offset + q);
       DissipationTally tally;
-      const ContactLoad load = model_.evaluate(state, constants.get(offset + q), motion.get(q), dt, tally);
+      const ContactLoad load = model_.evaluate(state, constants.get(q), motion.get(q), dt, tally);
       history.set(offset + q, state);
       motion.set_result(q, load, tally);
     }

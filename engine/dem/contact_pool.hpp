@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/contact/contact_state.hpp"
@@ -13,6 +14,10 @@ namespace aerobreak {
 // contacts in slot order, streams just the columns it needs. Slots are reused; a slot's index is
 // stable while its contact lives (neighbour lists and wall tables refer to contacts by slot)
 // until renumber() packs the live contacts into the order the caller gives.
+// Constants are kept once for the whole pool while every contact it has held had the same ones
+// (spheres of one radius and one material, as in a monodisperse cluster), so that the pair loop
+// reads them as scalars instead of streaming eleven columns; per slot from the first contact
+// that differs.
 class ContactPool {
  public:
   explicit ContactPool(bool with_wall) : with_wall_(with_wall) {}
@@ -29,7 +34,7 @@ class ContactPool {
     history.set(slot, state);
     i_[slot] = state.i;
     j_[slot] = state.j;
-    constant_columns.set(slot, state.constants);
+    store_constants(slot, state.constants);
     live_[slot] = 1;
     return slot;
   }
@@ -42,12 +47,22 @@ class ContactPool {
   ContactState state(std::int32_t slot) const {
     ContactState s;
     static_cast<ContactHistory&>(s) = history.get(slot);
-    s.constants = constant_columns.get(slot);
+    s.constants = constants(slot);
     s.i = i_[slot];
     s.j = j_[slot];
     s.with_wall = with_wall_;
     return s;
   }
+  ContactConstants constants(std::size_t slot) const { return shared_ ? *shared_ : constant_columns_.get(slot); }
+  double break_overlap(std::size_t slot) const {
+    return shared_ ? shared_->break_overlap : constant_columns_.break_overlap[slot];
+  }
+  double reduced_radius(std::size_t slot) const { return shared_ ? shared_->radius : constant_columns_.radius[slot]; }
+  // The constants of every contact, while they are shared (else empty) ...
+  const std::optional<ContactConstants>& shared_constants() const { return shared_; }
+  // ... or else per slot.
+  const ContactConstantColumns& constant_columns() const { return constant_columns_; }
+
   std::uint32_t i(std::size_t slot) const { return i_[slot]; }
   std::uint32_t j(std::size_t slot) const { return j_[slot]; }
   bool live(std::size_t slot) const { return live_[slot] != 0; }
@@ -67,15 +82,18 @@ class ContactPool {
   }
 
   ContactHistoryColumns history;
-  ContactConstantColumns constant_columns;
 
  private:
   void grow();
+  void store_constants(std::int32_t slot, const ContactConstants& constants);
 
   bool with_wall_;
   std::vector<std::uint32_t> i_, j_;
   std::vector<std::uint8_t> live_;
   std::vector<std::int32_t> free_;
+  std::optional<ContactConstants> shared_;
+  bool per_slot_ = false;  // constants differ between contacts: kept in constant_columns_
+  ContactConstantColumns constant_columns_;
 };
 
 // Every live contact of a run, particle-particle and particle-wall.
