@@ -7,20 +7,6 @@ namespace aerobreak {
 VerletNeighborList::VerletNeighborList(std::unique_ptr<NeighborSearch> search, double margin, double skin)
     : search_(std::move(search)), margin_(margin), skin_(skin) {}
 
-std::vector<std::int32_t> VerletNeighborList::update(const Particles& particles, const ContactPool& pool) {
-  std::vector<std::int32_t> lost;
-  if (stale(particles)) rebuild(particles, pool, lost);
-  return lost;
-}
-
-bool VerletNeighborList::stale(const Particles& particles) const {
-  const double limit2 = 0.25 * skin_ * skin_;
-  bool stale = built_at_.size() != particles.size();
-  for (std::size_t i = 0; i < particles.size() && !stale; ++i)
-    stale = norm2(particles.position[i] - built_at_[i]) > limit2;
-  return stale;
-}
-
 void VerletNeighborList::rebuild(const Particles& particles, const ContactPool& pool, std::vector<std::int32_t>& lost) {
   search_->find_pairs(particles.position, particles.radius, margin_ + skin_, pairs_);
   built_at_ = particles.position;

@@ -17,11 +17,12 @@ class VerletNeighborList {
  public:
   VerletNeighborList(std::unique_ptr<NeighborSearch> search, double margin, double skin);
 
-  // Rebuilds if needed; returns the contacts whose pair is no longer listed (none unless the
-  // particles moved further than the skin allows), for the caller to close.
-  std::vector<std::int32_t> update(const Particles& particles, const ContactPool& pool);
-  // Whether some particle has moved more than skin/2 since the last build (or none was made).
-  bool stale(const Particles& particles) const;
+  // Positions at the last build, and the squared displacement from them past which the list is
+  // stale (some particle has moved more than skin/2): the caller checks while it moves them.
+  const std::vector<Vec3>& built_at() const { return built_at_; }
+  double displacement_limit2() const { return 0.25 * skin_ * skin_; }
+  // Lists the pairs anew; appends to `lost` the contacts whose pair is no longer listed (none
+  // unless the particles moved further than the skin allows), for the caller to close.
   void rebuild(const Particles& particles, const ContactPool& pool, std::vector<std::int32_t>& lost);
 
   PairList& pairs() { return pairs_; }

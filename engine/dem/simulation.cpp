@@ -112,7 +112,8 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
     settings_.periodic->require_single_image(2.0 * largest + margin + skin);
   }
   neighbors_ = std::make_unique<VerletNeighborList>(std::move(search), margin, skin);
-  compute_forces(settings_.initial_bond_gap);
+  particles_.clear_forces();
+  compute_forces(true, settings_.initial_bond_gap);
 }
 
 double Simulation::speed_scale() const {
@@ -157,32 +158,59 @@ double Simulation::interaction_margin() const {
   return margin;
 }
 
-void Simulation::step() {
-  const std::size_t n = particles_.size();
-  Particles& p = particles_;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
-    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
-    p.position[i] += dt_ * p.velocity[i];
+void Simulation::step() { run(1); }
+
+// Velocity Verlet, with the closing half kick of one step and the opening half kick of the next
+// done in one pass over the particles (two additions, rounded as two separate passes would be), so
+// that the particles' arrays are streamed once per step for the integration, the force reset and
+// the neighbour list's displacement check together. Between calls the velocities are whole-step.
+void Simulation::run(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) {
+    const bool moved_too_far = s == 0 ? kick_and_drift<1>() : kick_and_drift<2>();
+    time_ += dt_;
+    ++steps_;
+    compute_forces(moved_too_far);
   }
-  time_ += dt_;
-  ++steps_;
-  compute_forces();
-  for (std::size_t i = 0; i < n; ++i) {
-    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
-    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
-  }
+  if (steps > 0) kick();
 }
 
-void Simulation::run(std::int64_t steps) {
-  for (std::int64_t s = 0; s < steps; ++s) step();
+// `Kicks` half kicks with the current forces, a drift over dt, and the forces cleared for the
+// next evaluation; returns whether some particle has now moved more than half the skin since the
+// neighbour list was built.
+template <int Kicks>
+bool Simulation::kick_and_drift() {
+  Particles& p = particles_;
+  const std::size_t n = p.size();
+  const std::vector<Vec3>& built_at = neighbors_->built_at();
+  if (built_at.size() != n) throw std::logic_error("simulation: neighbour list built for other particles");
+  const double limit2 = neighbors_->displacement_limit2();
+  bool moved_too_far = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < Kicks; ++k) {
+      p.velocity[i] += half_step_per_mass_[i] * p.force[i];
+      p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
+    }
+    p.position[i] += dt_ * p.velocity[i];
+    p.force[i] = Vec3{};
+    p.torque[i] = Vec3{};
+    moved_too_far |= norm2(p.position[i] - built_at[i]) > limit2;
+  }
+  return moved_too_far;
+}
+
+void Simulation::kick() {
+  Particles& p = particles_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
+    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
+  }
 }
 
 // Periodic or not is fixed for the run; each branch below calls a loop compiled for that case.
-void Simulation::compute_forces(double formation_gap) {
-  particles_.clear_forces();
+// The forces and torques must have been cleared.
+void Simulation::compute_forces(bool rebuild, double formation_gap) {
   std::vector<std::int32_t> lost;
-  if (neighbors_->stale(particles_)) {
+  if (rebuild) {
     // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
     if (settings_.periodic) wrap_positions();
     neighbors_->rebuild(particles_, pair_pool_, lost);

@@ -74,7 +74,10 @@ class Simulation {
   Vec3 separation(std::size_t i, std::size_t j) const;
 
  private:
-  void compute_forces(double formation_gap = 0.0);
+  void compute_forces(bool rebuild, double formation_gap = 0.0);
+  template <int Kicks>
+  bool kick_and_drift();
+  void kick();
   template <class Space>
   void add_van_der_waals(const Space& separation_of);
   void wrap_positions();
