@@ -100,6 +100,7 @@ class ContactForcesFor final : public ContactForces {
     block.clear();
     const std::size_t n = pairs.particles();
     for (std::uint32_t i = 0; i < n; ++i) {
+      prefetch_particle(p, std::min<std::size_t>(i + prefetch_distance, n - 1));
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
       for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k) {
@@ -129,6 +130,20 @@ class ContactForcesFor final : public ContactForces {
     }
     finish_block(block, p, dt, local);
     ledger.tally += tally;
+  }
+
+  // A cluster's pairs join particles close in index (BCCA and DLCA append whole clusters), so
+  // the pass over the pairs walks the particles' arrays front to back; asking for those some
+  // particles ahead, force and torque included (the block's last pass adds to them), keeps that
+  // walk from waiting on memory once the arrays outgrow the caches (64,000 primaries: about
+  // 10 % fewer nanoseconds per particle-step, measured; no change at 16,000).
+  static constexpr std::size_t prefetch_distance = 48;
+  static void prefetch_particle(const Particles& p, std::size_t i) {
+    __builtin_prefetch(&p.position[i]);
+    __builtin_prefetch(&p.velocity[i]);
+    __builtin_prefetch(&p.angular_velocity[i]);
+    __builtin_prefetch(&p.force[i], 1);
+    __builtin_prefetch(&p.torque[i], 1);
   }
 
   void finish_block(ContactBlock& block, Particles& p, double dt, ContactLedger& ledger) const {
