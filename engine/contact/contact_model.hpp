@@ -20,15 +20,6 @@ struct ContactMotion {
   double lever_j = 0.0;
 };
 
-// Energy a contact takes with it when it lets go: what its springs stored at the last evaluation,
-// plus the elastic work over the final step, trapezoidal as velocity Verlet applies it with the
-// force falling to zero; and the last damping force's work over its final half step.
-inline void book_release(const ContactState& s, double overlap, double approach_rate, double dt,
-                         DissipationTally& tally) {
-  tally.breaking += s.stored_energy + 0.5 * s.elastic_force * (overlap - s.overlap);
-  tally.damping += 0.5 * s.damping_force * approach_rate * dt;
-}
-
 struct ContactLoad {
   Vec3 force_i;   // force on i; j receives -force_i
   Vec3 torque_i;
@@ -51,6 +42,23 @@ struct ContactModel {
     s.contact_radius = normal.respond(overlap, s.constants).contact_radius;
     s.overlap = overlap;
     if (s.constants.pull_off_force > 0.0) s.rolling_stiffness = RollingResistance::rolling_stiffness(s.contact_radius, s.constants);
+  }
+
+  // Elastic energy of all the contact's springs at its last evaluation.
+  double stored_energy(const ContactHistory& s, const ContactConstants& c) const {
+    return normal.respond(s.overlap, c).energy + tangential.energy(s.tangential_stretch, s.contact_radius, c) +
+           rolling.energy(s.rolling_displacement, s.rolling_stiffness, c) +
+           twisting.energy(s.twist_angle, s.contact_radius, c);
+  }
+
+  // Energy a contact takes with it when it lets go at `overlap`: what its springs stored at the
+  // last evaluation, plus the elastic work over the final step, trapezoidal as velocity Verlet
+  // applies it with the force falling to zero; and the last damping force's work over its final
+  // half step.
+  void release(const ContactState& s, double overlap, double approach_rate, double dt, DissipationTally& tally) const {
+    const double elastic_force = normal.respond(s.overlap, s.constants).force;
+    tally.breaking += stored_energy(s, s.constants) + 0.5 * elastic_force * (overlap - s.overlap);
+    tally.damping += 0.5 * s.damping_force * approach_rate * dt;
   }
 
   // Forces and torques of a live contact (eq 15 and eq 16), updating its history.
@@ -77,16 +85,13 @@ struct ContactModel {
 
     const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load,
                                response.radius_ratio_three_halves};
-    double energy = response.energy;
     const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
-    const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, energy, tally);
+    const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, tally);
     const Vec3 relative_spin = m.spin_i - m.spin_j;
-    const Vec3 resistance = rolling.torque(s.rolling_displacement, s.rolling_stiffness, relative_spin, spring, c, energy, tally) +
-                            twisting.torque(s.twist_angle, relative_spin, spring, c, energy, tally);
+    const Vec3 resistance = rolling.torque(s.rolling_displacement, s.rolling_stiffness, relative_spin, spring, c, tally) +
+                            twisting.torque(s.twist_angle, relative_spin, spring, c, tally);
     s.contact_radius = response.contact_radius;
-    s.stored_energy = energy;
     s.overlap = m.overlap;
-    s.elastic_force = response.force;
 
     const Vec3 lever_torque = cross(m.normal, tangential_force);
     return {tangential_force - normal_force * m.normal, m.lever_i * lever_torque + resistance,

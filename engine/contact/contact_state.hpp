@@ -6,16 +6,15 @@
 
 namespace aerobreak {
 
-// What one live contact carries from step to step: the springs' history and the values of its
-// last evaluation. The laws update it (ContactModel::evaluate).
+// What one live contact carries from step to step: the springs' history and what its last
+// evaluation found. The laws update it (ContactModel::evaluate); the energy the springs store
+// follows from it (ContactModel::stored_energy), so the pair loop does not write it every step.
 struct ContactHistory {
   Vec3 tangential_stretch;     // Mindlin spring (eqs 11-14)
   Vec3 rolling_displacement;   // xi (eq 18)
   double twist_angle = 0.0;    // phi (eq 17)
   double contact_radius = 0.0; // a at the last evaluation
-  double stored_energy = 0.0;  // elastic energy of all springs at the last evaluation
   double overlap = 0.0;        // delta at the last evaluation
-  double elastic_force = 0.0;  // elastic normal force at the last evaluation
   double damping_force = 0.0;  // normal damping force at the last evaluation (for its work)
   double rolling_stiffness = 0.0;  // k_r at the last evaluation (eq 18)
 };

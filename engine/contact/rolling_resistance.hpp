@@ -6,10 +6,10 @@
 namespace aerobreak {
 
 struct NoRolling {
-  Vec3 torque(Vec3&, double&, const Vec3&, const SpringContext&, const ContactConstants&, double&,
-              DissipationTally&) const {
+  Vec3 torque(Vec3&, double&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const {
     return {};
   }
+  static double energy(const Vec3&, double, const ContactConstants&) { return 0.0; }
 };
 
 // Rolling resistance of sintered contacts (report section 2.2, eq 18, after Zhao & Marshall 2008
@@ -22,8 +22,8 @@ struct RollingResistance {
   double critical_displacement = 0.0;  // xi_crit
 
   // previous_stiffness: k_r of the last step, replaced by this step's.
-  [[gnu::always_inline]] Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin, const SpringContext& s,
-              const ContactConstants& c, double& energy, DissipationTally& tally) const {
+  [[gnu::always_inline]] Vec3 torque(Vec3& displacement, double& previous_stiffness, const Vec3& relative_spin,
+                                     const SpringContext& s, const ContactConstants& c, DissipationTally& tally) const {
     displacement = rotate_into_plane(displacement, s.normal);
     const double stiffness = 4.0 * c.pull_off_force * s.radius_ratio_three_halves;
     const double compliance = 0.5 / c.radius;
@@ -35,9 +35,13 @@ struct RollingResistance {
     const bool slips = length2 > critical_displacement * critical_displacement;  // selects: see Mindlin
     displacement *= slips ? critical_displacement / std::sqrt(length2) : 1.0;
     tally.rolling += slips ? slip_dissipation(2.0 * compliance * stiffness, before, increment, displacement) : 0.0;
-    energy += compliance * stiffness * norm2(displacement);
     previous_stiffness = stiffness;
     return stiffness * cross(s.normal, displacement);
+  }
+
+  // Energy of the spring displaced by xi at stiffness k_r: k_r |xi|^2 / (2 R*).
+  static double energy(const Vec3& displacement, double stiffness, const ContactConstants& c) {
+    return 0.5 / c.radius * stiffness * norm2(displacement);
   }
 
   static double rolling_stiffness(double a, const ContactConstants& c) {

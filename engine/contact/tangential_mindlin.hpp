@@ -18,9 +18,8 @@ struct SpringContext {
 };
 
 struct NoTangential {
-  Vec3 force(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
-    return {};
-  }
+  Vec3 force(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const { return {}; }
+  static double energy(const Vec3&, double, const ContactConstants&) { return 0.0; }
 };
 
 // Mindlin no-slip spring with Coulomb slip (report eqs 10-14). k_t = 8 G* a, which is eq 11,
@@ -31,9 +30,9 @@ struct MindlinTangential {
   double friction = 0.0;  // mu
 
   // stretch: the history; slip_velocity: tangential velocity of i's contact point relative to j's.
-  // Returns the tangential force on i; adds the spring's energy to `energy`.
-  [[gnu::always_inline]] Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s, const ContactConstants& c,
-             double& energy, DissipationTally& tally) const {
+  // Returns the tangential force on i.
+  [[gnu::always_inline]] Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s,
+                                    const ContactConstants& c, DissipationTally& tally) const {
     stretch = rotate_into_plane(stretch, s.normal);
     const double stiffness = 8.0 * c.shear * s.contact_radius;
     // 0.5 (k_t - k_t,previous) |s|^2, with the difference taken of the radii: exactly zero at a
@@ -49,8 +48,12 @@ struct MindlinTangential {
     const bool slides = trial2 > limit * limit;
     stretch *= slides ? limit / std::sqrt(trial2) : 1.0;
     tally.friction += slides ? slip_dissipation(stiffness, before, increment, stretch) : 0.0;
-    energy += 0.5 * stiffness * norm2(stretch);
     return -stiffness * stretch;
+  }
+
+  // Energy of the spring stretched by `stretch` at contact radius a: k_t |s|^2 / 2.
+  static double energy(const Vec3& stretch, double contact_radius, const ContactConstants& c) {
+    return 0.5 * (8.0 * c.shear * contact_radius) * norm2(stretch);
   }
 };
 

@@ -7,9 +7,8 @@
 namespace aerobreak {
 
 struct NoTwisting {
-  Vec3 torque(double&, const Vec3&, const SpringContext&, const ContactConstants&, double&, DissipationTally&) const {
-    return {};
-  }
+  Vec3 torque(double&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const { return {}; }
+  static double energy(double, double, const ContactConstants&) { return 0.0; }
 };
 
 // Twisting resistance (report section 2.2, eq 17, after Marshall 2009): a torsion spring on the
@@ -19,8 +18,8 @@ struct NoTwisting {
 struct TwistingResistance {
   double friction = 0.0;  // mu
 
-  [[gnu::always_inline]] Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s, const ContactConstants& c,
-              double& energy, DissipationTally& tally) const {
+  [[gnu::always_inline]] Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s,
+                                     const ContactConstants& c, DissipationTally& tally) const {
     const double a = s.contact_radius;
     const double stiffness = 4.0 * c.shear * a * a * a;
     const double a_prev = s.previous_radius;
@@ -35,8 +34,13 @@ struct TwistingResistance {
     angle = slips ? (trial > 0.0 ? std::copysign(limit / stiffness, angle) : 0.0) : angle;
     tally.twisting +=
         slips ? slip_dissipation(stiffness, {before, 0.0, 0.0}, {increment, 0.0, 0.0}, {angle, 0.0, 0.0}) : 0.0;
-    energy += 0.5 * stiffness * angle * angle;
     return -stiffness * angle * s.normal;
+  }
+
+  // Energy of the torsion spring twisted by phi at contact radius a: k_tw phi^2 / 2.
+  static double energy(double angle, double contact_radius, const ContactConstants& c) {
+    const double a = contact_radius;
+    return 0.5 * (4.0 * c.shear * a * a * a) * angle * angle;
   }
 };
 

@@ -26,6 +26,13 @@ class ContactForcesFor final : public ContactForces {
   NormalResponse normal_response(double overlap, const ContactConstants& constants) const override {
     return model_.normal.respond(overlap, constants);
   }
+  double stored_energy(const ContactState& contact) const override {
+    return model_.stored_energy(contact, contact.constants);
+  }
+  void release(const ContactState& contact, double overlap, double approach_rate, double dt,
+               DissipationTally& tally) const override {
+    model_.release(contact, overlap, approach_rate, dt, tally);
+  }
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
                        double formation_gap, ContactLedger ledger) const override {
@@ -240,9 +247,9 @@ class ContactForcesFor final : public ContactForces {
 
   // The energy still stored in a contact when it lets go is lost to the system (for JKR, the
   // work of the loading/unloading hysteresis).
-  static void close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) {
+  void close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) const {
     const ContactState state = ledger.pool.state(slot);
-    book_release(state, overlap, approach_rate, dt, ledger.tally);
+    model_.release(state, overlap, approach_rate, dt, ledger.tally);
     hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
     slot = -1;

@@ -52,6 +52,11 @@ class ContactForces {
   virtual void complete(ContactConstants& constants) const = 0;
   // The normal law's response at this overlap (for time-step estimates and diagnostics).
   virtual NormalResponse normal_response(double overlap, const ContactConstants& constants) const = 0;
+  // Elastic energy the springs of a live contact store (ContactModel::stored_energy).
+  virtual double stored_energy(const ContactState& contact) const = 0;
+  // Books the energy a contact takes with it when it lets go at `overlap` (ContactModel::release).
+  virtual void release(const ContactState& contact, double overlap, double approach_rate, double dt,
+                       DissipationTally& tally) const = 0;
 };
 
 // `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).

@@ -17,9 +17,7 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
     h.rolling_displacement = {rolling_x[s], rolling_y[s], rolling_z[s]};
     h.twist_angle = twist[s];
     h.contact_radius = contact_radius[s];
-    h.stored_energy = stored_energy[s];
     h.overlap = overlap[s];
-    h.elastic_force = elastic_force[s];
     h.damping_force = damping_force[s];
     h.rolling_stiffness = rolling_stiffness[s];
     return h;
@@ -33,9 +31,7 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
     rolling_z[s] = h.rolling_displacement.z;
     twist[s] = h.twist_angle;
     contact_radius[s] = h.contact_radius;
-    stored_energy[s] = h.stored_energy;
     overlap[s] = h.overlap;
-    elastic_force[s] = h.elastic_force;
     damping_force[s] = h.damping_force;
     rolling_stiffness[s] = h.rolling_stiffness;
   }
@@ -43,13 +39,13 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
   std::vector<double> stretch_x, stretch_y, stretch_z;  // Mindlin spring (eqs 11-14)
   std::vector<double> rolling_x, rolling_y, rolling_z;  // xi (eq 18)
   std::vector<double> twist;                            // phi (eq 17)
-  std::vector<double> contact_radius, stored_energy, overlap, elastic_force, damping_force, rolling_stiffness;
+  std::vector<double> contact_radius, overlap, damping_force, rolling_stiffness;
 
  private:
   friend class ColumnSet<ContactHistoryColumns>;
   std::vector<std::vector<double>*> columns() {
     return {&stretch_x,      &stretch_y,     &stretch_z, &rolling_x,     &rolling_y,     &rolling_z,        &twist,
-            &contact_radius, &stored_energy, &overlap,   &elastic_force, &damping_force, &rolling_stiffness};
+            &contact_radius, &overlap,      &damping_force, &rolling_stiffness};
   }
 };
 

@@ -262,7 +262,7 @@ void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
     const double distance = norm(separation);
     const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
     const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
-    book_release(c, -gap, approach, dt_, tally_);
+    pair_forces_->release(c, -gap, approach, dt_, tally_);
     if (spec_.van_der_waals) tally_.van_der_waals_handover -= spec_.hamaker.at_gap(gap, c.constants.radius).energy;
     pair_pool_.close(slot);
     ++pair_events_.broken;
@@ -307,9 +307,8 @@ EnergyBudget Simulation::energy() const {
     e.translational_kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]);
     e.rotational_kinetic += 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
   }
-  for (const ContactPool* pool : {&pair_pool_, &wall_pool_})
-    for (std::size_t s = 0; s < pool->capacity(); ++s)
-      if (pool->live(s)) e.contact_elastic += pool->history.stored_energy[s];
+  pair_pool_.for_each([&](const ContactState& c) { e.contact_elastic += pair_forces_->stored_energy(c); });
+  wall_pool_.for_each([&](const ContactState& c) { e.contact_elastic += wall_forces_[c.j]->stored_energy(c); });
   e.van_der_waals = van_der_waals_energy_;
   e.gravitational = gravitational_energy(p, settings_.body.gravity);
   e.dissipation = tally_;

@@ -40,7 +40,8 @@ Evaluation roll(const RollingResistance& law, Vec3& displacement, const Vec3& re
   const double x = a / c.equilibrium_radius;
   const SpringContext context{up, dt, a, a, 0.0, x * std::sqrt(x)};
   double previous_stiffness = RollingResistance::rolling_stiffness(a, c);
-  out.torque = law.torque(displacement, previous_stiffness, relative_spin, context, c, out.energy, out.tally);
+  out.torque = law.torque(displacement, previous_stiffness, relative_spin, context, c, out.tally);
+  out.energy = RollingResistance::energy(displacement, previous_stiffness, c);
   return out;
 }
 

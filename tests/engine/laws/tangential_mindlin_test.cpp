@@ -32,7 +32,8 @@ Evaluation evaluate(double friction, Vec3 stretch, const Vec3& slip, const Vec3&
                     double previous_radius, double coulomb_load, const ContactConstants& c) {
   Evaluation out;
   const SpringContext context{normal, 1.0, radius, previous_radius, coulomb_load};
-  out.force = MindlinTangential{friction}.force(stretch, slip, context, c, out.energy, out.tally);
+  out.force = MindlinTangential{friction}.force(stretch, slip, context, c, out.tally);
+  out.energy = MindlinTangential::energy(stretch, radius, c);
   out.stretch = stretch;
   return out;
 }

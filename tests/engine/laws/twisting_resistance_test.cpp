@@ -26,7 +26,8 @@ Evaluation twist(double friction, double& angle, const Vec3& relative_spin, cons
                  double previous_a, double coulomb_load, const ContactConstants& c) {
   Evaluation out;
   const SpringContext context{normal, 1.0, a, previous_a, coulomb_load};  // dt = 1
-  out.torque = TwistingResistance{friction}.torque(angle, relative_spin, context, c, out.energy, out.tally);
+  out.torque = TwistingResistance{friction}.torque(angle, relative_spin, context, c, out.tally);
+  out.energy = TwistingResistance::energy(angle, a, c);
   return out;
 }
 
