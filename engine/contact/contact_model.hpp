@@ -46,7 +46,11 @@ struct ContactModel {
 
   // Elastic energy of all the contact's springs at its last evaluation.
   double stored_energy(const ContactHistory& s, const ContactConstants& c) const {
-    return normal.respond(s.overlap, c).energy + tangential.energy(s.tangential_stretch, s.contact_radius, c) +
+    return stored_energy(s, c, normal.respond(s.overlap, c));
+  }
+  // The same, given the normal law's response at the last evaluation's overlap.
+  double stored_energy(const ContactHistory& s, const ContactConstants& c, const NormalResponse& last) const {
+    return last.energy + tangential.energy(s.tangential_stretch, s.contact_radius, c) +
            rolling.energy(s.rolling_displacement, s.rolling_stiffness, c) +
            twisting.energy(s.twist_angle, s.contact_radius, c);
   }
@@ -56,8 +60,8 @@ struct ContactModel {
   // applies it with the force falling to zero; and the last damping force's work over its final
   // half step.
   void release(const ContactState& s, double overlap, double approach_rate, double dt, DissipationTally& tally) const {
-    const double elastic_force = normal.respond(s.overlap, s.constants).force;
-    tally.breaking += stored_energy(s, s.constants) + 0.5 * elastic_force * (overlap - s.overlap);
+    const NormalResponse last = normal.respond(s.overlap, s.constants);
+    tally.breaking += stored_energy(s, s.constants, last) + 0.5 * last.force * (overlap - s.overlap);
     tally.damping += 0.5 * s.damping_force * approach_rate * dt;
   }
 

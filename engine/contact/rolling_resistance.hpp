@@ -26,7 +26,7 @@ struct RollingResistance {
                                      const SpringContext& s, const ContactConstants& c, DissipationTally& tally) const {
     displacement = rotate_into_plane(displacement, s.normal);
     const double stiffness = 4.0 * c.pull_off_force * s.radius_ratio_three_halves;
-    const double compliance = 0.5 / c.radius;
+    const double compliance = energy_compliance(c);
     tally.stiffness_work += compliance * (stiffness - previous_stiffness) * norm2(displacement);
     const Vec3 before = displacement;
     const Vec3 increment = -c.radius * cross(relative_spin, s.normal) * s.dt;
@@ -39,9 +39,12 @@ struct RollingResistance {
     return stiffness * cross(s.normal, displacement);
   }
 
+  // 1 / (2 R*): the spring's energy is k_r |xi|^2 times this.
+  static double energy_compliance(const ContactConstants& c) { return 0.5 / c.radius; }
+
   // Energy of the spring displaced by xi at stiffness k_r: k_r |xi|^2 / (2 R*).
   static double energy(const Vec3& displacement, double stiffness, const ContactConstants& c) {
-    return 0.5 / c.radius * stiffness * norm2(displacement);
+    return energy_compliance(c) * stiffness * norm2(displacement);
   }
 
   static double rolling_stiffness(double a, const ContactConstants& c) {

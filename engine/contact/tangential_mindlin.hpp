@@ -34,7 +34,7 @@ struct MindlinTangential {
   [[gnu::always_inline]] Vec3 force(Vec3& stretch, const Vec3& slip_velocity, const SpringContext& s,
                                     const ContactConstants& c, DissipationTally& tally) const {
     stretch = rotate_into_plane(stretch, s.normal);
-    const double stiffness = 8.0 * c.shear * s.contact_radius;
+    const double stiffness = stiffness_at(s.contact_radius, c);
     // 0.5 (k_t - k_t,previous) |s|^2, with the difference taken of the radii: exactly zero at a
     // constant radius, however the compiler fuses the multiplications.
     tally.stiffness_work += 4.0 * c.shear * (s.contact_radius - s.previous_radius) * norm2(stretch);
@@ -51,9 +51,12 @@ struct MindlinTangential {
     return -stiffness * stretch;
   }
 
+  // k_t = 8 G* a at contact radius a.
+  static double stiffness_at(double contact_radius, const ContactConstants& c) { return 8.0 * c.shear * contact_radius; }
+
   // Energy of the spring stretched by `stretch` at contact radius a: k_t |s|^2 / 2.
   static double energy(const Vec3& stretch, double contact_radius, const ContactConstants& c) {
-    return 0.5 * (8.0 * c.shear * contact_radius) * norm2(stretch);
+    return 0.5 * stiffness_at(contact_radius, c) * norm2(stretch);
   }
 };
 

@@ -21,7 +21,7 @@ struct TwistingResistance {
   [[gnu::always_inline]] Vec3 torque(double& angle, const Vec3& relative_spin, const SpringContext& s,
                                      const ContactConstants& c, DissipationTally& tally) const {
     const double a = s.contact_radius;
-    const double stiffness = 4.0 * c.shear * a * a * a;
+    const double stiffness = stiffness_at(a, c);
     const double a_prev = s.previous_radius;
     // 0.5 (k_tw - k_tw,previous) phi^2 with a^3 - a_prev^3 factored: exactly zero at a constant radius.
     tally.stiffness_work += 2.0 * c.shear * (a - a_prev) * (a * a + a * a_prev + a_prev * a_prev) * angle * angle;
@@ -37,10 +37,12 @@ struct TwistingResistance {
     return -stiffness * angle * s.normal;
   }
 
+  // k_tw = 4 G* a^3 at contact radius a.
+  static double stiffness_at(double a, const ContactConstants& c) { return 4.0 * c.shear * a * a * a; }
+
   // Energy of the torsion spring twisted by phi at contact radius a: k_tw phi^2 / 2.
   static double energy(double angle, double contact_radius, const ContactConstants& c) {
-    const double a = contact_radius;
-    return 0.5 * (4.0 * c.shear * a * a * a) * angle * angle;
+    return 0.5 * stiffness_at(contact_radius, c) * angle * angle;
   }
 };
 

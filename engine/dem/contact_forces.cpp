@@ -183,7 +183,7 @@ class ContactForcesFor final : public ContactForces {
     ContactConstants shared;
     [[gnu::always_inline]] ContactConstants get(std::size_t) const { return shared; }
     SharedConstants from(std::size_t) const { return *this; }
-    SharedConstants copied(ContactBlock&, const ContactPool&) const { return *this; }
+    SharedConstants copied(ContactBlock&) const { return *this; }
   };
   // ... or columns, from `offset` on.
   struct ColumnConstants {
@@ -191,8 +191,8 @@ class ContactForcesFor final : public ContactForces {
     std::size_t offset = 0;
     [[gnu::always_inline]] ContactConstants get(std::size_t q) const { return columns.get(offset + q); }
     ColumnConstants from(std::size_t first) const { return {columns, first}; }
-    ColumnConstants copied(ContactBlock& block, const ContactPool& pool) const {
-      for (std::size_t q = 0; q < block.size(); ++q) block.constants.set(q, pool.constant_columns().get(block.slot[q]));
+    ColumnConstants copied(ContactBlock& block) const {
+      for (std::size_t q = 0; q < block.size(); ++q) block.constants.set(q, columns.get(block.slot[q]));
       return {block.constants, 0};
     }
   };
@@ -212,7 +212,7 @@ class ContactForcesFor final : public ContactForces {
       return;
     }
     for (std::size_t q = 0; q < size; ++q) block.history.set(q, pool.history.get(block.slot[q]));
-    evaluate(block.history, 0, constants.copied(block, pool), block.motion, size, dt);
+    evaluate(block.history, 0, constants.copied(block), block.motion, size, dt);
     for (std::size_t q = 0; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
   }
 

@@ -186,10 +186,7 @@ bool Simulation::kick_and_drift() {
   const double limit2 = neighbors_->displacement_limit2();
   bool moved_too_far = false;
   for (std::size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < Kicks; ++k) {
-      p.velocity[i] += half_step_per_mass_[i] * p.force[i];
-      p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
-    }
+    for (int k = 0; k < Kicks; ++k) half_kick(i);
     p.position[i] += dt_ * p.velocity[i];
     p.force[i] = Vec3{};
     p.torque[i] = Vec3{};
@@ -199,11 +196,7 @@ bool Simulation::kick_and_drift() {
 }
 
 void Simulation::kick() {
-  Particles& p = particles_;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.velocity[i] += half_step_per_mass_[i] * p.force[i];
-    p.angular_velocity[i] += half_step_per_inertia_[i] * p.torque[i];
-  }
+  for (std::size_t i = 0; i < particles_.size(); ++i) half_kick(i);
 }
 
 // Periodic or not is fixed for the run; each branch below calls a loop compiled for that case.

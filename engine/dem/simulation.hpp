@@ -78,6 +78,11 @@ class Simulation {
   template <int Kicks>
   bool kick_and_drift();
   void kick();
+  // Half a step's velocity change of particle i under its current force and torque.
+  void half_kick(std::size_t i) {
+    particles_.velocity[i] += half_step_per_mass_[i] * particles_.force[i];
+    particles_.angular_velocity[i] += half_step_per_inertia_[i] * particles_.torque[i];
+  }
   template <class Space>
   void add_van_der_waals(const Space& separation_of);
   void wrap_positions();
