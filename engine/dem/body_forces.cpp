@@ -32,17 +32,16 @@ void gaussians(std::uint64_t seed, std::int64_t step, std::uint64_t particle, do
 
 }  // namespace
 
-double add_body_forces(Particles& p, const BodyForces& body, std::int64_t step, double dt) {
-  const std::size_t n = p.size();
+void add_body_forces(Particles& p, const BodyForces& body, std::int64_t step, double dt, std::size_t begin,
+                     std::size_t end, double& work) {
   if (norm2(body.gravity) > 0.0)
-    for (std::size_t i = 0; i < n; ++i) p.force[i] += p.mass[i] * body.gravity;
-  if (!body.langevin.enabled()) return 0.0;
+    for (std::size_t i = begin; i < end; ++i) p.force[i] += p.mass[i] * body.gravity;
+  if (!body.langevin.enabled()) return;
 
-  double work = 0.0;
   const Langevin& l = body.langevin;
   // At zero temperature only the drag acts (relaxation): no noise to draw.
   const bool noisy = l.temperature > 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double diameter = 2.0 * p.radius[i];
     const double zeta = l.drag_per_diameter * diameter;
     const double zeta_spin = zeta * diameter * diameter / 3.0;
@@ -56,7 +55,6 @@ double add_body_forces(Particles& p, const BodyForces& body, std::int64_t step, 
     p.torque[i] += torque;
     work += (dot(force, p.velocity[i]) + dot(torque, p.angular_velocity[i])) * dt;
   }
-  return work;
 }
 
 double gravitational_energy(const Particles& p, const Vec3& gravity) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "engine/core/particles.hpp"
@@ -23,9 +24,11 @@ struct BodyForces {
   Langevin langevin;
 };
 
-// Adds gravity and Langevin forces; returns the work the Langevin forces did over this step
-// (evaluated with the half-step velocities of velocity Verlet).
-double add_body_forces(Particles& particles, const BodyForces& body, std::int64_t step, double dt);
+// Adds gravity and Langevin forces to the particles begin .. end-1, and to `work` the work the
+// Langevin forces did on them over this step (evaluated with the half-step velocities of
+// velocity Verlet), in particle order: ranges add up as one pass over all particles would.
+void add_body_forces(Particles& particles, const BodyForces& body, std::int64_t step, double dt, std::size_t begin,
+                     std::size_t end, double& work);
 
 // Potential energy in the gravity field, -sum m g.x.
 double gravitational_energy(const Particles& particles, const Vec3& gravity);

@@ -35,22 +35,24 @@ class ContactForcesFor final : public ContactForces {
   }
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
-                       double formation_gap, ContactLedger ledger) const override {
-    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, ledger);
+                       double formation_gap, ContactLedger ledger, ParticleCompletion& completed) const override {
+    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, ledger, completed);
   }
   void add_periodic_pair_forces(Particles& p, PairList& pairs, const PeriodicBox& box, const MaterialTable& materials,
-                                double dt, double formation_gap, ContactLedger ledger) const override {
-    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, ledger);
+                                double dt, double formation_gap, ContactLedger ledger,
+                                ParticleCompletion& completed) const override {
+    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, ledger, completed);
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
-                       const MaterialTable& materials, double dt, ContactLedger ledger) const override {
-    const std::size_t n = p.size();
+                       const MaterialTable& materials, double dt, std::size_t begin, std::size_t end,
+                       ContactLedger ledger) const override {
     const Vec3 into_wall = -wall.normal;
-    DissipationTally tally;
+    // Carried on from the ledger's sums, not started afresh: ranges add up as one pass would.
+    DissipationTally tally = ledger.tally;
     ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
     double deepest = ledger.events.deepest_overlap_ratio;
-    for (std::uint32_t i = 0; i < n; ++i) {
+    for (auto i = static_cast<std::uint32_t>(begin); i < end; ++i) {
       const double overlap = p.radius[i] - wall.gap(p.position[i]);
       std::int32_t& slot = slots[i];
       if (slot < 0) {
@@ -78,7 +80,7 @@ class ContactForcesFor final : public ContactForces {
       p.force[i] += load.force_i;
       p.torque[i] += load.torque_i;
     }
-    ledger.tally += tally;
+    ledger.tally = tally;
     ledger.events.deepest_overlap_ratio = deepest;
   }
 
@@ -88,14 +90,15 @@ class ContactForcesFor final : public ContactForces {
   // (2) every law of every contact in the block, which the compiler evaluates several contacts
   // per vector instruction (the columns are contiguous and the laws straight-line code); (3) the
   // loads added to the particles in the order of the pairs, so that the sums, to the last bit,
-  // do not depend on the skin or on when the list was rebuilt.
+  // do not depend on the skin or on when the list was rebuilt; (4) the particles whose rows are
+  // now all evaluated reported complete.
   // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
   // inlines: the open-space instantiation is the plain loop. Inlined into both callers, so that
   // each is compiled as the one loop it is.
   template <class Space>
   [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs,
                                                  const MaterialTable& materials, double dt, double formation_gap,
-                                                 ContactLedger ledger) const {
+                                                 ContactLedger ledger, ParticleCompletion& completed) const {
     const Vec3* position = p.position.data();
     const Vec3* velocity = p.velocity.data();
     const Vec3* spin = p.angular_velocity.data();
@@ -106,7 +109,14 @@ class ContactForcesFor final : public ContactForces {
     ContactBlock& block = block_;
     block.clear();
     const std::size_t n = pairs.particles();
+    std::size_t reported = 0;  // particles 0 .. reported-1 have been reported complete
+    auto report_before = [&](std::size_t row) {
+      finish_block(block, p, dt, local);
+      completed.complete(reported, row);
+      reported = row;
+    };
     for (std::uint32_t i = 0; i < n; ++i) {
+      if (i - reported >= completion_run) report_before(i);
       prefetch_particle(p, std::min<std::size_t>(i + prefetch_distance, n - 1));
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -132,12 +142,16 @@ class ContactForcesFor final : public ContactForces {
         block.add(slot, i, j,
                   {normal, overlap, velocity[i] - velocity[j], spin[i], spin[j], radius_i - 0.5 * overlap,
                    radius[j] - 0.5 * overlap});
-        if (block.full()) finish_block(block, p, dt, local);
+        if (block.full()) report_before(i);
       }
     }
-    finish_block(block, p, dt, local);
+    report_before(n);
     ledger.tally += tally;
   }
+
+  // Longest run of particles reported complete at once, for sparse contacts (a full block
+  // reports sooner): a few hundred particles' arrays fit in the nearest caches.
+  static constexpr std::size_t completion_run = 256;
 
   // A cluster's pairs join particles close in index (BCCA and DLCA append whole clusters), so
   // the pass over the pairs walks the particles' arrays front to back; asking for those some

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -29,6 +30,19 @@ struct ContactLedger {
   const VanDerWaals* van_der_waals = nullptr;  // set when the long-range law is on for these contacts
 };
 
+// Told by the pair loop which particles have received all their pair forces of the pass. The list
+// is a half list (particle i's partners j > i are in row i), so particle i has them once row i's
+// contacts are evaluated; the pair loop reports them in runs of at most a few hundred, so that
+// what comes next for those particles (walls, body forces, integration) finds their arrays still
+// in the nearest caches.
+class ParticleCompletion {
+ public:
+  virtual void complete(std::size_t begin, std::size_t end) = 0;
+
+ protected:
+  ~ParticleCompletion() = default;
+};
+
 // The contact force loops of one compiled law combination. Chosen once per run by
 // make_contact_forces; the loops themselves contain no model switches.
 class ContactForces {
@@ -37,17 +51,20 @@ class ContactForces {
 
   // Particle-particle contacts: forms, evaluates and breaks the contacts of every listed pair.
   // A contact forms where the surfaces are closer than formation_gap (0: where they touch).
+  // Every particle is reported to `completed` once, in index order, after its last pair force.
   virtual void add_pair_forces(Particles& particles, PairList& pairs, const MaterialTable& materials, double dt,
-                               double formation_gap, ContactLedger ledger) const = 0;
+                               double formation_gap, ContactLedger ledger, ParticleCompletion& completed) const = 0;
   // The same in a periodic box: each pair interacts through its nearest images. A separate
   // compiled loop, so that the open-space loop above carries no periodic test.
   virtual void add_periodic_pair_forces(Particles& particles, PairList& pairs, const PeriodicBox& box,
                                         const MaterialTable& materials, double dt, double formation_gap,
-                                        ContactLedger ledger) const = 0;
-  // Contacts of every particle with one wall; slots[i] is particle i's contact with it, or -1.
+                                        ContactLedger ledger, ParticleCompletion& completed) const = 0;
+  // Contacts of the particles begin .. end-1 with one wall; slots[i] is particle i's contact with
+  // it, or -1. The dissipation is added to ledger.tally in particle order, so that a pass in
+  // several ranges sums exactly as one over all particles.
   virtual void add_wall_forces(Particles& particles, const Wall& wall, std::uint32_t wall_index,
                                std::vector<std::int32_t>& slots, const MaterialTable& materials, double dt,
-                               ContactLedger ledger) const = 0;
+                               std::size_t begin, std::size_t end, ContactLedger ledger) const = 0;
   // Adhesion constants the normal law gives a contact with these effective properties.
   virtual void complete(ContactConstants& constants) const = 0;
   // The normal law's response at this overlap (for time-step estimates and diagnostics).

@@ -113,7 +113,7 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
   }
   neighbors_ = std::make_unique<VerletNeighborList>(std::move(search), margin, skin);
   particles_.clear_forces();
-  compute_forces(true, settings_.initial_bond_gap);
+  compute_forces(true, settings_.initial_bond_gap, false);
 }
 
 double Simulation::speed_scale() const {
@@ -160,37 +160,86 @@ double Simulation::interaction_margin() const {
 
 void Simulation::step() { run(1); }
 
-// Velocity Verlet, with the closing half kick of one step and the opening half kick of the next
-// done in one pass over the particles (two additions, rounded as two separate passes would be), so
-// that the particles' arrays are streamed once per step for the integration, the force reset and
-// the neighbour list's displacement check together. Between calls the velocities are whole-step.
+// Velocity Verlet. The closing half kick of one step and the opening half kick of the next are
+// done together (two additions, rounded as two separate passes would be), particle by particle
+// as the force pass completes each particle (ForcePass), with the drift, the force reset and the
+// neighbour list's displacement check: the particles' arrays are streamed once per step. Between
+// calls the velocities are whole-step.
 void Simulation::run(std::int64_t steps) {
+  if (steps <= 0) return;
+  bool moved_too_far = kick_and_drift<1>(0, particles_.size());
   for (std::int64_t s = 0; s < steps; ++s) {
-    const bool moved_too_far = s == 0 ? kick_and_drift<1>() : kick_and_drift<2>();
     time_ += dt_;
     ++steps_;
-    compute_forces(moved_too_far);
+    moved_too_far = compute_forces(moved_too_far, 0.0, s + 1 < steps);
   }
-  if (steps > 0) kick();
+  kick();
 }
 
-// `Kicks` half kicks with the current forces, a drift over dt, and the forces cleared for the
-// next evaluation; returns whether some particle has now moved more than half the skin since the
-// neighbour list was built.
+// What follows a particle's last pair force in a force pass: its wall contacts; then, unless
+// van der Waals forces are still to come, its body forces and, when the run goes on, the kicks
+// and the drift of the next step. Its sums run over the particles in index order, across the
+// ranges the pair loop reports, exactly as separate passes over all particles would.
+class Simulation::ForcePass final : public ParticleCompletion {
+ public:
+  ForcePass(Simulation& simulation, bool finish, bool integrate)
+      : sim_(simulation), finish_(finish), integrate_(integrate) {
+    sim_.wall_step_tally_.assign(sim_.walls_.size(), DissipationTally{});
+  }
+
+  void complete(std::size_t begin, std::size_t end) override {
+    Simulation& s = sim_;
+    for (std::size_t w = 0; w < s.walls_.size(); ++w) {
+      const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
+      s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
+                                         s.materials_, s.dt_, begin, end,
+                                         {s.wall_pool_, s.wall_step_tally_[w], s.wall_events_, long_range});
+    }
+    if (!finish_) return;
+    add_body_forces(s.particles_, s.settings_.body, s.steps_, s.dt_, begin, end, body_work_);
+    if (integrate_) moved_too_far_ = s.kick_and_drift<2>(begin, end) || moved_too_far_;
+  }
+
+  double body_work() const { return body_work_; }
+  bool moved_too_far() const { return moved_too_far_; }
+
+ private:
+  Simulation& sim_;
+  bool finish_;
+  bool integrate_;
+  double body_work_ = 0.0;
+  bool moved_too_far_ = false;
+};
+
+// `Kicks` half kicks of the particles begin .. end-1 with their current forces, a drift over
+// dt, and their forces cleared for the next evaluation; returns whether one of them has now
+// moved more than half the skin since the neighbour list was built.
 template <int Kicks>
-bool Simulation::kick_and_drift() {
+bool Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   Particles& p = particles_;
-  const std::size_t n = p.size();
   const std::vector<Vec3>& built_at = neighbors_->built_at();
-  if (built_at.size() != n) throw std::logic_error("simulation: neighbour list built for other particles");
+  if (built_at.size() != p.size()) throw std::logic_error("simulation: neighbour list built for other particles");
   const double limit2 = neighbors_->displacement_limit2();
   bool moved_too_far = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < Kicks; ++k) half_kick(i);
-    p.position[i] += dt_ * p.velocity[i];
+  const double dt = dt_;
+  // Locals, not the arrays: the stores to one array would otherwise make the compiler read the
+  // others again (they all hold doubles).
+  for (std::size_t i = begin; i < end; ++i) {
+    Vec3 velocity = p.velocity[i];
+    Vec3 spin = p.angular_velocity[i];
+    const Vec3 force = p.force[i];
+    const Vec3 torque = p.torque[i];
+    for (int k = 0; k < Kicks; ++k) {
+      velocity += half_step_per_mass_[i] * force;
+      spin += half_step_per_inertia_[i] * torque;
+    }
+    const Vec3 position = p.position[i] + dt * velocity;
+    p.velocity[i] = velocity;
+    p.angular_velocity[i] = spin;
+    p.position[i] = position;
     p.force[i] = Vec3{};
     p.torque[i] = Vec3{};
-    moved_too_far |= norm2(p.position[i] - built_at[i]) > limit2;
+    moved_too_far |= norm2(position - built_at[i]) > limit2;
   }
   return moved_too_far;
 }
@@ -199,9 +248,11 @@ void Simulation::kick() {
   for (std::size_t i = 0; i < particles_.size(); ++i) half_kick(i);
 }
 
-// Periodic or not is fixed for the run; each branch below calls a loop compiled for that case.
-// The forces and torques must have been cleared.
-void Simulation::compute_forces(bool rebuild, double formation_gap) {
+// The forces at the current positions, which must have been cleared; with `integrate`, the
+// particles then move on by a step (kick_and_drift<2>) and the return value says whether the
+// next pass must rebuild the neighbour list. Periodic or not is fixed for the run; each branch
+// below calls a loop compiled for that case.
+bool Simulation::compute_forces(bool rebuild, double formation_gap, bool integrate) {
   std::vector<std::int32_t> lost;
   if (rebuild) {
     // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
@@ -211,23 +262,30 @@ void Simulation::compute_forces(bool rebuild, double formation_gap) {
     // The force loop then walks the contacts' columns in the order of the pairs, without holes.
     pair_pool_.renumber(neighbors_->pairs().contact);
   }
-  const VanDerWaals* long_range = spec_.van_der_waals ? &spec_.hamaker : nullptr;
+  // Van der Waals forces between listed pairs come after the walls', in a pass of their own:
+  // then the body forces and the integration wait for it.
+  const bool long_range_pass = spec_.van_der_waals;
+  ForcePass pass(*this, !long_range_pass, integrate);
+  const VanDerWaals* long_range = long_range_pass ? &spec_.hamaker : nullptr;
   if (settings_.periodic)
     pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
-                                           formation_gap, {pair_pool_, tally_, pair_events_, long_range});
+                                           formation_gap, {pair_pool_, tally_, pair_events_, long_range}, pass);
   else
     pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
-                                  {pair_pool_, tally_, pair_events_, long_range});
-  for (std::size_t w = 0; w < walls_.size(); ++w)
-    wall_forces_[w]->add_wall_forces(particles_, walls_[w], static_cast<std::uint32_t>(w), wall_slots_[w], materials_,
-                                     dt_, {wall_pool_, tally_, wall_events_, walls_[w].adhesive ? long_range : nullptr});
-  if (spec_.van_der_waals) {
-    if (settings_.periodic)
-      add_van_der_waals(PeriodicSpace(*settings_.periodic));
-    else
-      add_van_der_waals(OpenSpace{});
+                                  {pair_pool_, tally_, pair_events_, long_range}, pass);
+  for (const DissipationTally& wall : wall_step_tally_) tally_ += wall;
+  if (!long_range_pass) {
+    external_work_ += pass.body_work();
+    return pass.moved_too_far();
   }
-  external_work_ += add_body_forces(particles_, settings_.body, steps_, dt_);
+  if (settings_.periodic)
+    add_van_der_waals(PeriodicSpace(*settings_.periodic));
+  else
+    add_van_der_waals(OpenSpace{});
+  double work = 0.0;
+  add_body_forces(particles_, settings_.body, steps_, dt_, 0, particles_.size(), work);
+  external_work_ += work;
+  return integrate && kick_and_drift<2>(0, particles_.size());
 }
 
 void Simulation::wrap_positions() {

@@ -74,9 +74,10 @@ class Simulation {
   Vec3 separation(std::size_t i, std::size_t j) const;
 
  private:
-  void compute_forces(bool rebuild, double formation_gap = 0.0);
+  class ForcePass;
+  bool compute_forces(bool rebuild, double formation_gap, bool integrate);
   template <int Kicks>
-  bool kick_and_drift();
+  bool kick_and_drift(std::size_t begin, std::size_t end);
   void kick();
   // Half a step's velocity change of particle i under its current force and torque.
   void half_kick(std::size_t i) {
@@ -104,6 +105,7 @@ class Simulation {
   ContactEvents pair_events_;
   ContactEvents wall_events_;
   DissipationTally tally_;
+  std::vector<DissipationTally> wall_step_tally_;  // each wall's dissipation in the current force pass
   TimeStepEstimate estimate_;
   double dt_ = 0.0;
   double time_ = 0.0;
