@@ -41,7 +41,6 @@ struct ContactModel {
     normal.complete(s.constants);
     s.contact_radius = normal.respond(overlap, s.constants).contact_radius;
     s.overlap = overlap;
-    if (s.constants.pull_off_force > 0.0) s.rolling_stiffness = RollingResistance::rolling_stiffness(s.contact_radius, s.constants);
   }
 
   // Elastic energy of all the contact's springs at its last evaluation.
@@ -51,7 +50,7 @@ struct ContactModel {
   // The same, given the normal law's response at the last evaluation's overlap.
   double stored_energy(const ContactHistory& s, const ContactConstants& c, const NormalResponse& last) const {
     return last.energy + tangential.energy(s.tangential_stretch, s.contact_radius, c) +
-           rolling.energy(s.rolling_displacement, s.rolling_stiffness, c) +
+           rolling.energy(s.rolling_displacement, s.contact_radius, c) +
            twisting.energy(s.twist_angle, s.contact_radius, c);
   }
 
@@ -92,7 +91,7 @@ struct ContactModel {
     const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
     const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, tally);
     const Vec3 relative_spin = m.spin_i - m.spin_j;
-    const Vec3 resistance = rolling.torque(s.rolling_displacement, s.rolling_stiffness, relative_spin, spring, c, tally) +
+    const Vec3 resistance = rolling.torque(s.rolling_displacement, relative_spin, spring, c, tally) +
                             twisting.torque(s.twist_angle, relative_spin, spring, c, tally);
     s.contact_radius = response.contact_radius;
     s.overlap = m.overlap;

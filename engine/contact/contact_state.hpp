@@ -16,7 +16,6 @@ struct ContactHistory {
   double contact_radius = 0.0; // a at the last evaluation
   double overlap = 0.0;        // delta at the last evaluation
   double damping_force = 0.0;  // normal damping force at the last evaluation (for its work)
-  double rolling_stiffness = 0.0;  // k_r at the last evaluation (eq 18)
 };
 
 // Everything one live contact remembers between steps. Contacts live in a pool, so their history

@@ -19,7 +19,6 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
     h.contact_radius = contact_radius[s];
     h.overlap = overlap[s];
     h.damping_force = damping_force[s];
-    h.rolling_stiffness = rolling_stiffness[s];
     return h;
   }
   [[gnu::always_inline]] void set(std::size_t s, const ContactHistory& h) {
@@ -33,19 +32,18 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
     contact_radius[s] = h.contact_radius;
     overlap[s] = h.overlap;
     damping_force[s] = h.damping_force;
-    rolling_stiffness[s] = h.rolling_stiffness;
   }
 
   std::vector<double> stretch_x, stretch_y, stretch_z;  // Mindlin spring (eqs 11-14)
   std::vector<double> rolling_x, rolling_y, rolling_z;  // xi (eq 18)
   std::vector<double> twist;                            // phi (eq 17)
-  std::vector<double> contact_radius, overlap, damping_force, rolling_stiffness;
+  std::vector<double> contact_radius, overlap, damping_force;
 
  private:
   friend class ColumnSet<ContactHistoryColumns>;
   std::vector<std::vector<double>*> columns() {
     return {&stretch_x,      &stretch_y,     &stretch_z, &rolling_x,     &rolling_y,     &rolling_z,        &twist,
-            &contact_radius, &overlap,      &damping_force, &rolling_stiffness};
+            &contact_radius, &overlap,   &damping_force};
   }
 };
 

@@ -36,12 +36,11 @@ struct Evaluation {
 Evaluation roll(const RollingResistance& law, Vec3& displacement, const Vec3& relative_spin, double a,
                 const ContactConstants& c, double dt = 1.0) {
   Evaluation out;
-  // The normal law hands on (a/a0)^(3/2); the law keeps its last stiffness (here: unchanged, a fixed).
+  // The normal law hands on (a/a0)^(3/2); the last step's radius is this one's (a fixed).
   const double x = a / c.equilibrium_radius;
   const SpringContext context{up, dt, a, a, 0.0, x * std::sqrt(x)};
-  double previous_stiffness = RollingResistance::rolling_stiffness(a, c);
-  out.torque = law.torque(displacement, previous_stiffness, relative_spin, context, c, out.tally);
-  out.energy = RollingResistance::energy(displacement, previous_stiffness, c);
+  out.torque = law.torque(displacement, relative_spin, context, c, out.tally);
+  out.energy = RollingResistance::energy(displacement, a, c);
   return out;
 }
 
