@@ -103,12 +103,7 @@ TEST_CASE("a JKR contact alone conserves mechanical energy to second order in dt
 
 TEST_CASE("the energy ledger closes when a cluster hits a wall with every dissipative law on") {
   Particles p = testing::relaxed_cluster(60, 9);
-  double lowest = 1e300;
-  for (const auto& x : p.position) lowest = std::min(lowest, x.z);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.position[i].z += 0.55 - lowest;
-    p.velocity[i] = {0.05, 0.0, -0.5};
-  }
+  testing::launch_above_floor(p, 0.55, {0.05, 0.0, -0.5});
   Simulation sim(p, {testing::unit_material(0.01)}, {Wall{}}, testing::full_model(), testing::bonded());
   const double e0 = sim.energy().balance();
   const double kinetic0 = sim.energy().kinetic();

@@ -44,12 +44,7 @@ TEST_CASE("exchanging i and j gives the same trajectories") {
 
 TEST_CASE("a rigid rotation of the whole system, wall included, rotates the result") {
   Particles p = testing::relaxed_cluster(40, 21);
-  double lowest = 1e300;
-  for (const auto& x : p.position) lowest = std::min(lowest, x.z);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.position[i].z += 0.6 - lowest;
-    p.velocity[i] = {0.02, -0.01, -0.3};
-  }
+  testing::launch_above_floor(p, 0.6, {0.02, -0.01, -0.3});
   const Vec3 axis = Vec3{1.0, 2.0, 3.0} / norm(Vec3{1.0, 2.0, 3.0});
   const double angle = 0.7;
   Particles turned = p;
@@ -99,12 +94,7 @@ TEST_CASE("contact history survives neighbour-list rebuilds: results do not depe
 TEST_CASE("one long run equals as many single steps with walls and gravity and Langevin forces") {
   const bool van_der_waals = GENERATE(false, true);
   Particles p = testing::relaxed_cluster(600, 5);
-  double lowest = 1e300;
-  for (const auto& x : p.position) lowest = std::min(lowest, x.z);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.position[i].z += 0.52 - lowest;
-    p.velocity[i] = {0.01, 0.0, -0.2};
-  }
+  testing::launch_above_floor(p, 0.52, {0.01, 0.0, -0.2});
   Wall floor;
   floor.adhesive = true;
   Wall side{{-3.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};

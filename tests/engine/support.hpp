@@ -1,5 +1,6 @@
 #pragma once
 // Small builders shared by the engine tests.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -61,6 +62,17 @@ inline SimulationSettings bonded() {
   SimulationSettings settings;
   settings.initial_bond_gap = 1e-6;
   return settings;
+}
+
+// Lifts a cluster so that its lowest centre is `height` above the plane z = 0 (a floor wall's
+// surface) and sends every particle off with `velocity`.
+inline void launch_above_floor(Particles& p, double height, const Vec3& velocity) {
+  double lowest = 1e300;
+  for (const auto& x : p.position) lowest = std::min(lowest, x.z);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.position[i].z += height - lowest;
+    p.velocity[i] = velocity;
+  }
 }
 
 inline Vec3 linear_momentum(const Particles& p) {
