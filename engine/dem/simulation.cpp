@@ -262,6 +262,9 @@ bool Simulation::compute_forces(bool rebuild, double formation_gap, bool integra
     // The force loop then walks the contacts' columns in the order of the pairs, without holes.
     pair_pool_.renumber(neighbors_->pairs().contact);
   }
+  // The pair loop reports the particles of its rows complete: the list must have a row for each.
+  if (neighbors_->pairs().particles() != particles_.size())
+    throw std::logic_error("simulation: neighbour list built for other particles");
   // Van der Waals forces between listed pairs come after the walls', in a pass of their own:
   // then the body forces and the integration wait for it.
   const bool long_range_pass = spec_.van_der_waals;
