@@ -5,8 +5,9 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
+
+#include "engine/core/disjoint_sets.hpp"
 
 namespace aerobreak {
 namespace {
@@ -104,19 +105,10 @@ ContactGraph find_contacts(const Cluster& cluster, double relative_tolerance) {
 
 std::vector<std::size_t> connected_component_sizes(
     std::size_t primary_count, const std::vector<std::pair<std::size_t, std::size_t>>& edges) {
-  std::vector<std::size_t> parent(primary_count);
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  const auto root = [&parent](std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (const auto& [i, j] : edges) {
-    const std::size_t a = root(i);
-    const std::size_t b = root(j);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
+  DisjointSets sets(primary_count);
+  for (const auto& [i, j] : edges) sets.unite(i, j);
   std::vector<std::size_t> size_of_root(primary_count, 0);
-  for (std::size_t i = 0; i < primary_count; ++i) ++size_of_root[root(i)];
+  for (std::size_t i = 0; i < primary_count; ++i) ++size_of_root[sets.find(i)];
   std::vector<std::size_t> sizes;
   for (std::size_t s : size_of_root) {
     if (s > 0) sizes.push_back(s);

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
 #include "engine/cluster/cluster_contacts.hpp"
+#include "engine/core/disjoint_sets.hpp"
 #include "engine/cluster/random_stream.hpp"
 #include "engine/growth/cluster_proximity.hpp"
 
@@ -177,20 +177,12 @@ class Growth {
   // Every set of groups linked by close pairs becomes one encounter.
   void merge(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& close) {
     const std::size_t groups = frozen_.size() + encounters_.size();
-    std::vector<std::size_t> root(groups);
-    std::iota(root.begin(), root.end(), 0);
-    const auto find = [&](std::size_t g) {
-      while (root[g] != g) g = root[g] = root[root[g]];
-      return g;
-    };
-    for (const auto& [a, b] : close) {
-      const std::size_t ra = find(a), rb = find(b);
-      root[std::max(ra, rb)] = std::min(ra, rb);
-    }
+    DisjointSets sets(groups);
+    for (const auto& [a, b] : close) sets.unite(a, b);
     std::vector<FrozenCluster> frozen;
     std::vector<Encounter> encounters;
     std::vector<std::vector<std::size_t>> joined(groups);
-    for (std::size_t g = 0; g < groups; ++g) joined[find(g)].push_back(g);
+    for (std::size_t g = 0; g < groups; ++g) joined[sets.find(g)].push_back(g);
     for (std::size_t g = 0; g < groups; ++g) {
       if (joined[g].size() == 1 && g < frozen_.size()) frozen.push_back(std::move(frozen_[g]));
       else if (joined[g].size() == 1) encounters.push_back(std::move(encounters_[g - frozen_.size()]));

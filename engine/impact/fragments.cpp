@@ -6,33 +6,11 @@
 #include <map>
 #include <numeric>
 
+#include "engine/core/disjoint_sets.hpp"
 #include "engine/dem/simulation.hpp"
 
 namespace aerobreak {
 namespace {
-
-// Union-find with path halving and union by size.
-struct DisjointSets {
-  std::vector<std::uint32_t> parent;
-  std::vector<std::uint32_t> size;
-
-  explicit DisjointSets(std::size_t n) : parent(n), size(n, 1) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    if (size[a] < size[b]) std::swap(a, b);
-    parent[b] = a;
-    size[a] += size[b];
-  }
-};
 
 }  // namespace
 
@@ -47,7 +25,7 @@ FragmentAnalysis find_fragments(const Particles& p, const std::vector<std::pair<
   std::vector<std::uint32_t> root_label(n, std::numeric_limits<std::uint32_t>::max());
   std::vector<Fragment> found;
   for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t root = sets.find(i);
+    const std::size_t root = sets.find(i);
     if (root_label[root] == std::numeric_limits<std::uint32_t>::max()) {
       root_label[root] = static_cast<std::uint32_t>(found.size());
       Fragment f;
