@@ -47,9 +47,9 @@ struct RollingResistance {
     return energy_compliance(c) * rolling_stiffness(contact_radius, c) * norm2(displacement);
   }
 
-  // k_r = 4 F_c (a/a0)^(3/2) (eq 18)
+  // k_r = 4 F_c (a/a0)^(3/2) (eq 18); 0 without adhesion, where a0 = 0 too.
   static double rolling_stiffness(double a, const ContactConstants& c) {
-    const double x = a / c.equilibrium_radius;
+    const double x = c.pull_off_force > 0.0 ? a / c.equilibrium_radius : 0.0;
     return 4.0 * c.pull_off_force * x * std::sqrt(x);
   }
 };

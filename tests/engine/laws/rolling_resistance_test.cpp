@@ -176,3 +176,36 @@ TEST_CASE("a rigidly co-rotating pair feels no tangential force and no rolling o
   CHECK(tally.twisting == 0.0);
   CHECK(tally.friction == 0.0);
 }
+
+// k_r follows the contact radius: when a grows from the last step's a_prev at fixed xi, the work
+// done on the spring is (k_r(a) - k_r(a_prev)) |xi|^2 / (2 R*), booked as stiffness work.
+TEST_CASE("a growing contact radius books the rolling spring's stiffness change as stiffness work") {
+  const ContactConstants c = jkr_pair();
+  const RollingResistance law{1.0};
+  const double a_prev = c.equilibrium_radius, a = 1.3 * c.equilibrium_radius;
+  const double x = a / c.equilibrium_radius;
+  const SpringContext context{up, 1.0, a, a_prev, 0.0, x * std::sqrt(x)};
+  Vec3 xi{2e-3, -1e-3, 0.0};
+  const double held = norm2(xi);
+  DissipationTally tally;
+  law.torque(xi, Vec3{}, context, c, tally);  // no relative spin: xi is held
+  const double k = 4.0 * c.pull_off_force * std::pow(1.3, 1.5);
+  const double k_previous = 4.0 * c.pull_off_force;
+  CHECK(norm2(xi) == Approx(held).epsilon(1e-15));
+  CHECK(tally.stiffness_work == Approx((k - k_previous) * held / (2.0 * c.radius)).epsilon(1e-12));
+}
+
+TEST_CASE("without adhesion the rolling spring has no stiffness and exerts no torque") {
+  ContactConstants c = jkr_pair();
+  c.pull_off_force = 0.0;
+  c.equilibrium_radius = 0.0;
+  const double a = 0.05 * c.radius;
+  const SpringContext context{up, 1.0, a, a, 0.0, 0.0};
+  Vec3 xi{1e-3, 0.0, 0.0};
+  DissipationTally tally;
+  const Vec3 torque = RollingResistance{0.01}.torque(xi, Vec3{0.0, 1e-3, 0.0}, context, c, tally);
+  CHECK(RollingResistance::rolling_stiffness(a, c) == 0.0);
+  CHECK(norm(torque) == 0.0);
+  CHECK(tally.stiffness_work == 0.0);
+  CHECK(RollingResistance::energy(xi, a, c) == 0.0);
+}
