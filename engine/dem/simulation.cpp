@@ -229,10 +229,7 @@ bool Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
     Vec3 spin = p.angular_velocity[i];
     const Vec3 force = p.force[i];
     const Vec3 torque = p.torque[i];
-    for (int k = 0; k < Kicks; ++k) {
-      velocity += half_step_per_mass_[i] * force;
-      spin += half_step_per_inertia_[i] * torque;
-    }
+    for (int k = 0; k < Kicks; ++k) half_kick(i, velocity, spin, force, torque);
     const Vec3 position = p.position[i] + dt * velocity;
     p.velocity[i] = velocity;
     p.angular_velocity[i] = spin;
@@ -245,7 +242,8 @@ bool Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
 }
 
 void Simulation::kick() {
-  for (std::size_t i = 0; i < particles_.size(); ++i) half_kick(i);
+  Particles& p = particles_;
+  for (std::size_t i = 0; i < p.size(); ++i) half_kick(i, p.velocity[i], p.angular_velocity[i], p.force[i], p.torque[i]);
 }
 
 // The forces at the current positions, which must have been cleared; with `integrate`, the

@@ -79,10 +79,10 @@ class Simulation {
   template <int Kicks>
   bool kick_and_drift(std::size_t begin, std::size_t end);
   void kick();
-  // Half a step's velocity change of particle i under its current force and torque.
-  void half_kick(std::size_t i) {
-    particles_.velocity[i] += half_step_per_mass_[i] * particles_.force[i];
-    particles_.angular_velocity[i] += half_step_per_inertia_[i] * particles_.torque[i];
+  // Half a step's velocity change of particle i under the force and torque given.
+  void half_kick(std::size_t i, Vec3& velocity, Vec3& spin, const Vec3& force, const Vec3& torque) const {
+    velocity += half_step_per_mass_[i] * force;
+    spin += half_step_per_inertia_[i] * torque;
   }
   template <class Space>
   void add_van_der_waals(const Space& separation_of);
