@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/cluster/ballistic_collision.hpp"
+#include "engine/cluster/neighbour_order.hpp"
 #include "engine/cluster/cluster_analysis.hpp"
 #include "engine/cluster/random_stream.hpp"
 
@@ -97,7 +98,7 @@ Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParamete
   RandomStream random(seed);
   const std::vector<double> radii = random.lognormal_radii(
       parameters.primary_count, parameters.geometric_mean_diameter, parameters.geometric_standard_deviation);
-  return aggregate(radii, 0, radii.size(), random);
+  return ordered_along_neighbours(aggregate(radii, 0, radii.size(), random));
 }
 
 }  // namespace aerobreak

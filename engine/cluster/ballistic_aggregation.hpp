@@ -27,7 +27,8 @@ struct BallisticAggregationParameters {
 // Jullien's level-by-level pairing tree; otherwise the odd cluster of a level is in effect merged
 // one level early rather than carried (carrying would pair very unequal clusters at the end).
 //
-// The result is centred on its centre of mass (mass ~ r^3). The same parameters and seed give
+// The result is centred on its centre of mass (mass ~ r^3), its primaries listed along their
+// neighbours (ordered_along_neighbours). The same parameters and seed give
 // bit-identical output on the same build. Throws std::invalid_argument naming the offending
 // parameter for primary_count < 1, a non-positive or non-finite diameter, or sigma_g < 1.
 Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParameters& parameters,

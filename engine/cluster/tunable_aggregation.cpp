@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/cluster/cluster_contacts.hpp"
+#include "engine/cluster/neighbour_order.hpp"
 #include "engine/cluster/random_stream.hpp"
 #include "engine/cluster/tunable_aggregate.hpp"
 #include "engine/cluster/tunable_cluster_cluster.hpp"
@@ -225,7 +226,7 @@ Cluster tunable_cluster_aggregation(const TunableAggregationParameters& paramete
   }
   Cluster cluster{std::move(aggregate.position), std::move(aggregate.radius)};
   verify(cluster, law);
-  return cluster;
+  return ordered_along_neighbours(cluster);
 }
 
 }  // namespace aerobreak

@@ -73,7 +73,8 @@ class UnreachableFractalParameters : public std::runtime_error {
 // (construction is exact, and round-off in the placements and sums stays below 1e-12), no two
 // primaries' centres closer than (1 - 1e-9)(r_i + r_j), and one connected contact network (contacts
 // within a relative 1e-9); a failed check throws std::runtime_error. The result is centred on its
-// centre of mass; the same parameters and seed give bit-identical output on the same build.
+// centre of mass, its primaries listed along their neighbours (ordered_along_neighbours); the same
+// parameters and seed give bit-identical output on the same build.
 //
 // Throws std::invalid_argument naming the parameter for primary_count < 1, Df outside [1.5, 2.8],
 // a non-positive or non-finite kf or diameter, sigma_g < 1, particle_cluster_size < 3,
