@@ -36,12 +36,21 @@ class ContactForcesFor final : public ContactForces {
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
                        double formation_gap, ContactLedger ledger, ParticleCompletion& completed) const override {
-    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, ledger, completed);
+    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, {{ledger, completed}});
   }
   void add_periodic_pair_forces(Particles& p, PairList& pairs, const PeriodicBox& box, const MaterialTable& materials,
                                 double dt, double formation_gap, ContactLedger ledger,
                                 ParticleCompletion& completed) const override {
-    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, ledger, completed);
+    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, {{ledger, completed}});
+  }
+  void add_pair_forces_wavefront(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
+                                 const std::vector<Pass>& passes) const override {
+    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, 0.0, passes);
+  }
+  void add_periodic_pair_forces_wavefront(Particles& p, PairList& pairs, const PeriodicBox& box,
+                                          const MaterialTable& materials, double dt,
+                                          const std::vector<Pass>& passes) const override {
+    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, 0.0, passes);
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,
@@ -85,38 +94,81 @@ class ContactForcesFor final : public ContactForces {
   }
 
  private:
-  // Over the listed pairs, in blocks of ContactBlock::capacity live contacts: (1) geometry and
-  // bookkeeping (contacts form and break), each live contact's motion written to the block;
-  // (2) every law of every contact in the block, which the compiler evaluates several contacts
-  // per vector instruction (the columns are contiguous and the laws straight-line code); (3) the
-  // loads added to the particles in the order of the pairs, so that the sums, to the last bit,
-  // do not depend on the skin or on when the list was rebuilt; (4) the particles whose rows are
-  // now all evaluated reported complete.
-  // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
-  // inlines: the open-space instantiation is the plain loop. Inlined into both callers, so that
-  // each is compiled as the one loop it is.
+  // Where one pass over the pairs has got to: the rows before `row` are done, the particles
+  // before `reported` reported complete; `tally` sums the pass's dissipation.
+  struct Cursor {
+    std::uint32_t row = 0;
+    std::size_t reported = 0;
+    DissipationTally tally;
+  };
+
+  // Each pass in turn takes as many rows as the one before allows (the first a stretch of
+  // `stride` rows), until the last pass is through. One pass alone walks the rows straight on.
   template <class Space>
   [[gnu::always_inline]] void add_pair_forces_in(const Space& separation_of, Particles& p, PairList& pairs,
                                                  const MaterialTable& materials, double dt, double formation_gap,
-                                                 ContactLedger ledger, ParticleCompletion& completed) const {
+                                                 const std::vector<Pass>& passes) const {
+    const std::size_t depth = passes.size();
+    const auto n = static_cast<std::uint32_t>(pairs.particles());
+    std::vector<Cursor> cursors(depth);
+    if (depth > 1) find_reach(pairs);
+    for (std::size_t k = 0; k < depth;) {
+      for (std::size_t pass = k; pass < depth; ++pass) {
+        Cursor& c = cursors[pass];
+        std::uint32_t end = n;
+        if (pass == 0 && depth > 1)
+          end = std::min<std::uint32_t>(n, c.row + stride);
+        else if (pass > 0)
+          end = rows_allowed(cursors[pass - 1].reported);
+        if (end <= c.row) continue;
+        take_rows(separation_of, p, pairs, materials, dt, formation_gap, passes[pass], c, end);
+        if (c.row == n) passes[pass].ledger.tally += c.tally;
+      }
+      while (k < depth && cursors[k].row == n) ++k;
+    }
+  }
+
+  // For each row, the farthest particle it or a row before it reaches: a pass can take the rows
+  // whose reach the pass before has reported complete.
+  void find_reach(const PairList& pairs) const {
+    const std::size_t n = pairs.particles();
+    reach_.resize(n);
+    std::uint32_t farthest = 0;
+    for (std::uint32_t row = 0; row < n; ++row) {
+      // Rows are sorted by partner: the last is the farthest.
+      const std::uint32_t first = pairs.row_start[row], last = pairs.row_start[row + 1];
+      farthest = std::max({farthest, row, last > first ? pairs.neighbor[last - 1] : row});
+      reach_[row] = farthest;
+    }
+  }
+  std::uint32_t rows_allowed(std::size_t ready) const {
+    return static_cast<std::uint32_t>(
+        std::lower_bound(reach_.begin(), reach_.end(), static_cast<std::uint32_t>(ready)) - reach_.begin());
+  }
+
+  // Rows c.row .. end-1 of one pass, in blocks of ContactBlock::capacity live contacts:
+  // (1) geometry and bookkeeping (contacts form and break), each live contact's motion written to
+  // the block; (2) every law of every contact in the block, which the compiler evaluates several
+  // contacts per vector instruction (the columns are contiguous and the laws straight-line code);
+  // (3) the loads added to the particles in the order of the pairs, so that the sums, to the last
+  // bit, do not depend on the skin or on when the list was rebuilt; (4) the particles whose rows
+  // are now all evaluated reported complete, at the latest when the last row is taken: the block
+  // is then empty again for the next call, of this pass or another.
+  // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
+  // inlines: the open-space instantiation is the plain loop.
+  template <class Space>
+  void take_rows(const Space& separation_of, Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
+                 double formation_gap, const Pass& pass, Cursor& c, std::uint32_t end) const {
+    ContactBlock& block = block_;
     const Vec3* position = p.position.data();
     const Vec3* velocity = p.velocity.data();
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
-    ContactPool& pool = ledger.pool;
-    DissipationTally tally;
-    ContactLedger local{pool, tally, ledger.events, ledger.van_der_waals};
-    ContactBlock& block = block_;
-    block.clear();
+    ContactPool& pool = pass.ledger.pool;
+    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals};
     const std::size_t n = pairs.particles();
-    std::size_t reported = 0;  // particles 0 .. reported-1 have been reported complete
-    auto report_before = [&](std::size_t row) {
-      finish_block(block, p, dt, local);
-      completed.complete(reported, row);
-      reported = row;
-    };
-    for (std::uint32_t i = 0; i < n; ++i) {
-      if (i - reported >= completion_run) report_before(i);
+    for (std::uint32_t i = c.row; i < end; ++i) {
+      if (i - c.reported >= completion_run) report_before(i, p, dt, pass, block, c);
       prefetch_particle(p, std::min<std::size_t>(i + prefetch_distance, n - 1));
       const Vec3 position_i = position[i];
       const double radius_i = radius[i];
@@ -142,12 +194,24 @@ class ContactForcesFor final : public ContactForces {
         block.add(slot, i, j,
                   {normal, overlap, velocity[i] - velocity[j], spin[i], spin[j], radius_i - 0.5 * overlap,
                    radius[j] - 0.5 * overlap});
-        if (block.full()) report_before(i);
+        if (block.full()) report_before(i, p, dt, pass, block, c);
       }
     }
-    report_before(n);
-    ledger.tally += tally;
+    report_before(end, p, dt, pass, block, c);
+    c.row = end;
   }
+
+  // Evaluates the block and reports the particles before `row` complete.
+  void report_before(std::size_t row, Particles& p, double dt, const Pass& pass, ContactBlock& block,
+                     Cursor& c) const {
+    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals};
+    finish_block(block, p, dt, local);
+    pass.completed.complete(c.reported, row);
+    c.reported = row;
+  }
+
+  // Rows the first pass of a wavefront takes at a time.
+  static constexpr std::uint32_t stride = 128;
 
   // Longest run of particles reported complete at once, for sparse contacts (a full block
   // reports sooner): a few hundred particles' arrays fit in the nearest caches.
@@ -276,7 +340,8 @@ class ContactForcesFor final : public ContactForces {
   }
 
   Model model_;
-  mutable ContactBlock block_;  // scratch of add_pair_forces, kept to reuse its memory
+  mutable ContactBlock block_;              // scratch of take_rows, kept to reuse its memory
+  mutable std::vector<std::uint32_t> reach_;  // scratch of find_reach
 };
 
 using NormalChoice = std::variant<JkrNormal, DmtNormal, HertzNormal>;

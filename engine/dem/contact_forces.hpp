@@ -59,6 +59,20 @@ class ContactForces {
   virtual void add_periodic_pair_forces(Particles& particles, PairList& pairs, const PeriodicBox& box,
                                         const MaterialTable& materials, double dt, double formation_gap,
                                         ContactLedger ledger, ParticleCompletion& completed) const = 0;
+  // The pair forces of passes.size() consecutive steps at once, as a wavefront: pass k takes a
+  // row once pass k-1 has reported complete (and so moved on) the row's particle and all its
+  // partners, so that each particle's arrays are used by all passes while they are still in the
+  // caches. Each pass gives exactly what it would alone (contacts form where they touch); the
+  // list must hold for the positions of every pass, which the caller checks afterwards.
+  struct Pass {
+    ContactLedger ledger;
+    ParticleCompletion& completed;
+  };
+  virtual void add_pair_forces_wavefront(Particles& particles, PairList& pairs, const MaterialTable& materials,
+                                         double dt, const std::vector<Pass>& passes) const = 0;
+  virtual void add_periodic_pair_forces_wavefront(Particles& particles, PairList& pairs, const PeriodicBox& box,
+                                                  const MaterialTable& materials, double dt,
+                                                  const std::vector<Pass>& passes) const = 0;
   // Contacts of the particles begin .. end-1 with one wall; slots[i] is particle i's contact with
   // it, or -1. The dissipation is added to ledger.tally in particle order, so that a pass in
   // several ranges sums exactly as one over all particles.

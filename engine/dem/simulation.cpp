@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -163,15 +164,41 @@ void Simulation::step() { run(1); }
 // Velocity Verlet. The closing half kick of one step and the opening half kick of the next are
 // done together (two additions, rounded as two separate passes would be), particle by particle
 // as the force pass completes each particle (ForcePass), with the drift, the force reset and the
-// neighbour list's displacement check: the particles' arrays are streamed once per step. Between
-// calls the velocities are whole-step.
+// neighbour list's displacement check: the particles' arrays are streamed once per step. Several
+// steps' passes run together as a wavefront where they can (run_wavefront). Between calls the
+// velocities are whole-step.
 void Simulation::run(std::int64_t steps) {
   if (steps <= 0) return;
-  bool moved_too_far = kick_and_drift<1>(0, particles_.size());
-  for (std::int64_t s = 0; s < steps; ++s) {
+  Drift drift = kick_and_drift<1>(0, particles_.size());
+  const double limit2 = neighbors_->displacement_limit2();
+  std::int64_t one_by_one_until = 0;  // after a wavefront that was undone, its steps one at a time
+  for (std::int64_t s = 0; s < steps;) {
+    bool rebuild = drift.since_build2 > limit2;
+    const std::int64_t wanted = s < one_by_one_until ? 1 : std::min<std::int64_t>(wavefront_depth(), steps - s);
+    if (wanted > 1) {
+      // Rebuilt early rather than run a wavefront of less than half the passes a fresh list allows;
+      // not in a periodic box, where rebuilds wrap the positions (and so round them differently).
+      const bool early = !settings_.periodic && 2 * wavefront_room(drift.since_build2, drift, wanted) <
+                                                    wavefront_room(0.0, drift, wanted);
+      if (rebuild || early) {
+        rebuild_neighbors();
+        drift.since_build2 = 0.0;
+        rebuild = false;
+      }
+      const std::int64_t depth = wavefront_room(drift.since_build2, drift, wanted);
+      if (depth > 1) {
+        if (const std::optional<Drift> next = run_wavefront(static_cast<int>(depth), s + depth < steps)) {
+          drift = *next;
+          s += depth;
+          continue;
+        }
+        one_by_one_until = s + depth;
+      }
+    }
     time_ += dt_;
     ++steps_;
-    moved_too_far = compute_forces(moved_too_far, 0.0, s + 1 < steps);
+    drift = compute_forces(rebuild, 0.0, s + 1 < steps);
+    ++s;
   }
   kick();
 }
@@ -182,10 +209,8 @@ void Simulation::run(std::int64_t steps) {
 // ranges the pair loop reports, exactly as separate passes over all particles would.
 class Simulation::ForcePass final : public ParticleCompletion {
  public:
-  ForcePass(Simulation& simulation, bool finish, bool integrate)
-      : sim_(simulation), finish_(finish), integrate_(integrate) {
-    sim_.wall_step_tally_.assign(sim_.walls_.size(), DissipationTally{});
-  }
+  ForcePass(Simulation& simulation, bool finish, bool integrate, std::int64_t step)
+      : sim_(simulation), finish_(finish), integrate_(integrate), step_(step), wall_tally_(simulation.walls_.size()) {}
 
   void complete(std::size_t begin, std::size_t end) override {
     Simulation& s = sim_;
@@ -193,34 +218,39 @@ class Simulation::ForcePass final : public ParticleCompletion {
       const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
       s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
                                          s.materials_, s.dt_, begin, end,
-                                         {s.wall_pool_, s.wall_step_tally_[w], s.wall_events_, long_range});
+                                         {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range});
     }
     if (!finish_) return;
-    add_body_forces(s.particles_, s.settings_.body, s.steps_, s.dt_, begin, end, body_work_);
-    if (integrate_) moved_too_far_ = s.kick_and_drift<2>(begin, end) || moved_too_far_;
+    add_body_forces(s.particles_, s.settings_.body, step_, s.dt_, begin, end, body_work_);
+    if (integrate_) drift_.merge(s.kick_and_drift<2>(begin, end));
   }
 
-  double body_work() const { return body_work_; }
-  bool moved_too_far() const { return moved_too_far_; }
+  // What the pass adds to the run's sums, in the order one pass at a time adds it.
+  void book(DissipationTally& tally, double& external_work) const {
+    for (const DissipationTally& wall : wall_tally_) tally += wall;
+    if (finish_) external_work += body_work_;
+  }
+  const Drift& drift() const { return drift_; }
 
  private:
   Simulation& sim_;
   bool finish_;
   bool integrate_;
+  std::int64_t step_;
+  std::vector<DissipationTally> wall_tally_;  // each wall's dissipation in this pass
   double body_work_ = 0.0;
-  bool moved_too_far_ = false;
+  Drift drift_;
 };
 
 // `Kicks` half kicks of the particles begin .. end-1 with their current forces, a drift over
-// dt, and their forces cleared for the next evaluation; returns whether one of them has now
-// moved more than half the skin since the neighbour list was built.
+// dt, and their forces cleared for the next evaluation; returns how far they have now moved since
+// the neighbour list was built, and in this drift (the largest of each).
 template <int Kicks>
-bool Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
+Simulation::Drift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   Particles& p = particles_;
   const std::vector<Vec3>& built_at = neighbors_->built_at();
   if (built_at.size() != p.size()) throw std::logic_error("simulation: neighbour list built for other particles");
-  const double limit2 = neighbors_->displacement_limit2();
-  bool moved_too_far = false;
+  Drift drift;
   const double dt = dt_;
   // Locals, not the arrays: the stores to one array would otherwise make the compiler read the
   // others again (they all hold doubles).
@@ -230,15 +260,17 @@ bool Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
     const Vec3 force = p.force[i];
     const Vec3 torque = p.torque[i];
     for (int k = 0; k < Kicks; ++k) half_kick(i, velocity, spin, force, torque);
-    const Vec3 position = p.position[i] + dt * velocity;
+    const Vec3 step = dt * velocity;
+    const Vec3 position = p.position[i] + step;
     p.velocity[i] = velocity;
     p.angular_velocity[i] = spin;
     p.position[i] = position;
     p.force[i] = Vec3{};
     p.torque[i] = Vec3{};
-    moved_too_far |= norm2(position - built_at[i]) > limit2;
+    drift.since_build2 = std::max(drift.since_build2, norm2(position - built_at[i]));
+    drift.last_step2 = std::max(drift.last_step2, norm2(step));
   }
-  return moved_too_far;
+  return drift;
 }
 
 void Simulation::kick() {
@@ -247,26 +279,16 @@ void Simulation::kick() {
 }
 
 // The forces at the current positions, which must have been cleared; with `integrate`, the
-// particles then move on by a step (kick_and_drift<2>) and the return value says whether the
-// next pass must rebuild the neighbour list. Periodic or not is fixed for the run; each branch
-// below calls a loop compiled for that case.
-bool Simulation::compute_forces(bool rebuild, double formation_gap, bool integrate) {
-  std::vector<std::int32_t> lost;
-  if (rebuild) {
-    // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
-    if (settings_.periodic) wrap_positions();
-    neighbors_->rebuild(particles_, pair_pool_, lost);
-    close_lost_contacts(lost);
-    // The force loop then walks the contacts' columns in the order of the pairs, without holes.
-    pair_pool_.renumber(neighbors_->pairs().contact);
-  }
-  // The pair loop reports the particles of its rows complete: the list must have a row for each.
-  if (neighbors_->pairs().particles() != particles_.size())
-    throw std::logic_error("simulation: neighbour list built for other particles");
+// particles then move on by a step (kick_and_drift<2>) and the return value says how far they
+// have moved. Periodic or not is fixed for the run; each branch below calls a loop compiled for
+// that case.
+Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap, bool integrate) {
+  if (rebuild) rebuild_neighbors();
+  require_list_for_particles();
   // Van der Waals forces between listed pairs come after the walls', in a pass of their own:
   // then the body forces and the integration wait for it.
   const bool long_range_pass = spec_.van_der_waals;
-  ForcePass pass(*this, !long_range_pass, integrate);
+  ForcePass pass(*this, !long_range_pass, integrate, steps_);
   const VanDerWaals* long_range = long_range_pass ? &spec_.hamaker : nullptr;
   if (settings_.periodic)
     pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
@@ -274,11 +296,8 @@ bool Simulation::compute_forces(bool rebuild, double formation_gap, bool integra
   else
     pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
                                   {pair_pool_, tally_, pair_events_, long_range}, pass);
-  for (const DissipationTally& wall : wall_step_tally_) tally_ += wall;
-  if (!long_range_pass) {
-    external_work_ += pass.body_work();
-    return pass.moved_too_far();
-  }
+  pass.book(tally_, external_work_);
+  if (!long_range_pass) return pass.drift();
   if (settings_.periodic)
     add_van_der_waals(PeriodicSpace(*settings_.periodic));
   else
@@ -286,7 +305,105 @@ bool Simulation::compute_forces(bool rebuild, double formation_gap, bool integra
   double work = 0.0;
   add_body_forces(particles_, settings_.body, steps_, dt_, 0, particles_.size(), work);
   external_work_ += work;
-  return integrate && kick_and_drift<2>(0, particles_.size());
+  return integrate ? kick_and_drift<2>(0, particles_.size()) : Drift{};
+}
+
+void Simulation::rebuild_neighbors() {
+  std::vector<std::int32_t> lost;
+  // Wrapping only here keeps the positions continuous between builds, as the skin test needs.
+  if (settings_.periodic) wrap_positions();
+  neighbors_->rebuild(particles_, pair_pool_, lost);
+  close_lost_contacts(lost);
+  // The force loop then walks the contacts' columns in the order of the pairs, without holes.
+  pair_pool_.renumber(neighbors_->pairs().contact);
+}
+
+// The pair loop reports the particles of its rows complete: the list must have a row for each.
+void Simulation::require_list_for_particles() const {
+  if (neighbors_->pairs().particles() != particles_.size())
+    throw std::logic_error("simulation: neighbour list built for other particles");
+}
+
+std::int64_t Simulation::wavefront_depth() const {
+  // Van der Waals forces need a pass of their own between the pair forces and the integration.
+  if (spec_.van_der_waals || particles_.size() < settings_.wavefront_min_particles) return 1;
+  return std::max(settings_.wavefront_depth, 1);
+}
+
+// How many passes (at most `wanted`) can run on a list from which the particles have moved up to
+// sqrt(since_build2): pass k sees the positions k drifts ahead, and each drift is taken to move a
+// particle at most wavefront_margin times as far as the last one moved any.
+std::int64_t Simulation::wavefront_room(double since_build2, const Drift& drift, std::int64_t wanted) const {
+  const double room = std::sqrt(neighbors_->displacement_limit2()) - std::sqrt(since_build2);
+  if (room < 0.0) return 0;
+  const double per_pass = settings_.wavefront_margin * std::sqrt(drift.last_step2);
+  if (!(per_pass > 0.0)) return wanted;
+  return std::min(wanted, 1 + static_cast<std::int64_t>(std::min(room / per_pass, static_cast<double>(wanted))));
+}
+
+// `depth` steps whose force passes run together (ContactForces::add_pair_forces_wavefront). Each
+// pass sums exactly as it would alone, and the run's sums take the passes in order, so the result
+// is the one of `depth` single steps, to the last bit, provided the neighbour list held for
+// every pass: if a pass has moved a particle out of the skin, the steps are undone (empty result).
+std::optional<Simulation::Drift> Simulation::run_wavefront(int depth, bool integrate_last) {
+  require_list_for_particles();
+  save_checkpoint();
+  std::vector<ForcePass> passes;
+  std::vector<DissipationTally> pair_tally(static_cast<std::size_t>(depth));
+  passes.reserve(static_cast<std::size_t>(depth));
+  std::vector<ContactForces::Pass> list;
+  for (int k = 0; k < depth; ++k) {
+    passes.emplace_back(*this, true, k + 1 < depth || integrate_last, steps_ + k + 1);
+    list.push_back({{pair_pool_, pair_tally[k], pair_events_, nullptr}, passes.back()});
+  }
+  if (settings_.periodic)
+    pair_forces_->add_periodic_pair_forces_wavefront(particles_, neighbors_->pairs(), *settings_.periodic, materials_,
+                                                     dt_, list);
+  else
+    pair_forces_->add_pair_forces_wavefront(particles_, neighbors_->pairs(), materials_, dt_, list);
+  const double limit2 = neighbors_->displacement_limit2();
+  for (int k = 0; k + 1 < depth; ++k)
+    if (passes[k].drift().since_build2 > limit2) {
+      restore_checkpoint();
+      ++wavefronts_undone_;
+      return std::nullopt;
+    }
+  for (int k = 0; k < depth; ++k) {
+    time_ += dt_;
+    ++steps_;
+    tally_ += pair_tally[k];
+    passes[k].book(tally_, external_work_);
+  }
+  wavefront_steps_ += static_cast<std::uint64_t>(depth);
+  return passes.back().drift();
+}
+
+// What a wavefront changes, kept to undo it (forces are zero between passes).
+void Simulation::save_checkpoint() {
+  Checkpoint& c = checkpoint_;
+  c.position = particles_.position;
+  c.velocity = particles_.velocity;
+  c.angular_velocity = particles_.angular_velocity;
+  c.pair_pool = pair_pool_;
+  c.wall_pool = wall_pool_;
+  c.wall_slots = wall_slots_;
+  c.pair_contacts = neighbors_->pairs().contact;
+  c.pair_events = pair_events_;
+  c.wall_events = wall_events_;
+}
+
+void Simulation::restore_checkpoint() {
+  Checkpoint& c = checkpoint_;
+  particles_.position = c.position;
+  particles_.velocity = c.velocity;
+  particles_.angular_velocity = c.angular_velocity;
+  particles_.clear_forces();
+  pair_pool_ = c.pair_pool;
+  wall_pool_ = c.wall_pool;
+  wall_slots_ = c.wall_slots;
+  neighbors_->pairs().contact = c.pair_contacts;
+  pair_events_ = c.pair_events;
+  wall_events_ = c.wall_events;
 }
 
 void Simulation::wrap_positions() {
@@ -359,8 +476,14 @@ EnergyBudget Simulation::energy() const {
     e.translational_kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]);
     e.rotational_kinetic += 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
   }
-  pair_pool_.for_each([&](const ContactState& c) { e.contact_elastic += pair_forces_->stored_energy(c); });
-  wall_pool_.for_each([&](const ContactState& c) { e.contact_elastic += wall_forces_[c.j]->stored_energy(c); });
+  // In the order of the pairs and of the walls, not of the pools' slots: the slot a contact gets
+  // depends on when it formed relative to others, which a wavefront changes.
+  const PairList& pairs = neighbors_->pairs();
+  for (std::int32_t slot : pairs.contact)
+    if (slot >= 0) e.contact_elastic += pair_forces_->stored_energy(pair_pool_.state(slot));
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    for (std::int32_t slot : wall_slots_[w])
+      if (slot >= 0) e.contact_elastic += wall_forces_[w]->stored_energy(wall_pool_.state(slot));
   e.van_der_waals = van_der_waals_energy_;
   e.gravitational = gravitational_energy(p, settings_.body.gravity);
   e.dissipation = tally_;

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -27,6 +28,17 @@ struct SimulationSettings {
   // cluster built at touching distance is bonded whatever the round-off in its coordinates.
   double initial_bond_gap = 0.0;
   BodyForces body;
+  // Force passes of this many consecutive steps run together as a wavefront over the particles
+  // (ContactForces::add_pair_forces_wavefront), so that the arrays of a system too large for the
+  // caches are fetched once for several steps; 1: one step at a time. The results are the same.
+  // Only from wavefront_min_particles on: a smaller system's arrays (about 270 bytes a particle)
+  // stay in the caches anyway, and one step at a time is faster (docs/PERFORMANCE.md).
+  int wavefront_depth = 16;
+  std::size_t wavefront_min_particles = 24000;
+  // A wavefront is only as deep as no particle can leave the neighbour list's skin during it,
+  // taking each step to move a particle at most this many times as far as the last step moved
+  // any; one in which a particle does leave is undone, and its steps run one at a time.
+  double wavefront_margin = 2.0;
   // A box [0, L) periodic along all three axes (no walls or gravity then): pairs interact
   // through their nearest images, and positions are wrapped back into the box whenever the
   // neighbour list is rebuilt (Simulation::images counts the wraps). Every edge must exceed twice
@@ -60,6 +72,10 @@ class Simulation {
   const ContactEvents& pair_events() const { return pair_events_; }
   const ContactEvents& wall_events() const { return wall_events_; }
   std::uint64_t neighbor_builds() const { return neighbors_->builds(); }
+  // Steps run in wavefronts (SimulationSettings::wavefront_depth), and wavefronts undone because a
+  // particle left the skin during one (their steps then ran one at a time).
+  std::uint64_t wavefront_steps() const { return wavefront_steps_; }
+  std::uint64_t wavefronts_undone() const { return wavefronts_undone_; }
   std::size_t neighbor_pairs() const { return neighbors_->pairs().pairs(); }
   const std::vector<Wall>& walls() const { return walls_; }
   const ContactModelSpec& model() const { return spec_; }
@@ -75,9 +91,35 @@ class Simulation {
 
  private:
   class ForcePass;
-  bool compute_forces(bool rebuild, double formation_gap, bool integrate);
+  // The largest squared displacement of a particle since the neighbour list was built, and in
+  // the last drift.
+  struct Drift {
+    double since_build2 = 0.0;
+    double last_step2 = 0.0;
+    void merge(const Drift& other) {
+      since_build2 = std::max(since_build2, other.since_build2);
+      last_step2 = std::max(last_step2, other.last_step2);
+    }
+  };
+  // What a wavefront changes, to undo it.
+  struct Checkpoint {
+    std::vector<Vec3> position, velocity, angular_velocity;
+    ContactPool pair_pool{false};
+    ContactPool wall_pool{true};
+    std::vector<std::vector<std::int32_t>> wall_slots;
+    std::vector<std::int32_t> pair_contacts;
+    ContactEvents pair_events, wall_events;
+  };
+  Drift compute_forces(bool rebuild, double formation_gap, bool integrate);
+  void rebuild_neighbors();
+  void require_list_for_particles() const;
+  std::int64_t wavefront_depth() const;
+  std::int64_t wavefront_room(double since_build2, const Drift& drift, std::int64_t wanted) const;
+  std::optional<Drift> run_wavefront(int depth, bool integrate_last);
+  void save_checkpoint();
+  void restore_checkpoint();
   template <int Kicks>
-  bool kick_and_drift(std::size_t begin, std::size_t end);
+  Drift kick_and_drift(std::size_t begin, std::size_t end);
   void kick();
   // Half a step's velocity change of particle i under the force and torque given.
   void half_kick(std::size_t i, Vec3& velocity, Vec3& spin, const Vec3& force, const Vec3& torque) const {
@@ -105,7 +147,6 @@ class Simulation {
   ContactEvents pair_events_;
   ContactEvents wall_events_;
   DissipationTally tally_;
-  std::vector<DissipationTally> wall_step_tally_;  // each wall's dissipation in the current force pass
   TimeStepEstimate estimate_;
   double dt_ = 0.0;
   double time_ = 0.0;
@@ -115,6 +156,9 @@ class Simulation {
   std::vector<double> half_step_per_inertia_;  // dt / (2 I_i)
   std::vector<ImageCount> images_;
   double van_der_waals_energy_ = 0.0;
+  Checkpoint checkpoint_;
+  std::uint64_t wavefront_steps_ = 0;
+  std::uint64_t wavefronts_undone_ = 0;
 };
 
 }  // namespace aerobreak

@@ -34,6 +34,8 @@ struct BenchOptions {
   bool wall_adhesion = true;
   JkrSeparation separation = JkrSeparation::displacement;
   std::uint64_t seed = 1;
+  int wavefront_depth = SimulationSettings{}.wavefront_depth;
+  std::size_t wavefront_min_particles = SimulationSettings{}.wavefront_min_particles;
   std::string export_dir;
 };
 
@@ -69,8 +71,8 @@ void run_bench(const BenchOptions& o) {
   std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; JKR + visco-elastic damping "
               "+ Mindlin + rolling + twisting; gamma/k_n = %g; one core\n",
               std::string(version()).c_str(), o.speed, o.gamma_over_kn);
-  std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s\n", "N", "contacts", "steps", "dt [tau]", "seconds",
-              "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds");
+  std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s %10s\n", "N", "contacts", "steps", "dt [tau]", "seconds",
+              "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront");
   for (std::size_t n : o.sizes) {
     const Cluster cluster = ballistic_cluster_cluster_aggregation({n, 1.0, 1.0}, o.seed);
     const RelaxationResult relaxed =
@@ -82,6 +84,8 @@ void run_bench(const BenchOptions& o) {
     SimulationSettings settings;
     settings.initial_bond_gap = 1e-6;
     settings.speed_scale = o.speed;
+    settings.wavefront_depth = o.wavefront_depth;
+    settings.wavefront_min_particles = o.wavefront_min_particles;
     Simulation sim(std::move(placed), {material}, {wall}, full_model(o), settings);
     if (!o.export_dir.empty()) export_case(o, sim, n);
 
@@ -92,10 +96,12 @@ void run_bench(const BenchOptions& o) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::int64_t steps = o.steps;
     const double rate = static_cast<double>(n) * static_cast<double>(steps) / elapsed;
-    std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu\n", n, sim.contacts().size(),
+    // The share of the steps that ran in wavefronts (SimulationSettings::wavefront_depth).
+    const double in_wavefronts = static_cast<double>(sim.wavefront_steps()) / static_cast<double>(steps);
+    std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu %9.0f%%\n", n, sim.contacts().size(),
                 static_cast<long long>(steps), sim.time_step(), elapsed, rate, 1e9 / rate,
                 static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
-                static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0));
+                static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0), 100.0 * in_wavefronts);
     std::fflush(stdout);
   }
 }
@@ -117,6 +123,13 @@ void add_bench_command(CLI::App& app) {
                     "Where JKR contacts let go: displacement (at -delta_c, eq 3) or force (at F = -F_c, as LAMMPS)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, JkrSeparation>{
           {"displacement", JkrSeparation::displacement}, {"force", JkrSeparation::force}}))
+      ->capture_default_str();
+  bench->add_option("--wavefront-depth", options->wavefront_depth,
+                    "Steps whose force passes run together (1: one step at a time; the results are the same)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  bench->add_option("--wavefront-from", options->wavefront_min_particles,
+                    "Fewest particles for which steps run in wavefronts")
       ->capture_default_str();
   bench->add_option("--seed", options->seed, "Seed of the cluster and its orientation")->capture_default_str();
   bench->add_option("--export", options->export_dir, "Write each placed cluster (XYZ) and its parameters (JSON) here, for the LAMMPS peer run");

@@ -1,0 +1,119 @@
+// Several steps' force passes run together as a wavefront (SimulationSettings::wavefront_depth):
+// each pass must give what it gives alone, to the last bit, whatever the depth, in open space
+// with walls and in a periodic box, and a wavefront in which a particle leaves the neighbour
+// list's skin must be undone and its steps run one at a time.
+#include <catch2/catch.hpp>
+
+#include "engine/dem/simulation.hpp"
+#include "support.hpp"
+
+using namespace aerobreak;
+
+namespace {
+
+void require_same_state(const Simulation& a, const Simulation& b) {
+  REQUIRE(a.particles().size() == b.particles().size());
+  for (std::size_t i = 0; i < a.particles().size(); ++i) {
+    CHECK(a.particles().position[i] == b.particles().position[i]);
+    CHECK(a.particles().velocity[i] == b.particles().velocity[i]);
+    CHECK(a.particles().angular_velocity[i] == b.particles().angular_velocity[i]);
+  }
+  const EnergyBudget x = a.energy(), y = b.energy();
+  CHECK(x.contact_elastic == y.contact_elastic);
+  CHECK(x.dissipation.damping == y.dissipation.damping);
+  CHECK(x.dissipation.friction == y.dissipation.friction);
+  CHECK(x.dissipation.rolling == y.dissipation.rolling);
+  CHECK(x.dissipation.twisting == y.dissipation.twisting);
+  CHECK(x.dissipation.breaking == y.dissipation.breaking);
+  CHECK(x.external_work == y.external_work);
+  CHECK(a.pair_events().made == b.pair_events().made);
+  CHECK(a.pair_events().broken == b.pair_events().broken);
+  CHECK(a.wall_events().made == b.wall_events().made);
+  CHECK(a.step_count() == b.step_count());
+  CHECK(a.time() == b.time());
+}
+
+}  // namespace
+
+
+TEST_CASE("a wavefront of any depth gives the steps one at a time to the last bit with walls and body forces") {
+  const int depth = GENERATE(2, 5, 16);
+  Particles p = testing::relaxed_cluster(600, 5);
+  testing::launch_above_floor(p, 0.52, {0.01, 0.0, -0.2});
+  Wall floor;
+  floor.adhesive = true;
+  Wall side{{-3.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+  side.adhesive = false;
+  SimulationSettings one = testing::bonded();
+  one.body.gravity = {0.0, 0.0, -1e-3};
+  one.body.langevin = {1e-6, 0.05, 77};
+  one.wavefront_depth = 1;
+  SimulationSettings deep = one;
+  deep.wavefront_depth = depth;
+  deep.wavefront_min_particles = 0;
+  Simulation single(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), one);
+  SimulationSettings small = deep;
+  small.wavefront_min_particles = p.size() + 1;
+  Simulation below(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), small);
+  below.run(100);
+  CHECK(below.wavefront_steps() == 0);  // fewer particles than wavefront_min_particles
+  Simulation wave(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), deep);
+  // Several calls: a run's last wavefront may be shorter, and velocities are whole-step between.
+  for (int call = 0; call < 3; ++call) {
+    single.run(500);
+    wave.run(500);
+  }
+  REQUIRE(single.wavefront_steps() == 0);
+  REQUIRE(wave.wavefront_steps() > 1000);  // most steps went through wavefronts
+  REQUIRE(wave.wall_events().made > 0);
+  REQUIRE(wave.pair_events().made > 0);
+  require_same_state(single, wave);
+}
+
+TEST_CASE("a wavefront in a periodic box gives the steps one at a time to the last bit") {
+  Particles p = testing::relaxed_cluster(200, 9);
+  // Across the face x = 0 of the box from the start, drifting and tumbling in a Langevin bath.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.position[i] += {0.5, 8.0, 8.0};
+    p.velocity[i] = {-0.05, 0.02, 0.0};
+  }
+  SimulationSettings one = testing::bonded();
+  one.periodic = PeriodicBox{{16.0, 16.0, 16.0}};
+  one.body.langevin = {1e-5, 0.05, 3};
+  one.wavefront_depth = 1;
+  SimulationSettings deep = one;
+  deep.wavefront_depth = 8;
+  deep.wavefront_min_particles = 0;
+  Simulation single(p, {testing::unit_material(0.01)}, {}, testing::full_model(), one);
+  Simulation wave(p, {testing::unit_material(0.01)}, {}, testing::full_model(), deep);
+  single.run(3000);
+  wave.run(3000);
+  REQUIRE(wave.wavefront_steps() > 2000);
+  REQUIRE(wave.neighbor_builds() > 1);
+  bool wrapped = false;
+  for (const ImageCount& image : wave.images()) wrapped = wrapped || image.x != 0;
+  REQUIRE(wrapped);
+  CHECK(wave.images() == single.images());
+  require_same_state(single, wave);
+}
+
+TEST_CASE("a wavefront in which a particle leaves the skin is undone and its steps run one at a time") {
+  Particles p = testing::relaxed_cluster(40, 13);
+  for (auto& v : p.velocity) v = {0.1, 0.0, 0.0};  // 0.002 per step: out of a skin of 0.1 in 25 steps
+  p.angular_velocity[0] = {0.0, 0.0, 2.0};
+  SimulationSettings one = testing::bonded();
+  one.time_step = 0.02;
+  one.skin = 0.1;
+  one.wavefront_depth = 1;
+  SimulationSettings blind = one;
+  blind.wavefront_depth = 16;
+  blind.wavefront_margin = 0.0;  // every wavefront starts whole: some must be undone
+  blind.wavefront_min_particles = 0;
+  Simulation single(p, {testing::unit_material(0.01)}, {}, testing::full_model(), one);
+  Simulation wave(p, {testing::unit_material(0.01)}, {}, testing::full_model(), blind);
+  single.run(1500);
+  wave.run(1500);
+  REQUIRE(wave.wavefronts_undone() > 0);
+  REQUIRE(wave.wavefront_steps() > 0);
+  require_same_state(single, wave);
+}
