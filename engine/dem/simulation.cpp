@@ -174,7 +174,8 @@ void Simulation::run(std::int64_t steps) {
   std::int64_t one_by_one_until = 0;  // after a wavefront that was undone, its steps one at a time
   for (std::int64_t s = 0; s < steps;) {
     bool rebuild = drift.since_build2 > limit2;
-    const std::int64_t wanted = s < one_by_one_until ? 1 : std::min<std::int64_t>(wavefront_depth(), steps - s);
+    const std::int64_t wanted =
+        s < one_by_one_until ? 1 : std::min({wavefront_depth(), wavefront_cap_, steps - s});
     if (wanted > 1) {
       // Rebuilt early rather than run a wavefront of less than half the passes a fresh list allows;
       // not in a periodic box, where rebuilds wrap the positions (and so round them differently).
@@ -190,9 +191,11 @@ void Simulation::run(std::int64_t steps) {
         if (const std::optional<Drift> next = run_wavefront(static_cast<int>(depth), s + depth < steps)) {
           drift = *next;
           s += depth;
+          wavefront_cap_ = std::min(2 * wavefront_cap_, wavefront_depth());
           continue;
         }
         one_by_one_until = s + depth;
+        wavefront_cap_ = std::max<std::int64_t>(2, depth / 2);
       }
     }
     time_ += dt_;

@@ -1,6 +1,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -159,6 +160,8 @@ class Simulation {
   Checkpoint checkpoint_;
   std::uint64_t wavefront_steps_ = 0;
   std::uint64_t wavefronts_undone_ = 0;
+  // Deepest wavefront to try next: halved when one is undone, doubled again after one that is not.
+  std::int64_t wavefront_cap_ = std::numeric_limits<std::int32_t>::max();
 };
 
 }  // namespace aerobreak

@@ -75,6 +75,24 @@ inline void launch_above_floor(Particles& p, double height, const Vec3& velocity
   }
 }
 
+// An adhesive floor (the plane z = 0, normal +z) and a wall without adhesion at x = -3 facing +x:
+// a cluster launched above the floor hits one, then perhaps the other.
+inline std::vector<Wall> floor_and_side_walls() {
+  Wall floor;
+  floor.adhesive = true;
+  Wall side{{-3.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+  side.adhesive = false;
+  return {floor, side};
+}
+
+// Gravity and a Langevin bath, weak enough to leave an impact's contact dynamics in charge.
+inline BodyForces gravity_and_bath() {
+  BodyForces body;
+  body.gravity = {0.0, 0.0, -1e-3};
+  body.langevin = {1e-6, 0.05, 77};
+  return body;
+}
+
 inline Vec3 linear_momentum(const Particles& p) {
   Vec3 total;
   for (std::size_t i = 0; i < p.size(); ++i) total += p.mass[i] * p.velocity[i];

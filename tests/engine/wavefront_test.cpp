@@ -40,24 +40,20 @@ TEST_CASE("a wavefront of any depth gives the steps one at a time to the last bi
   const int depth = GENERATE(2, 5, 16);
   Particles p = testing::relaxed_cluster(600, 5);
   testing::launch_above_floor(p, 0.52, {0.01, 0.0, -0.2});
-  Wall floor;
-  floor.adhesive = true;
-  Wall side{{-3.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
-  side.adhesive = false;
+  const std::vector<Wall> walls = testing::floor_and_side_walls();
   SimulationSettings one = testing::bonded();
-  one.body.gravity = {0.0, 0.0, -1e-3};
-  one.body.langevin = {1e-6, 0.05, 77};
+  one.body = testing::gravity_and_bath();
   one.wavefront_depth = 1;
   SimulationSettings deep = one;
   deep.wavefront_depth = depth;
   deep.wavefront_min_particles = 0;
-  Simulation single(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), one);
+  Simulation single(p, {testing::unit_material(0.01)}, walls, testing::full_model(), one);
   SimulationSettings small = deep;
   small.wavefront_min_particles = p.size() + 1;
-  Simulation below(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), small);
+  Simulation below(p, {testing::unit_material(0.01)}, walls, testing::full_model(), small);
   below.run(100);
   CHECK(below.wavefront_steps() == 0);  // fewer particles than wavefront_min_particles
-  Simulation wave(p, {testing::unit_material(0.01)}, {floor, side}, testing::full_model(), deep);
+  Simulation wave(p, {testing::unit_material(0.01)}, walls, testing::full_model(), deep);
   // Several calls: a run's last wavefront may be shorter, and velocities are whole-step between.
   for (int call = 0; call < 3; ++call) {
     single.run(500);
