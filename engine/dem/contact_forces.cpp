@@ -261,7 +261,7 @@ class ContactForcesFor final : public ContactForces {
     ContactConstants shared;
     [[gnu::always_inline]] ContactConstants get(std::size_t) const { return shared; }
     SharedConstants from(std::size_t) const { return *this; }
-    SharedConstants copied(ContactBlock&) const { return *this; }
+    SharedConstants copied(ContactBlock&, std::size_t, std::size_t) const { return *this; }
   };
   // ... or columns, from `offset` on.
   struct ColumnConstants {
@@ -269,39 +269,53 @@ class ContactForcesFor final : public ContactForces {
     std::size_t offset = 0;
     [[gnu::always_inline]] ContactConstants get(std::size_t q) const { return columns.get(offset + q); }
     ColumnConstants from(std::size_t first) const { return {columns, first}; }
-    ColumnConstants copied(ContactBlock& block) const {
-      for (std::size_t q = 0; q < block.size(); ++q) block.constants.set(q, columns.get(block.slot[q]));
+    // Rows begin .. end-1 of the block, past its last contact copies of that one.
+    ColumnConstants copied(ContactBlock& block, std::size_t begin, std::size_t end) const {
+      for (std::size_t q = begin; q < end; ++q)
+        block.constants.set(q, columns.get(block.slot[std::min(q, block.size() - 1)]));
       return {block.constants, 0};
     }
   };
 
+  // Contacts per vector of the widest vector unit a build may use (8 doubles, AVX-512): evaluated
+  // in whole vectors, a block has no scalar remainder, which costs several lanes' time a contact.
+  static constexpr std::size_t lanes = 8;
+
   // Slots follow the pairs since the last rebuild, so a block's contacts usually hold consecutive
-  // slots: then the laws work on the pool's columns in place. Otherwise (a contact formed or broke
-  // since) they work on copies in the block.
+  // slots: then the laws work on the pool's columns in place, in whole vectors. The rest of the
+  // block (all of it if a contact formed or broke since) is evaluated on copies, padded to whole
+  // vectors with copies of its last contact, whose results are dropped.
   template <class Constants>
   void evaluate_block(ContactBlock& block, ContactPool& pool, const Constants& constants, double dt) const {
     const std::size_t size = block.size();
+    const std::size_t whole = size - size % lanes;
     const std::int32_t first_slot = block.slot[0];
     bool consecutive = true;
     for (std::size_t q = 1; q < size; ++q) consecutive = consecutive && block.slot[q] == first_slot + std::int32_t(q);
     if (consecutive) {
       const auto offset = static_cast<std::size_t>(first_slot);
-      evaluate(pool.history, offset, constants.from(offset), block.motion, size, dt);
-      return;
+      evaluate(pool.history, offset, constants.from(offset), block.motion, 0, whole, dt);
+      if (whole == size) return;
     }
-    for (std::size_t q = 0; q < size; ++q) block.history.set(q, pool.history.get(block.slot[q]));
-    evaluate(block.history, 0, constants.copied(block), block.motion, size, dt);
-    for (std::size_t q = 0; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
+    const std::size_t begin = consecutive ? whole : 0;
+    const std::size_t end = (size + lanes - 1) / lanes * lanes;
+    for (std::size_t q = begin; q < size; ++q) block.history.set(q, pool.history.get(block.slot[q]));
+    for (std::size_t q = size; q < end; ++q) {
+      block.history.set(q, block.history.get(size - 1));
+      block.motion.set(q, block.motion.get(size - 1));
+    }
+    evaluate(block.history, 0, constants.copied(block, begin, end), block.motion, begin, end, dt);
+    for (std::size_t q = begin; q < size; ++q) pool.history.set(block.slot[q], block.history.get(q));
   }
 
-  // The laws of `size` contacts whose history is at `offset` onwards of `history` and whose
-  // motion is at 0 onwards of `motion`.
+  // The laws of the contacts begin .. end-1 of the block, whose history is at `offset` + q of
+  // `history` and whose motion is at q of `motion`.
   template <class Constants>
   void evaluate(ContactHistoryColumns& history, std::size_t offset, const Constants& constants,
-                ContactMotionColumns& motion, std::size_t size, double dt) const {
+                ContactMotionColumns& motion, std::size_t begin, std::size_t end, double dt) const {
     // Every column is indexed by the contact alone: no iteration depends on another.
 #pragma GCC ivdep
-    for (std::size_t q = 0; q < size; ++q) {
+    for (std::size_t q = begin; q < end; ++q) {
       ContactHistory state = history.get(offset + q);
       DissipationTally tally;
       const ContactLoad load = model_.evaluate(state, constants.get(q), motion.get(q), dt, tally);
