@@ -1,0 +1,48 @@
+// `aerobreak bench` prints its figures: one row per size, particle-steps per second, and the share
+// of steps run in wavefronts, which follows --wavefront-from.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/run_command.hpp"
+
+using aerobreak::testing::run_command;
+
+namespace {
+
+// The table row of size n, split into its columns.
+std::vector<std::string> row_of(const std::string& text, const std::string& n) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::vector<std::string> columns;
+    for (std::string word; words >> word;) columns.push_back(word);
+    if (!columns.empty() && columns.front() == n) return columns;
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("aerobreak bench prints particle-steps per second and the share of steps in wavefronts") {
+  const auto out = run_command(std::string(AEROBREAK_BINARY) +
+                               " bench --sizes 64,128 --steps 40 --wavefront-from 100 --wavefront-depth 8");
+  REQUIRE(out.exit_code == 0);
+  const std::vector<std::string> small = row_of(out.text, "64"), large = row_of(out.text, "128");
+  // N, contacts, steps, dt, seconds, particle-steps/s, ns/p-step, pairs/N, rebuilds, wavefront
+  REQUIRE(small.size() == 10);
+  REQUIRE(large.size() == 10);
+  CHECK(std::stod(small[5]) > 0.0);
+  CHECK(std::stod(large[5]) > 0.0);
+  CHECK(small[9] == "0%");   // below --wavefront-from: one step at a time
+  CHECK(large[9] != "0%");   // from it on: in wavefronts
+  CHECK(std::stoi(large[2]) == 40);
+}
+
+TEST_CASE("aerobreak bench refuses a wavefront depth below 1") {
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " bench --sizes 64 --wavefront-depth 0");
+  CHECK(out.exit_code != 0);
+  CHECK(out.text.find("wavefront-depth") != std::string::npos);
+}
