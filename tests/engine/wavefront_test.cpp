@@ -4,6 +4,8 @@
 // list's skin must be undone and its steps run one at a time.
 #include <catch2/catch.hpp>
 
+#include "engine/cluster/ballistic_aggregation.hpp"
+#include "engine/dem/impact_placement.hpp"
 #include "engine/dem/simulation.hpp"
 #include "support.hpp"
 
@@ -111,5 +113,27 @@ TEST_CASE("a wavefront in which a particle leaves the skin is undone and its ste
   wave.run(1500);
   REQUIRE(wave.wavefronts_undone() > 0);
   REQUIRE(wave.wavefront_steps() > 0);
+  require_same_state(single, wave);
+}
+
+// Spheres of many radii: the contacts' constants are kept per slot (ContactPool), and blocks with
+// a contact formed or broken since the last rebuild are evaluated on copies.
+TEST_CASE("a wavefront over lognormal primaries gives the steps one at a time to the last bit") {
+  const Material material = testing::unit_material(0.01);
+  const Cluster cluster = ballistic_cluster_cluster_aggregation({300, 1.0, 1.4}, 8);
+  Particles p = relax_cluster(particles_from_cluster(cluster, material.density), {material}, ContactModelSpec{}).particles;
+  testing::launch_above_floor(p, 0.8, {0.02, 0.01, -0.3});
+  SimulationSettings one = testing::bonded();
+  one.wavefront_depth = 1;
+  SimulationSettings deep = one;
+  deep.wavefront_depth = 16;
+  deep.wavefront_min_particles = 0;
+  Simulation single(p, {material}, testing::floor_and_side_walls(), testing::full_model(), one);
+  Simulation wave(p, {material}, testing::floor_and_side_walls(), testing::full_model(), deep);
+  single.run(1200);
+  wave.run(1200);
+  REQUIRE(wave.wavefront_steps() > 600);
+  REQUIRE(wave.pair_events().made > 0);
+  REQUIRE(wave.wall_events().made > 0);
   require_same_state(single, wave);
 }
