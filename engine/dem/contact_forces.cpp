@@ -35,22 +35,12 @@ class ContactForcesFor final : public ContactForces {
   }
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
-                       double formation_gap, ContactLedger ledger, ParticleCompletion& completed) const override {
-    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, {{ledger, completed}});
+                       double formation_gap, const std::vector<Pass>& passes) const override {
+    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, passes);
   }
   void add_periodic_pair_forces(Particles& p, PairList& pairs, const PeriodicBox& box, const MaterialTable& materials,
-                                double dt, double formation_gap, ContactLedger ledger,
-                                ParticleCompletion& completed) const override {
-    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, {{ledger, completed}});
-  }
-  void add_pair_forces_wavefront(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
-                                 const std::vector<Pass>& passes) const override {
-    add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, 0.0, passes);
-  }
-  void add_periodic_pair_forces_wavefront(Particles& p, PairList& pairs, const PeriodicBox& box,
-                                          const MaterialTable& materials, double dt,
-                                          const std::vector<Pass>& passes) const override {
-    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, 0.0, passes);
+                                double dt, double formation_gap, const std::vector<Pass>& passes) const override {
+    add_pair_forces_in(PeriodicSpace(box), p, pairs, materials, dt, formation_gap, passes);
   }
 
   void add_wall_forces(Particles& p, const Wall& wall, std::uint32_t wall_index, std::vector<std::int32_t>& slots,

@@ -49,30 +49,27 @@ class ContactForces {
  public:
   virtual ~ContactForces() = default;
 
-  // Particle-particle contacts: forms, evaluates and breaks the contacts of every listed pair.
-  // A contact forms where the surfaces are closer than formation_gap (0: where they touch).
-  // Every particle is reported to `completed` once, in index order, after its last pair force.
-  virtual void add_pair_forces(Particles& particles, PairList& pairs, const MaterialTable& materials, double dt,
-                               double formation_gap, ContactLedger ledger, ParticleCompletion& completed) const = 0;
-  // The same in a periodic box: each pair interacts through its nearest images. A separate
-  // compiled loop, so that the open-space loop above carries no periodic test.
-  virtual void add_periodic_pair_forces(Particles& particles, PairList& pairs, const PeriodicBox& box,
-                                        const MaterialTable& materials, double dt, double formation_gap,
-                                        ContactLedger ledger, ParticleCompletion& completed) const = 0;
-  // The pair forces of passes.size() consecutive steps at once, as a wavefront: pass k takes a
-  // row once pass k-1 has reported complete (and so moved on) the row's particle and all its
-  // partners, so that each particle's arrays are used by all passes while they are still in the
-  // caches. Each pass gives exactly what it would alone (contacts form where they touch); the
-  // list must hold for the positions of every pass, which the caller checks afterwards.
+  // What one force pass over the pairs writes to: its ledger, and whom it tells that a particle
+  // has all its pair forces.
   struct Pass {
     ContactLedger ledger;
     ParticleCompletion& completed;
   };
-  virtual void add_pair_forces_wavefront(Particles& particles, PairList& pairs, const MaterialTable& materials,
-                                         double dt, const std::vector<Pass>& passes) const = 0;
-  virtual void add_periodic_pair_forces_wavefront(Particles& particles, PairList& pairs, const PeriodicBox& box,
-                                                  const MaterialTable& materials, double dt,
-                                                  const std::vector<Pass>& passes) const = 0;
+  // Particle-particle contacts: forms, evaluates and breaks the contacts of every listed pair.
+  // A contact forms where the surfaces are closer than formation_gap (0: where they touch).
+  // Every particle is reported to each pass's `completed` once, in index order, after its last
+  // pair force of that pass. One pass is one step's forces. Several are those of consecutive
+  // steps, run together as a wavefront: pass k takes a row once pass k-1 has reported complete
+  // (and so moved on) the row's particle and all its partners, so that each particle's arrays are
+  // used by all passes while they are still in the caches. Each pass gives exactly what it would
+  // alone; the list must hold for the positions of every pass, which the caller checks afterwards.
+  virtual void add_pair_forces(Particles& particles, PairList& pairs, const MaterialTable& materials, double dt,
+                               double formation_gap, const std::vector<Pass>& passes) const = 0;
+  // The same in a periodic box: each pair interacts through its nearest images. A separate
+  // compiled loop, so that the open-space loop above carries no periodic test.
+  virtual void add_periodic_pair_forces(Particles& particles, PairList& pairs, const PeriodicBox& box,
+                                        const MaterialTable& materials, double dt, double formation_gap,
+                                        const std::vector<Pass>& passes) const = 0;
   // Contacts of the particles begin .. end-1 with one wall; slots[i] is particle i's contact with
   // it, or -1. The dissipation is added to ledger.tally in particle order, so that a pass in
   // several ranges sums exactly as one over all particles.

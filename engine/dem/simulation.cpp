@@ -293,12 +293,7 @@ Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap,
   const bool long_range_pass = spec_.van_der_waals;
   ForcePass pass(*this, !long_range_pass, integrate, steps_);
   const VanDerWaals* long_range = long_range_pass ? &spec_.hamaker : nullptr;
-  if (settings_.periodic)
-    pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
-                                           formation_gap, {pair_pool_, tally_, pair_events_, long_range}, pass);
-  else
-    pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap,
-                                  {pair_pool_, tally_, pair_events_, long_range}, pass);
+  add_pair_forces(formation_gap, {{{pair_pool_, tally_, pair_events_, long_range}, pass}});
   pass.book(tally_, external_work_);
   if (!long_range_pass) return pass.drift();
   if (settings_.periodic)
@@ -309,6 +304,15 @@ Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap,
   add_body_forces(particles_, settings_.body, steps_, dt_, 0, particles_.size(), work);
   external_work_ += work;
   return integrate ? kick_and_drift<2>(0, particles_.size()) : Drift{};
+}
+
+// The pair loop over the listed pairs, compiled for open space or for the periodic box.
+void Simulation::add_pair_forces(double formation_gap, const std::vector<ContactForces::Pass>& passes) {
+  if (settings_.periodic)
+    pair_forces_->add_periodic_pair_forces(particles_, neighbors_->pairs(), *settings_.periodic, materials_, dt_,
+                                           formation_gap, passes);
+  else
+    pair_forces_->add_pair_forces(particles_, neighbors_->pairs(), materials_, dt_, formation_gap, passes);
 }
 
 void Simulation::rebuild_neighbors() {
@@ -344,7 +348,7 @@ std::int64_t Simulation::wavefront_room(double since_build2, const Drift& drift,
   return std::min(wanted, 1 + static_cast<std::int64_t>(std::min(room / per_pass, static_cast<double>(wanted))));
 }
 
-// `depth` steps whose force passes run together (ContactForces::add_pair_forces_wavefront). Each
+// `depth` steps whose force passes run together (ContactForces::add_pair_forces). Each
 // pass sums exactly as it would alone, and the run's sums take the passes in order, so the result
 // is the one of `depth` single steps, to the last bit, provided the neighbour list held for
 // every pass: if a pass has moved a particle out of the skin, the steps are undone (empty result).
@@ -359,11 +363,7 @@ std::optional<Simulation::Drift> Simulation::run_wavefront(int depth, bool integ
     passes.emplace_back(*this, true, k + 1 < depth || integrate_last, steps_ + k + 1);
     list.push_back({{pair_pool_, pair_tally[k], pair_events_, nullptr}, passes.back()});
   }
-  if (settings_.periodic)
-    pair_forces_->add_periodic_pair_forces_wavefront(particles_, neighbors_->pairs(), *settings_.periodic, materials_,
-                                                     dt_, list);
-  else
-    pair_forces_->add_pair_forces_wavefront(particles_, neighbors_->pairs(), materials_, dt_, list);
+  add_pair_forces(0.0, list);
   const double limit2 = neighbors_->displacement_limit2();
   for (int k = 0; k + 1 < depth; ++k)
     if (passes[k].drift().since_build2 > limit2) {

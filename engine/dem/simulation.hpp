@@ -30,7 +30,7 @@ struct SimulationSettings {
   double initial_bond_gap = 0.0;
   BodyForces body;
   // Force passes of this many consecutive steps run together as a wavefront over the particles
-  // (ContactForces::add_pair_forces_wavefront), so that the arrays of a system too large for the
+  // (ContactForces::add_pair_forces), so that the arrays of a system too large for the
   // caches are fetched once for several steps; 1: one step at a time. The results are the same.
   // Only from wavefront_min_particles on: a smaller system's arrays (about 270 bytes a particle)
   // stay in the caches anyway, and one step at a time is faster (docs/PERFORMANCE.md).
@@ -112,6 +112,7 @@ class Simulation {
     ContactEvents pair_events, wall_events;
   };
   Drift compute_forces(bool rebuild, double formation_gap, bool integrate);
+  void add_pair_forces(double formation_gap, const std::vector<ContactForces::Pass>& passes);
   void rebuild_neighbors();
   void require_list_for_particles() const;
   std::int64_t wavefront_depth() const;
