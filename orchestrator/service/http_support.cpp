@@ -1,0 +1,55 @@
+#include "orchestrator/service/http_support.hpp"
+
+#include <charconv>
+
+namespace aerobreak {
+
+void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body) {
+  response.status = status;
+  response.set_content(body.dump(), "application/json");
+}
+
+void send_error(httplib::Response& response, const RequestError& error) {
+  send_json(response, error.status, {{"error", error.message}, {"violations", error.violations}});
+}
+
+nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& violations) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& violation : violations) list.push_back({{"pointer", violation.pointer}, {"message", violation.message}});
+  return list;
+}
+
+std::size_t unsigned_parameter(const httplib::Request& request, const std::string& name, std::size_t fallback,
+                               std::size_t maximum) {
+  if (!request.has_param(name)) return fallback;
+  const std::string text = request.get_param_value(name);
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value > maximum)
+    throw RequestError{400, "query parameter '" + name + "' must be an integer from 0 to " + std::to_string(maximum) +
+                                " (got '" + text + "')"};
+  return value;
+}
+
+PageRequest page_request(const httplib::Request& request, const ServiceOptions& options) {
+  PageRequest page;
+  page.limit = unsigned_parameter(request, "limit", 100, options.max_page_size);
+  page.offset = unsigned_parameter(request, "offset", 0, std::size_t{1} << 40);
+  return page;
+}
+
+std::int64_t path_id(const httplib::Request& request) {
+  std::int64_t id = 0;
+  const std::string text = request.matches[1];
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (error != std::errc() || end != text.data() + text.size()) throw RequestError{404, "no such id: " + text};
+  return id;
+}
+
+StudyRecord existing_study(Store& store, std::int64_t id) {
+  auto study = store.study(id);
+  if (!study) throw RequestError{404, "no study " + std::to_string(id)};
+  return *study;
+}
+
+}  // namespace aerobreak

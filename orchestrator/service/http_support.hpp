@@ -1,0 +1,53 @@
+#pragma once
+#include <httplib.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/service/service.hpp"
+#include "orchestrator/store/store.hpp"
+#include "orchestrator/study/study.hpp"
+
+// What every group of endpoints shares: the JSON error answer, query and path parameters, and the
+// wrapper that turns a RequestError into its answer. Each group of endpoints registers itself from a
+// file of its own (register_http_api calls them).
+namespace aerobreak {
+
+// A request that cannot be served as asked: its status and the JSON body that says why.
+struct RequestError {
+  int status;
+  std::string message;
+  nlohmann::ordered_json violations = nlohmann::ordered_json::array();
+};
+
+void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body);
+void send_error(httplib::Response& response, const RequestError& error);
+nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& violations);
+
+// Query parameter `name` as an integer in [0, maximum], `fallback` when absent; RequestError 400
+// naming the parameter otherwise.
+std::size_t unsigned_parameter(const httplib::Request& request, const std::string& name, std::size_t fallback,
+                               std::size_t maximum);
+PageRequest page_request(const httplib::Request& request, const ServiceOptions& options);
+// The id captured by the route's first group; RequestError 404 when it is not an integer.
+std::int64_t path_id(const httplib::Request& request);
+// The study `id`; RequestError 404 when there is none.
+StudyRecord existing_study(Store& store, std::int64_t id);
+
+// Runs a handler, turning RequestError into its JSON answer.
+template <typename Handler>
+httplib::Server::Handler guarded(Handler handler) {
+  return [handler](const httplib::Request& request, httplib::Response& response) {
+    try {
+      handler(request, response);
+    } catch (const RequestError& error) {
+      send_error(response, error);
+    }
+  };
+}
+
+}  // namespace aerobreak
