@@ -62,6 +62,47 @@ CaseRecord case_from(const SqliteStatement& row) {
   return record;
 }
 
+std::optional<bool> optional_flag(const SqliteStatement& row, int column) {
+  const auto value = row.optional_integer(column);
+  return value ? std::optional(*value != 0) : std::nullopt;
+}
+
+ResultRecord result_from(const SqliteStatement& row) {
+  ResultRecord record;
+  record.case_id = row.integer(0);
+  record.hash = row.text(1);
+  record.grid_point = nlohmann::ordered_json::parse(row.text(2));
+  record.replicate = static_cast<int>(row.integer(3));
+  record.attempt = static_cast<int>(row.integer(4));
+  record.outcome = row.text(5);
+  record.restitution = row.optional_real(6);
+  record.largest_fragment_share = row.optional_real(7);
+  record.fragment_count = row.optional_integer(8);
+  record.retained_mass_fraction = row.optional_real(9);
+  record.reentrained_mass_fraction = row.optional_real(10);
+  record.damage_ratio = row.optional_real(11);
+  record.fractured_on_wall = optional_flag(row, 12);
+  record.small_strain_exceeded = optional_flag(row, 13);
+  record.energy_per_contact = row.optional_real(14);
+  record.energy_over_rolling = row.optional_real(15);
+  record.initial_contacts = row.optional_integer(16);
+  record.impact_energy = row.optional_real(17);
+  record.wall_clock_seconds = row.optional_real(18);
+  record.data_file = row.optional_text(19);
+  record.committed_at = row.real(20);
+  return record;
+}
+
+// The per-grid-point aggregates of Store::outcomes after the counts by class.
+void read_aggregates(const SqliteStatement& row, int first, GridPointOutcomes& cell) {
+  cell.mean_retained_mass_fraction = row.optional_real(first);
+  cell.mean_damage_ratio = row.optional_real(first + 1);
+  cell.mean_energy_per_contact = row.optional_real(first + 2);
+  cell.fractured_on_wall = static_cast<std::size_t>(row.optional_integer(first + 3).value_or(0));
+  cell.small_strain_exceeded = static_cast<std::size_t>(row.optional_integer(first + 4).value_or(0));
+  cell.small_strain_unchecked = static_cast<std::size_t>(row.optional_integer(first + 5).value_or(0));
+}
+
 }  // namespace
 
 std::size_t Store::claimable_cases() {
@@ -165,31 +206,16 @@ Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::stri
   result.total = count(std::move(total));
   auto statement = db->prepare(
       "SELECT r.case_id, c.hash, sc.grid_point, sc.replicate, r.attempt, r.outcome, r.restitution, "
-      "r.largest_fragment_share, r.fragment_count, r.mass_fraction_on_wall, r.impact_energy, r.wall_clock_seconds, "
-      "r.data_file, r.committed_at " + from + " ORDER BY sc.position LIMIT ? OFFSET ?");
+      "r.largest_fragment_share, r.fragment_count, r.retained_mass_fraction, r.reentrained_mass_fraction, "
+      "r.damage_ratio, r.fractured_on_wall, r.small_strain_exceeded, r.energy_per_contact, r.energy_over_rolling, "
+      "r.initial_contacts, r.impact_energy, r.wall_clock_seconds, r.data_file, r.committed_at " + from +
+      " ORDER BY sc.position LIMIT ? OFFSET ?");
   int index = 1;
   statement.bind(index++, study_id);
   if (outcome) statement.bind(index++, *outcome);
   statement.bind(index++, page.limit);
   statement.bind(index, page.offset);
-  while (statement.step()) {
-    ResultRecord record;
-    record.case_id = statement.integer(0);
-    record.hash = statement.text(1);
-    record.grid_point = nlohmann::ordered_json::parse(statement.text(2));
-    record.replicate = static_cast<int>(statement.integer(3));
-    record.attempt = static_cast<int>(statement.integer(4));
-    record.outcome = statement.text(5);
-    record.restitution = statement.optional_real(6);
-    record.largest_fragment_share = statement.optional_real(7);
-    record.fragment_count = statement.optional_integer(8);
-    record.mass_fraction_on_wall = statement.optional_real(9);
-    record.impact_energy = statement.optional_real(10);
-    record.wall_clock_seconds = statement.optional_real(11);
-    record.data_file = statement.optional_text(12);
-    record.committed_at = statement.real(13);
-    result.items.push_back(std::move(record));
-  }
+  while (statement.step()) result.items.push_back(result_from(statement));
   return result;
 }
 
@@ -198,7 +224,9 @@ std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
   auto statement = db->prepare(
       "SELECT sc.grid_key, min(sc.grid_point), min(sc.position), count(*), "
       "sum(r.outcome = 'stick'), sum(r.outcome = 'bounce'), sum(r.outcome = 'break-up'), "
-      "sum(r.outcome = 'undetermined'), sum(c.status = 'failed') "
+      "sum(r.outcome = 'undetermined'), sum(c.status = 'failed'), "
+      "avg(r.retained_mass_fraction), avg(r.damage_ratio), avg(r.energy_per_contact), sum(r.fractured_on_wall), "
+      "sum(r.small_strain_exceeded), sum(r.case_id IS NOT NULL AND r.small_strain_exceeded IS NULL) "
       "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = sc.case_id "
       "WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)");
   statement.bind_all(study_id);
@@ -210,6 +238,7 @@ std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
     for (std::size_t k = 0; k < kOutcomes.size(); ++k)
       cell.outcomes[std::string(kOutcomes[k])] = static_cast<std::size_t>(statement.integer(4 + static_cast<int>(k)));
     cell.failed = static_cast<std::size_t>(statement.integer(8));
+    read_aggregates(statement, 9, cell);
     cells.push_back(std::move(cell));
   }
   return cells;
