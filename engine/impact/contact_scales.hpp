@@ -23,7 +23,7 @@ struct ContactEnergies {
   // rule (Chokshi et al. 1993; Dominik & Tielens 1997), 1.0691 F_c delta_c with the force rule.
   double breaking_energy = 0.0;
   // E_roll = 6 pi^2 gamma R* xi_crit (Dominik & Tielens 1997), gamma = w/2 the surface energy of
-  // one surface: the work to roll one contact a quarter turn. NaN without rolling resistance.
+  // one surface: the energy to roll one contact through 90 degrees. NaN without rolling resistance.
   double rolling_energy = 0.0;
 };
 
