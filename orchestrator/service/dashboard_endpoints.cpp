@@ -1,5 +1,8 @@
 #include "orchestrator/service/dashboard_endpoints.hpp"
 
+#include <map>
+#include <memory>
+#include <mutex>
 #include <set>
 #include <string>
 
@@ -14,6 +17,29 @@ namespace {
 
 constexpr std::size_t kMaxProgressPage = 100;
 constexpr std::size_t kMaxFragmentGridPoints = 1000;
+
+// The grid points of recently filtered studies: a study's grid points never change once it is
+// stored, and listing them costs a pass over its cases. At most kStudies studies are kept.
+class GridPointCache {
+ public:
+  using Points = std::vector<std::pair<std::string, nlohmann::ordered_json>>;
+  std::shared_ptr<const Points> points(Store& store, std::int64_t study_id) {
+    {
+      std::lock_guard lock(mutex_);
+      if (const auto found = cache_.find(study_id); found != cache_.end()) return found->second;
+    }
+    auto points = std::make_shared<const Points>(store.grid_points(study_id));
+    std::lock_guard lock(mutex_);
+    if (cache_.size() >= kStudies) cache_.clear();
+    cache_[study_id] = points;
+    return points;
+  }
+
+ private:
+  static constexpr std::size_t kStudies = 32;
+  std::mutex mutex_;
+  std::map<std::int64_t, std::shared_ptr<const Points>> cache_;
+};
 
 nlohmann::ordered_json moments_json(const Moments& moments) {
   const auto estimate = mean_interval(moments.count, moments.sum, moments.sum_of_squares);
@@ -53,7 +79,7 @@ nlohmann::ordered_json grid_json(const StudyRecord& study, const std::vector<Gri
   return {{"study", study.id}, {"confidence", 0.95}, {"axes", axes_json(cells)}, {"grid_points", rows}};
 }
 
-CaseFilter case_filter(const httplib::Request& request, Store& store, std::int64_t study_id) {
+CaseFilter case_filter(const httplib::Request& request, Store& store, GridPointCache& grid, std::int64_t study_id) {
   CaseFilter filter;
   if (request.has_param("status")) {
     filter.status = parse_case_status(request.get_param_value("status"));
@@ -66,7 +92,7 @@ CaseFilter case_filter(const httplib::Request& request, Store& store, std::int64
       throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
   }
   const AxisFilter axes(request);
-  if (!axes.empty()) filter.grid_keys = axes.matching_keys(store.grid_points(study_id));
+  if (!axes.empty()) filter.grid_keys = axes.matching_keys(*grid.points(store, study_id));
   return filter;
 }
 
@@ -81,8 +107,10 @@ nlohmann::ordered_json case_row_json(const CaseRecord& record) {
   return json;
 }
 
-nlohmann::ordered_json fragment_sizes_json(Store& store, const StudyRecord& study, const AxisFilter& axes) {
-  const auto points = store.grid_points(study.id);
+nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, const StudyRecord& study,
+                                          const AxisFilter& axes) {
+  const auto points_held = grid.points(store, study.id);
+  const auto& points = *points_held;
   const auto keys = axes.matching_keys(points);
   if (keys.size() > kMaxFragmentGridPoints)
     throw RequestError{400, std::to_string(keys.size()) + " grid points match; narrow them to at most " +
@@ -101,6 +129,7 @@ nlohmann::ordered_json fragment_sizes_json(Store& store, const StudyRecord& stud
 }  // namespace
 
 void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options) {
+  auto grid = std::make_shared<GridPointCache>();
   server.Get("/api/progress", guarded([&store](const httplib::Request& request, httplib::Response& response) {
     PageRequest page;
     page.limit = unsigned_parameter(request, "limit", 20, kMaxProgressPage);
@@ -119,9 +148,9 @@ void register_dashboard_endpoints(httplib::Server& server, Store& store, const S
     send_json(response, 200, grid_json(study, store.grid_statistics(study.id)));
   }));
   server.Get(R"(/api/studies/(\d+)/case-table)",
-             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+             guarded([&store, &options, grid](const httplib::Request& request, httplib::Response& response) {
                const auto study = existing_study(store, path_id(request));
-               const auto filter = case_filter(request, store, study.id);
+               const auto filter = case_filter(request, store, *grid, study.id);
                const auto page = page_request(request, options);
                const auto cases = store.cases(study.id, filter, page);
                nlohmann::ordered_json items = nlohmann::ordered_json::array();
@@ -130,9 +159,9 @@ void register_dashboard_endpoints(httplib::Server& server, Store& store, const S
                          {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
              }));
   server.Get(R"(/api/studies/(\d+)/fragment-sizes)",
-             guarded([&store](const httplib::Request& request, httplib::Response& response) {
+             guarded([&store, grid](const httplib::Request& request, httplib::Response& response) {
                const auto study = existing_study(store, path_id(request));
-               send_json(response, 200, fragment_sizes_json(store, study, AxisFilter(request)));
+               send_json(response, 200, fragment_sizes_json(store, *grid, study, AxisFilter(request)));
              }));
   server.Get(R"(/api/cases/(\d+)/data)",
              guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {

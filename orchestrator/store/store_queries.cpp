@@ -166,8 +166,11 @@ Page<CaseRecord> Store::cases(std::int64_t study_id, const CaseFilter& filter, c
   auto db = read();
   const FilterClause where(filter);
   Page<CaseRecord> result;
-  const std::string from =
-      "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = c.id WHERE ";
+  // The count joins only the tables its conditions read: 100,000 rows of study_cases alone count in
+  // a few milliseconds, joined with cases and results in a few hundred.
+  const std::string from = std::string("FROM study_cases sc ") +
+                           (filter.status ? "JOIN cases c ON c.id = sc.case_id " : "") +
+                           (filter.outcome ? "JOIN results r ON r.case_id = sc.case_id " : "") + "WHERE ";
   auto total = db->prepare("SELECT count(*) " + from + where.sql);
   where.bind(total, study_id);
   result.total = count(std::move(total));

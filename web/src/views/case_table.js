@@ -46,16 +46,23 @@ export function createCaseTable({ state, studyId }) {
           (v) => change({ [`f.axis.${axis.name}`]: v }), { dataset: { filterAxis: axis.name } }))));
   }
 
-  async function load(studyAxes) {
-    axes = studyAxes;
-    drawFilters();
+  // The page of cases the URL asks for: fetched with no need of the study's axes, so that it can
+  // be asked for together with the grid statistics.
+  function fetchPage() {
     const page = Number(state.get('page', 0));
     const search = new URLSearchParams({ limit: kPageSize, offset: page * kPageSize });
     if (state.get('f.status')) search.set('status', state.get('f.status'));
     if (state.get('f.outcome')) search.set('outcome', state.get('f.outcome'));
-    for (const axis of axes) if (state.get(`f.axis.${axis.name}`)) search.set(`axis.${axis.name}`, state.get(`f.axis.${axis.name}`));
+    for (const [axis, value] of Object.entries(state.withPrefix('f.axis.'))) search.set(`axis.${axis}`, value);
+    return getJson(`/api/studies/${studyId}/case-table?${search}`);
+  }
+
+  async function load(studyAxes, pending = fetchPage()) {
+    axes = studyAxes;
+    drawFilters();
+    const page = Number(state.get('page', 0));
     const mine = ++request;
-    const result = await getJson(`/api/studies/${studyId}/case-table?${search}`);
+    const result = await pending;
     if (mine !== request) return;
     holder.dataset.total = result.total;
     replaceChildren(holder, table(columns(axes), result.items));
@@ -65,5 +72,5 @@ export function createCaseTable({ state, studyId }) {
       el('span', { id: 'page-range' }, `${first}–${page * kPageSize + result.items.length} of ${result.total}`),
       el('button', { id: 'page-next', disabled: (page + 1) * kPageSize >= result.total, onclick: () => change({ page: page + 1 }) }, 'next →'));
   }
-  return { node, load };
+  return { node, load, fetchPage };
 }

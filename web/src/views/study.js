@@ -76,12 +76,12 @@ function controls(state, axes, onChange) {
     slices);
 }
 
-async function optionalPanels(study) {
+async function optionalPanels(studyId) {
   const [correlations, formats] = await Promise.all([
-    loadCorrelations(study.id).catch(() => null), tableFormats(study.id).catch(() => [])]);
+    loadCorrelations(studyId).catch(() => null), tableFormats(studyId).catch(() => [])]);
   const tables = formats.length === 0 ? null : el('section', { class: 'panel', id: 'tables-panel' },
     el('h2', {}, 'Lookup tables'),
-    el('p', {}, formats.map((format) => [el('a', { href: `/api/studies/${study.id}/tables?format=${format}`, download: true,
+    el('p', {}, formats.map((format) => [el('a', { href: `/api/studies/${studyId}/tables?format=${format}`, download: true,
       dataset: { format } }, format.toUpperCase()), ' '])));
   return { correlations, tables };
 }
@@ -89,8 +89,11 @@ async function optionalPanels(study) {
 export async function showStudy(view, parameters, { showNotice }) {
   const state = new ViewState(parameters);
   const id = Number(state.get('study'));
-  const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
-  const { correlations, tables } = await optionalPanels(study);
+  const caseTable = createCaseTable({ state, studyId: id });
+  const firstCases = caseTable.fetchPage();
+  firstCases.catch(() => {});
+  const [study, grid, { correlations, tables }] = await Promise.all([
+    getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`), optionalPanels(id)]);
   let current = { study, grid };
   let timer = null;
   let stopped = false;
@@ -105,7 +108,6 @@ export async function showStudy(view, parameters, { showNotice }) {
   };
   let top = header(study, { onCancel });
   const plots = createPlots({ state, correlations });
-  const caseTable = createCaseTable({ state, studyId: id });
   const controlsHolder = el('div');
   const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid.axes, (changes) => {
     state.set(changes);
@@ -118,8 +120,7 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tables,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
-  plots.draw(grid);
-  await caseTable.load(grid.axes);
+  await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
@@ -127,8 +128,7 @@ export async function showStudy(view, parameters, { showNotice }) {
     current = { study: nextStudy, grid: nextGrid };
     top = header(nextStudy, { onCancel });
     replaceChildren(headerHolder, top.node);
-    plots.draw(nextGrid);
-    await caseTable.load(nextGrid.axes);
+    await Promise.all([plots.draw(nextGrid), caseTable.load(nextGrid.axes)]);
   }
   async function poll() {
     try {

@@ -83,7 +83,7 @@ export function createPlots({ state, correlations }) {
       { xLabel, yLabel: 'retained mass fraction', yRange: [0, 1] });
     plotCurves(restitution.chart, curvesAlong(grid.grid_points, { ...along, yOf: meanOf('restitution') }),
       { xLabel, yLabel: 'normal restitution' });
-    drawFragments(grid.study, measured, xAxis, slice).catch((error) => {
+    return drawFragments(grid.study, measured, xAxis, slice).catch((error) => {
       replaceChildren(fragments.chart, el('p', { class: 'note' }, error.message));
     });
   }
