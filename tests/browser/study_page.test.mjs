@@ -158,6 +158,9 @@ test("a case's page shows its fragments and attempts and downloads its H5MD file
     assert.equal(await page.locator('#fragments-table tbody tr').count(), detail.fragments.length);
     assert.equal(await page.locator('#attempts-table tbody tr').count(), detail.attempt_history.length);
     assert.ok(await page.locator('#energy-shares tbody tr').count() >= 5);
+    const outcomeText = await page.locator('#outcome').textContent();
+    assert.match(outcomeText, new RegExp(`class${detail.result.outcome.class}`));
+    assert.doesNotMatch(await page.locator('#view').textContent(), /\[object /, 'every value shown as text, none as an object');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-h5')]);
     const file = await download.path();
     const bytes = readFileSync(file);

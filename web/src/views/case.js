@@ -28,7 +28,7 @@ function energySection(energy) {
     node.style.width = `${Math.max(0, Math.min(1, share || 0)) * 12}em`;
     return node;
   };
-  const budgets = Object.keys(energy.initial || {});
+  const budgets = Object.keys(energy.initial || {}).filter((key) => typeof energy.initial[key] === 'number');
   return el('section', { class: 'panel', id: 'energy' }, el('h2', {}, 'Energy budget'),
     facts([['impact kinetic energy', formatNumber(energy.impact_kinetic, 4)], ['balance drift', formatNumber(energy.balance_drift, 3)]]),
     table([{ label: 'Dissipated in', value: ([channel]) => channel },
