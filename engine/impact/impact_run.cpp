@@ -53,13 +53,7 @@ ClusterShape shape_of(const Particles& p, const std::vector<std::uint32_t>& memb
 
 // Diameter of the bounding sphere of the particles about their centre of mass.
 double extent_of(const Particles& p) {
-  Vec3 centre;
-  double mass = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    centre += p.mass[i] * p.position[i];
-    mass += p.mass[i];
-  }
-  centre = centre / mass;
+  const Vec3 centre = p.centre_of_mass();
   double extent = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
   return extent;
