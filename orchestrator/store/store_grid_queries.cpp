@@ -2,6 +2,7 @@
 // fragment-size counts, aggregated by SQLite so that a study of 100,000 cases answers in one pass.
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "orchestrator/store/store.hpp"
@@ -17,12 +18,24 @@ struct MomentColumn {
   std::string_view column;
   Moments GridPointStatistics::*moments;
 };
-constexpr std::array<MomentColumn, 4> kMomentColumns{{
-    {"r.mass_fraction_on_wall", &GridPointStatistics::retained_mass_fraction},
+constexpr std::array<MomentColumn, 6> kMomentColumns{{
+    {"r.retained_mass_fraction", &GridPointStatistics::retained_mass_fraction},
     {"r.restitution", &GridPointStatistics::restitution},
     {"r.fragment_count", &GridPointStatistics::fragment_count},
     {"r.largest_fragment_share", &GridPointStatistics::largest_fragment_share},
+    {"r.damage_ratio", &GridPointStatistics::damage_ratio},
+    {"r.energy_per_contact", &GridPointStatistics::energy_per_contact},
 }};
+
+// Results counted per grid point by a flag: fractured on the wall, outside the small-strain range,
+// and without the small-strain check (results migrated from a version-1 store).
+constexpr std::array<std::string_view, 3> kFlagCounts{
+    "sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)",
+    "sum(r.case_id IS NOT NULL AND r.small_strain_exceeded IS NULL)"};
+
+std::optional<double> mean(const Moments& moments) {
+  return moments.count > 0 ? std::optional(moments.sum / static_cast<double>(moments.count)) : std::nullopt;
+}
 
 std::string grid_statistics_sql() {
   std::string sql =
@@ -32,6 +45,7 @@ std::string grid_statistics_sql() {
     const std::string name(column);
     sql += ", count(" + name + "), total(" + name + "), total(" + name + " * " + name + ")";
   }
+  for (const auto flag : kFlagCounts) sql += ", " + std::string(flag);
   return sql +
          " FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = sc.case_id "
          "WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)";
@@ -52,6 +66,12 @@ GridPointStatistics statistics_from(const SqliteStatement& row) {
     moments.sum = row.real(column++);
     moments.sum_of_squares = row.real(column++);
   }
+  cell.fractured_on_wall = static_cast<std::size_t>(row.integer(column++));
+  cell.small_strain_exceeded = static_cast<std::size_t>(row.integer(column++));
+  cell.small_strain_unchecked = static_cast<std::size_t>(row.integer(column++));
+  cell.mean_retained_mass_fraction = mean(statistics.retained_mass_fraction);
+  cell.mean_damage_ratio = mean(statistics.damage_ratio);
+  cell.mean_energy_per_contact = mean(statistics.energy_per_contact);
   return statistics;
 }
 

@@ -37,7 +37,7 @@ constexpr std::string_view kStudyColumns =
 constexpr std::string_view kCaseColumns =
     "SELECT c.id, c.hash, c.status, c.attempts, c.failures, c.max_attempts, c.wall_time_limit, c.job_id, c.worker, "
     "c.queued_at, c.started_at, c.finished_at, c.error, sc.grid_point, sc.replicate, r.outcome, r.restitution, "
-    "r.mass_fraction_on_wall, r.fragment_count "
+    "r.retained_mass_fraction, r.fragment_count "
     "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = c.id ";
 
 CaseRecord case_from(const SqliteStatement& row) {
@@ -61,6 +61,37 @@ CaseRecord case_from(const SqliteStatement& row) {
   record.restitution = row.optional_real(16);
   record.retained_mass_fraction = row.optional_real(17);
   record.fragment_count = row.optional_integer(18);
+  return record;
+}
+
+std::optional<bool> optional_flag(const SqliteStatement& row, int column) {
+  const auto value = row.optional_integer(column);
+  return value ? std::optional(*value != 0) : std::nullopt;
+}
+
+ResultRecord result_from(const SqliteStatement& row) {
+  ResultRecord record;
+  record.case_id = row.integer(0);
+  record.hash = row.text(1);
+  record.grid_point = nlohmann::ordered_json::parse(row.text(2));
+  record.replicate = static_cast<int>(row.integer(3));
+  record.attempt = static_cast<int>(row.integer(4));
+  record.outcome = row.text(5);
+  record.restitution = row.optional_real(6);
+  record.largest_fragment_share = row.optional_real(7);
+  record.fragment_count = row.optional_integer(8);
+  record.retained_mass_fraction = row.optional_real(9);
+  record.reentrained_mass_fraction = row.optional_real(10);
+  record.damage_ratio = row.optional_real(11);
+  record.fractured_on_wall = optional_flag(row, 12);
+  record.small_strain_exceeded = optional_flag(row, 13);
+  record.energy_per_contact = row.optional_real(14);
+  record.energy_over_rolling = row.optional_real(15);
+  record.initial_contacts = row.optional_integer(16);
+  record.impact_energy = row.optional_real(17);
+  record.wall_clock_seconds = row.optional_real(18);
+  record.data_file = row.optional_text(19);
+  record.committed_at = row.real(20);
   return record;
 }
 
@@ -195,31 +226,16 @@ Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::stri
   result.total = count(std::move(total));
   auto statement = db->prepare(
       "SELECT r.case_id, c.hash, sc.grid_point, sc.replicate, r.attempt, r.outcome, r.restitution, "
-      "r.largest_fragment_share, r.fragment_count, r.mass_fraction_on_wall, r.impact_energy, r.wall_clock_seconds, "
-      "r.data_file, r.committed_at " + from + " ORDER BY sc.position LIMIT ? OFFSET ?");
+      "r.largest_fragment_share, r.fragment_count, r.retained_mass_fraction, r.reentrained_mass_fraction, "
+      "r.damage_ratio, r.fractured_on_wall, r.small_strain_exceeded, r.energy_per_contact, r.energy_over_rolling, "
+      "r.initial_contacts, r.impact_energy, r.wall_clock_seconds, r.data_file, r.committed_at " + from +
+      " ORDER BY sc.position LIMIT ? OFFSET ?");
   int index = 1;
   statement.bind(index++, study_id);
   if (outcome) statement.bind(index++, *outcome);
   statement.bind(index++, page.limit);
   statement.bind(index, page.offset);
-  while (statement.step()) {
-    ResultRecord record;
-    record.case_id = statement.integer(0);
-    record.hash = statement.text(1);
-    record.grid_point = nlohmann::ordered_json::parse(statement.text(2));
-    record.replicate = static_cast<int>(statement.integer(3));
-    record.attempt = static_cast<int>(statement.integer(4));
-    record.outcome = statement.text(5);
-    record.restitution = statement.optional_real(6);
-    record.largest_fragment_share = statement.optional_real(7);
-    record.fragment_count = statement.optional_integer(8);
-    record.mass_fraction_on_wall = statement.optional_real(9);
-    record.impact_energy = statement.optional_real(10);
-    record.wall_clock_seconds = statement.optional_real(11);
-    record.data_file = statement.optional_text(12);
-    record.committed_at = statement.real(13);
-    result.items.push_back(std::move(record));
-  }
+  while (statement.step()) result.items.push_back(result_from(statement));
   return result;
 }
 

@@ -76,7 +76,7 @@ void write_results(SqliteDatabase& db) {
   auto cases = db.prepare("SELECT c.id, sc.grid_point FROM study_cases sc JOIN cases c ON c.id = sc.case_id ORDER BY sc.position");
   auto result = db.prepare(
       "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
-      "mass_fraction_on_wall, impact_energy, wall_clock_seconds, data_file, document, committed_at) "
+      "retained_mass_fraction, impact_energy, wall_clock_seconds, data_file, document, committed_at) "
       "VALUES (?, 1, ?, ?, ?, ?, ?, ?, 0.1, NULL, '{\"synthetic\":true}', 1.7e9)");
   auto fragment = db.prepare(
       "INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity, radius_of_gyration) "

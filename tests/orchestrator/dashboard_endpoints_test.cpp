@@ -60,7 +60,7 @@ TEST_CASE("Dashboard endpoints: grid statistics, case table, fragment sizes and 
       double sum = 0.0, squares = 0.0;
       for (const auto& result : results)
         if (result.at("grid_point").at("impact_speed") == speed) {
-          const double value = result.at("mass_fraction_on_wall");
+          const double value = result.at("retained_mass_fraction");
           sum += value;
           squares += value * value;
         }
