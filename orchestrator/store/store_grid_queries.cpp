@@ -1,5 +1,6 @@
-// The store's per-grid-point queries: outcome counts, moments of the results' scalar quantities and
-// fragment-size counts, aggregated by SQLite so that a study of 100,000 cases answers in one pass.
+// The store's per-grid-point queries: outcome counts (from the summaries), moments of the results'
+// scalar quantities and fragment-size counts, aggregated by SQLite so that a study of 100,000 cases
+// answers in one pass.
 #include <array>
 #include <map>
 #include <string>
@@ -66,6 +67,7 @@ std::vector<GridPointStatistics> Store::grid_statistics(std::int64_t study_id) {
   return cells;
 }
 
+// From the grid-point summaries the store keeps (store_summaries.hpp): one row per grid point.
 std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
   auto db = read();
   auto statement = db->prepare(

@@ -5,7 +5,8 @@
 # `aerobreak serve` and measures each read endpoint with wrk on loopback (2 threads, 16
 # connections): requests per second and the 99th percentile latency.
 # Usage: tests/bench/read_endpoints_bench.sh [BUILD_DIR]   (installs wrk and sqlite3 if missing)
-#   CASES=N (default 100000), GRID_POINTS=N (100), DURATION=seconds per endpoint (10), ROUNDS=N (1)
+#   CASES=N (default 100000), GRID_POINTS=N (100), DURATION=seconds per endpoint (10), ROUNDS=N (1),
+#   KEEP=1 keeps the filled store (its path is printed)
 set -euo pipefail
 build=${1:-build}
 aerobreak=$(realpath "$build/aerobreak")
@@ -18,7 +19,7 @@ server=
 stop_server() {
   if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; server=; fi
 }
-trap 'stop_server; rm -rf "$work"' EXIT
+trap 'stop_server; if [ "${KEEP:-0}" = 1 ]; then echo "kept $work/store.sqlite"; else rm -rf "$work"; fi' EXIT
 
 missing=()
 command -v wrk >/dev/null || missing+=(wrk)
@@ -88,6 +89,12 @@ measure() {
   errors=$(awk '/Non-2xx/ {print $NF}' <<<"$out")
   printf "%-44s %10s requests/s   p99 %8s   non-2xx %s\n" "$label" "$rps" "$p99" "${errors:-0}"
 }
+
+# Warm-up, not reported: the server's threads open their pooled store connections, the outcome
+# table is made once.
+for path in /api/health /api/studies/1/progress /api/studies/1/outcomes; do
+  wrk -t2 -c16 -d2s "$url$path" >/dev/null
+done
 
 echo "== read endpoints under wrk (2 threads, 16 connections, ${duration} s each), $cases results"
 for round in $(seq "$rounds"); do
