@@ -12,7 +12,6 @@ build=${1:-build}
 aerobreak=$(realpath "$build/aerobreak")
 cases=${CASES:-100000}
 grid_points=${GRID_POINTS:-100}
-duration=${DURATION:-10}
 rounds=${ROUNDS:-1}
 work=$(mktemp -d /tmp/aerobreak-read-bench.XXXXXX)
 server=
@@ -21,13 +20,8 @@ stop_server() {
 }
 trap 'stop_server; if [ "${KEEP:-0}" = 1 ]; then echo "kept $work/store.sqlite"; else rm -rf "$work"; fi' EXIT
 
-missing=()
-command -v wrk >/dev/null || missing+=(wrk)
-command -v sqlite3 >/dev/null || missing+=(sqlite3)
-if ((${#missing[@]})); then
-  sudo=$([ "$(id -u)" -eq 0 ] && echo "" || echo sudo)
-  $sudo apt-get update -qq && $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+source "$(dirname "$0")/wrk_support.sh"
+install_bench_tools
 
 store="$work/store.sqlite"
 start_server() {
@@ -79,30 +73,17 @@ start_server
 url="http://127.0.0.1:$(cat "$work/port")"
 etag=$(curl -s -D - -o /dev/null "$url/api/studies/1/outcomes" | awk -F': ' 'tolower($1) == "etag" {print $2}' | tr -d '\r')
 
-measure() {
-  local label=$1 path=$2
-  shift 2
-  local out rps p99 errors
-  out=$(wrk -t2 -c16 -d"${duration}s" --latency "$@" "$url$path")
-  rps=$(awk '/Requests\/sec/ {print $2}' <<<"$out")
-  p99=$(awk '$1 == "99%" {print $2}' <<<"$out")
-  errors=$(awk '/Non-2xx/ {print $NF}' <<<"$out")
-  printf "%-44s %10s requests/s   p99 %8s   non-2xx %s\n" "$label" "$rps" "$p99" "${errors:-0}"
-}
-
 # Warm-up, not reported: the server's threads open their pooled store connections, the outcome
 # table is made once.
 for path in /api/health /api/studies/1/progress /api/studies/1/outcomes; do
   wrk -t2 -c16 -d2s "$url$path" >/dev/null
 done
 
-echo "== read endpoints under wrk (2 threads, 16 connections, ${duration} s each), $cases results"
+echo "== read endpoints under wrk (2 threads, 16 connections, ${DURATION:-10} s each), $cases results"
 for round in $(seq "$rounds"); do
   ((rounds > 1)) && echo "-- round $round"
-  measure /api/health /api/health
-  measure /api/studies/1/progress /api/studies/1/progress
-  measure /api/studies/1/outcomes /api/studies/1/outcomes
+  for path in /api/health /api/studies/1/progress /api/studies/1/outcomes; do wrk_figures "$path" "$url$path"; done
   if [ -n "$etag" ]; then
-    measure "/api/studies/1/outcomes (If-None-Match)" /api/studies/1/outcomes -H "If-None-Match: $etag"
+    wrk_figures "/api/studies/1/outcomes (If-None-Match)" "$url/api/studies/1/outcomes" -H "If-None-Match: $etag"
   fi
 done
