@@ -110,17 +110,17 @@ CREATE TABLE fragments (
 // them and creates the triggers right after this step.
 constexpr std::string_view kVersion2 = R"sql(
 CREATE TABLE study_summaries (
-  study_id         INTEGER PRIMARY KEY REFERENCES studies (id),
-  queued           INTEGER NOT NULL DEFAULT 0,
-  running          INTEGER NOT NULL DEFAULT 0,
-  done             INTEGER NOT NULL DEFAULT 0,
-  failed           INTEGER NOT NULL DEFAULT 0,
-  cancelled        INTEGER NOT NULL DEFAULT 0,
-  first_started_at REAL,
-  last_finished_at REAL,
-  finished_here    INTEGER NOT NULL DEFAULT 0,
-  state_version    INTEGER NOT NULL DEFAULT 0,
-  result_version   INTEGER NOT NULL DEFAULT 0
+  study_id           INTEGER PRIMARY KEY REFERENCES studies (id),
+  queued             INTEGER NOT NULL DEFAULT 0,
+  running            INTEGER NOT NULL DEFAULT 0,
+  done               INTEGER NOT NULL DEFAULT 0,
+  failed             INTEGER NOT NULL DEFAULT 0,
+  cancelled          INTEGER NOT NULL DEFAULT 0,
+  first_started_at   REAL,
+  last_finished_at   REAL,
+  finished_here      INTEGER NOT NULL DEFAULT 0,
+  case_state_version INTEGER NOT NULL DEFAULT 0,
+  result_set_version INTEGER NOT NULL DEFAULT 0
 );
 
 CREATE TABLE grid_point_summaries (

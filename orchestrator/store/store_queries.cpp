@@ -152,7 +152,7 @@ std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
 
 std::optional<StudyVersions> Store::study_versions(std::int64_t study_id) {
   auto db = read();
-  auto statement = db->prepare("SELECT state_version, result_version FROM study_summaries WHERE study_id = ?");
+  auto statement = db->prepare("SELECT case_state_version, result_set_version FROM study_summaries WHERE study_id = ?");
   statement.bind_all(study_id);
   if (!statement.step()) return std::nullopt;
   return StudyVersions{statement.integer(0), statement.integer(1)};

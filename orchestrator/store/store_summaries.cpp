@@ -24,8 +24,8 @@ BEGIN
     finished_here = finished_here + coalesce(c.status IN ('done', 'failed') AND c.finished_at >= s.created_at, 0),
     first_started_at = coalesce(min(first_started_at, c.started_at), first_started_at, c.started_at),
     last_finished_at = coalesce(max(last_finished_at, c.finished_at), last_finished_at, c.finished_at),
-    state_version = state_version + 1,
-    result_version = result_version + EXISTS (SELECT 1 FROM results WHERE case_id = c.id)
+    case_state_version = case_state_version + 1,
+    result_set_version = result_set_version + EXISTS (SELECT 1 FROM results WHERE case_id = c.id)
   FROM cases c, studies s
   WHERE c.id = NEW.case_id AND s.id = NEW.study_id AND study_summaries.study_id = NEW.study_id;
   INSERT OR IGNORE INTO grid_point_summaries (study_id, grid_key, position, grid_point)
@@ -70,7 +70,7 @@ BEGIN
       THEN (SELECT max(c.finished_at) FROM study_cases sc JOIN cases c ON c.id = sc.case_id
             WHERE sc.study_id = s.id)
       ELSE coalesce(max(last_finished_at, NEW.finished_at), last_finished_at, NEW.finished_at) END,
-    state_version = state_version + 1
+    case_state_version = case_state_version + 1
   FROM studies s
   WHERE s.id = study_summaries.study_id
     AND study_summaries.study_id IN (SELECT study_id FROM study_cases WHERE case_id = NEW.id);
@@ -93,7 +93,7 @@ BEGIN
   FROM study_cases sc
   WHERE sc.case_id = NEW.case_id AND grid_point_summaries.study_id = sc.study_id
     AND grid_point_summaries.grid_key = sc.grid_key;
-  UPDATE study_summaries SET result_version = result_version + 1
+  UPDATE study_summaries SET result_set_version = result_set_version + 1
   WHERE study_id IN (SELECT study_id FROM study_cases WHERE case_id = NEW.case_id);
 END;
 CREATE TRIGGER summaries_after_result_update AFTER UPDATE ON results
@@ -106,7 +106,7 @@ BEGIN
   FROM study_cases sc
   WHERE sc.case_id = OLD.case_id AND grid_point_summaries.study_id = sc.study_id
     AND grid_point_summaries.grid_key = sc.grid_key;
-  UPDATE study_summaries SET result_version = result_version + 1
+  UPDATE study_summaries SET result_set_version = result_set_version + 1
   WHERE study_id IN (SELECT study_id FROM study_cases WHERE case_id IN (OLD.case_id, NEW.case_id));
 END;
 CREATE TRIGGER summaries_after_result_delete AFTER DELETE ON results
@@ -119,7 +119,7 @@ BEGIN
   FROM study_cases sc
   WHERE sc.case_id = OLD.case_id AND grid_point_summaries.study_id = sc.study_id
     AND grid_point_summaries.grid_key = sc.grid_key;
-  UPDATE study_summaries SET result_version = result_version + 1
+  UPDATE study_summaries SET result_set_version = result_set_version + 1
   WHERE study_id IN (SELECT study_id FROM study_cases WHERE case_id = OLD.case_id);
 END;
 )sql";
@@ -144,8 +144,8 @@ UPDATE study_summaries SET
            count(*) FILTER (WHERE c.status IN ('done', 'failed') AND c.finished_at >= s.created_at)
     FROM study_cases sc JOIN cases c ON c.id = sc.case_id JOIN studies s ON s.id = sc.study_id
     WHERE sc.study_id = study_summaries.study_id),
-  state_version = state_version + 1,
-  result_version = result_version + 1;
+  case_state_version = case_state_version + 1,
+  result_set_version = result_set_version + 1;
 DELETE FROM grid_point_summaries;
 INSERT INTO grid_point_summaries
   (study_id, grid_key, position, grid_point, cases, stick, bounce, break_up, undetermined, failed)

@@ -6,9 +6,10 @@ namespace aerobreak {
 // Per-study summaries that the read endpoints serve in O(1) and O(grid points) instead of
 // aggregating every case per request (docs/ORCHESTRATOR.md, "Store"):
 //   study_summaries       one row per study: cases by status, first start, last finish, cases
-//                         finished since the study was created, and two versions (state_version:
-//                         +1 whenever one of its cases changes status or times; result_version:
-//                         +1 whenever a result of one of its cases is stored, changed or removed);
+//                         finished since the study was created, and two versions
+//                         (case_state_version: +1 whenever one of its cases changes status or
+//                         times; result_set_version: +1 whenever a result of one of its cases is
+//                         stored, changed or removed);
 //   grid_point_summaries  one row per grid point of a study: cases, outcome counts, failures.
 // SQLite triggers keep them up to date in the transaction of every change to studies, cases,
 // study_cases and results, whoever makes it (the store's writer, a migration's SQL, a by-hand fix).
