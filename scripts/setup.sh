@@ -10,9 +10,11 @@ packages=(
   libopenmpi-dev openmpi-bin
   libhdf5-dev hdf5-tools
   libsqlite3-dev
+  libssl-dev
   nlohmann-json3-dev
   libcpp-httplib-dev
   catch2
+  json-schema-test-suite
   libcli11-dev
   libeigen3-dev
   chromium

@@ -28,7 +28,10 @@ struct ServiceOptions {
   std::size_t max_body_bytes = 1 << 20;
   StudyLimits study_limits{10000, 100000, false};
   std::size_t max_page_size = 1000;
-  int threads = 8;
+  // cpp-httplib serves a keep-alive connection on one thread until it closes: with fewer threads
+  // than open connections the others wait their turn (16 wrk connections on 8 threads: p99 2-3x
+  // that on 32, docs/ORCHESTRATOR.md "Performance").
+  int threads = 32;
   // The dashboard's folder (web_assets.hpp): served at `/` with the library files it names; empty:
   // the API only.
   std::filesystem::path web_directory;
