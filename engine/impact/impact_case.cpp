@@ -160,6 +160,7 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   c.snapshot_interval = run.value("snapshot_interval", 0.0);
   c.time_step = run.value("time_step", 0.0);
   c.steps_per_period = run["steps_per_period"].get<double>();
+  c.steps_per_break_overlap = run["steps_per_break_overlap"].get<double>();
   c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);
   c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
   if (c.time_step > 0.0 && c.time_step >= c.time_limit)

@@ -57,6 +57,7 @@ struct ImpactCase {
   double snapshot_interval = 0.0;  // tau; 0: first and last frames only
   double time_step = 0.0;          // tau; 0: automatic
   double steps_per_period = 50.0;
+  double steps_per_break_overlap = 10.0;
   SettleCriteria settle;
 };
 

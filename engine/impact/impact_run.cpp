@@ -117,6 +117,7 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   SimulationSettings settings;
   settings.time_step = c.time_step;
   settings.steps_per_period = c.steps_per_period;
+  settings.steps_per_break_overlap = c.steps_per_break_overlap;
   settings.speed_scale = c.speed;
   settings.initial_bond_gap = kBondGap;
   Simulation sim(place_for_impact(cluster, r.orientation, wall, c.gap, r.impact_velocity), {c.material, c.wall_material},
