@@ -109,7 +109,7 @@ nlohmann::ordered_json to_json(const ImpactResult& r) {
 
   const auto& rot = r.orientation;
   Json setup = {
-      {"cluster_source", c.cluster.kind == ClusterSource::Kind::ballistic ? "ballistic" : "file"},
+      {"cluster_source", c.cluster.kind == ClusterSource::Kind::generated ? c.cluster.generator.method : "file"},
       {"relaxation", {{"performed", r.relaxation.performed},
                       {"converged", r.relaxation.converged},
                       {"steps", r.relaxation.steps},
