@@ -123,24 +123,26 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
           {"requeued", receipt.requeued}};
 }
 
+nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {
+  const std::size_t finished = cell.finished();
+  nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
+  for (const auto& [outcome, count] : cell.outcomes) {
+    const auto estimate = wilson_interval(count, finished);
+    outcomes[outcome] = {{"count", count},
+                         {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
+                         {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
+                                           : nlohmann::ordered_json(nullptr)}};
+  }
+  return {{"grid_point", cell.grid_point},
+          {"cases", cell.cases},
+          {"finished", finished},
+          {"failed", cell.failed},
+          {"outcomes", outcomes}};
+}
+
 nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (const auto& cell : cells) {
-    const std::size_t finished = cell.finished();
-    nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
-    for (const auto& [outcome, count] : cell.outcomes) {
-      const auto estimate = wilson_interval(count, finished);
-      outcomes[outcome] = {{"count", count},
-                           {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-                           {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
-                                             : nlohmann::ordered_json(nullptr)}};
-    }
-    rows.push_back({{"grid_point", cell.grid_point},
-                    {"cases", cell.cases},
-                    {"finished", finished},
-                    {"failed", cell.failed},
-                    {"outcomes", outcomes}});
-  }
+  for (const auto& cell : cells) rows.push_back(grid_point_outcomes_json(cell));
   return {{"confidence", 0.95}, {"interval", "wilson"}, {"grid_points", rows}};
 }
 

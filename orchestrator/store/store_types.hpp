@@ -97,6 +97,17 @@ struct CaseRecord {
   nlohmann::ordered_json grid_point;
   int replicate = 0;
   std::optional<std::string> outcome;
+  // From the case's result, when it has one.
+  std::optional<double> restitution;
+  std::optional<double> retained_mass_fraction;
+  std::optional<std::int64_t> fragment_count;
+};
+
+// Which of a study's cases to list: each condition that is set must hold.
+struct CaseFilter {
+  std::optional<CaseStatus> status;
+  std::optional<std::string> outcome;                 // stick | bounce | break-up | undetermined
+  std::optional<std::vector<std::string>> grid_keys;  // only these grid points (StudySubmission::Case::grid_key)
 };
 
 struct ResultRecord {
@@ -146,11 +157,36 @@ struct CaseDetail {
 
 // Outcome counts of the finished cases at one grid point of a study.
 struct GridPointOutcomes {
+  std::string grid_key;
   nlohmann::ordered_json grid_point;
   std::size_t cases = 0;  // all replicates, whatever their status
   std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
   std::size_t failed = 0;
   std::size_t finished() const;                 // cases with a result
+};
+
+// Count, sum and sum of squares of one result quantity over the results that have it.
+struct Moments {
+  std::size_t count = 0;
+  double sum = 0.0;
+  double sum_of_squares = 0.0;
+};
+
+// One grid point of a study: its outcome counts and the moments of the results' scalar quantities.
+struct GridPointStatistics {
+  GridPointOutcomes outcomes;
+  Moments retained_mass_fraction;
+  Moments restitution;
+  Moments fragment_count;
+  Moments largest_fragment_share;
+};
+
+// The fragments that the results of one grid point left: how many results, and for each fragment
+// size (primaries) how many fragments of that size in all.
+struct GridPointFragments {
+  std::string grid_key;
+  std::size_t results = 0;
+  std::vector<std::pair<std::int64_t, std::size_t>> sizes;  // (primaries, fragments), by size
 };
 
 struct JobRecord {
