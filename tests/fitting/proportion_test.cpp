@@ -1,7 +1,7 @@
 // The Wilson score interval against values computed by hand from its formula, and its limits.
 #include <catch2/catch.hpp>
 
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/proportion.hpp"
 
 namespace aerobreak {
 
