@@ -9,30 +9,12 @@
 
 #include "orchestrator/fitting/binomial_glm.hpp"
 #include "orchestrator/fitting/case_outcome.hpp"
+#include "orchestrator/fitting/correlation_request.hpp"
 #include "orchestrator/fitting/proportion.hpp"
 
 // The table model of a study's correlations (docs/CORRELATIONS.md): per-grid-point aggregates and
 // every fitted model, as plain structs for the lookup-table export and the JSON of the REST API.
 namespace aerobreak {
-
-// A covariate of the pooled models: a numeric axis of the study, entered as log(value) or value.
-struct Covariate {
-  std::string axis;
-  bool logarithmic = true;
-};
-
-struct CorrelationRequest {
-  std::string speed_axis;             // the axis that sets the impact speed; empty: not swept
-  std::vector<Covariate> covariates;  // of the pooled models (none: no pooled models)
-  std::array<double, 3> levels{0.1, 0.5, 0.9};
-};
-
-struct Provenance {
-  std::int64_t study = 0;
-  std::string result_set_hash;
-  std::int64_t result_set_version = 0;
-  std::string aerobreak_version;
-};
 
 // --- Per grid point -----------------------------------------------------------------------------
 

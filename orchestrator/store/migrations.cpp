@@ -103,8 +103,65 @@ CREATE TABLE fragments (
 ) WITHOUT ROWID;
 )sql";
 
+// Correlations (docs/CORRELATIONS.md). A study's result set changes when a result of one of its
+// cases is stored, changed or removed, or when it is linked to a case that already has one: the
+// triggers count those changes in study_result_versions, in the transaction that makes them, so
+// that a cached set of fits is known to be current from one row. correlation_sets holds one set of
+// fits per study and request (the pooled models' covariates): its summary and, in
+// correlation_fits, each fit's document; result_set_hash identifies the results it was fitted to.
+constexpr std::string_view kVersion2 = R"sql(
+CREATE TABLE study_result_versions (
+  study_id INTEGER PRIMARY KEY REFERENCES studies (id),
+  version  INTEGER NOT NULL
+);
+
+CREATE TRIGGER results_inserted AFTER INSERT ON results BEGIN
+  INSERT INTO study_result_versions (study_id, version)
+    SELECT study_id, 1 FROM study_cases WHERE case_id = NEW.case_id
+    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
+END;
+CREATE TRIGGER results_updated AFTER UPDATE ON results BEGIN
+  INSERT INTO study_result_versions (study_id, version)
+    SELECT study_id, 1 FROM study_cases WHERE case_id IN (OLD.case_id, NEW.case_id)
+    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
+END;
+CREATE TRIGGER results_deleted AFTER DELETE ON results BEGIN
+  INSERT INTO study_result_versions (study_id, version)
+    SELECT study_id, 1 FROM study_cases WHERE case_id = OLD.case_id
+    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
+END;
+CREATE TRIGGER study_case_linked AFTER INSERT ON study_cases
+  WHEN EXISTS (SELECT 1 FROM results WHERE case_id = NEW.case_id) BEGIN
+  INSERT INTO study_result_versions (study_id, version) VALUES (NEW.study_id, 1)
+    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
+END;
+
+CREATE TABLE correlation_sets (
+  id                 INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies (id),
+  request            TEXT NOT NULL,
+  result_set_version INTEGER NOT NULL,
+  result_set_hash    TEXT NOT NULL,
+  aerobreak_version  TEXT NOT NULL,
+  computed_at        REAL NOT NULL,
+  fit_seconds        REAL NOT NULL,
+  summary            TEXT NOT NULL,
+  UNIQUE (study_id, request)
+);
+
+CREATE TABLE correlation_fits (
+  set_id   INTEGER NOT NULL REFERENCES correlation_sets (id) ON DELETE CASCADE,
+  name     TEXT NOT NULL,
+  kind     TEXT NOT NULL,
+  status   TEXT NOT NULL,
+  document TEXT NOT NULL,
+  PRIMARY KEY (set_id, name)
+) WITHOUT ROWID;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
+    Migration{2, "result-set versions of studies, stored correlation sets and fits", kVersion2},
 };
 
 int user_version(SqliteDatabase& db) {
