@@ -3,6 +3,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 namespace aerobreak {
 namespace {
@@ -52,7 +53,7 @@ class ProfileGap {
 // solves gap = 0 between the last two points (TOMS 748). nullopt when the limit comes first.
 std::optional<double> interval_end(ProfileGap& gap, double estimate, double first_step, double limit) {
   const double direction = limit > estimate ? 1.0 : -1.0;
-  double inside = estimate, step = first_step;
+  double inside = estimate, g_inside = -kChiSquare1At95, step = first_step;
   for (;;) {
     double probe = estimate + direction * step;
     const bool last = direction * (probe - limit) >= 0.0;
@@ -61,14 +62,20 @@ std::optional<double> interval_end(ProfileGap& gap, double estimate, double firs
     if (value > 0.0) {
       std::uintmax_t iterations = 200;
       const auto tolerance = [](double a, double b) { return std::abs(a - b) <= 1e-11 * (1.0 + std::abs(a)); };
-      const double g_inside = gap(inside);
-      const auto [a, b] = direction > 0.0
-                              ? boost::math::tools::toms748_solve(gap, inside, probe, g_inside, value, tolerance, iterations)
-                              : boost::math::tools::toms748_solve(gap, probe, inside, value, g_inside, tolerance, iterations);
-      return 0.5 * (a + b);
+      try {
+        const auto [a, b] = direction > 0.0
+                                ? boost::math::tools::toms748_solve(gap, inside, probe, g_inside, value, tolerance, iterations)
+                                : boost::math::tools::toms748_solve(gap, probe, inside, value, g_inside, tolerance, iterations);
+        return 0.5 * (a + b);
+      } catch (const std::exception&) {
+        // A profile that is not monotone between the two points (a constrained fit that did not
+        // converge): the end is reported as unknown rather than guessed.
+        return std::nullopt;
+      }
     }
     if (last) return std::nullopt;
     inside = probe;
+    g_inside = value;
     step *= 2.0;
   }
 }
