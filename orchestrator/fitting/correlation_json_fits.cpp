@@ -8,14 +8,6 @@
 namespace aerobreak {
 namespace {
 
-// `count` doses spread evenly in log over [low, high].
-std::vector<double> log_grid(double low, double high, int count) {
-  std::vector<double> grid;
-  for (int i = 0; i < count; ++i)
-    grid.push_back(count == 1 ? low : std::exp(std::log(low) + (std::log(high) - std::log(low)) * i / (count - 1.0)));
-  return grid;
-}
-
 // "y = b0 + b1 log(x) + ...": the model in words, from its parameter names.
 std::string formula(const std::string& left, const std::vector<std::string>& parameters) {
   std::string text = left + " = b0";
@@ -70,7 +62,7 @@ nlohmann::ordered_json logistic_data_json(const LogisticFit& fit) {
 nlohmann::ordered_json logistic_curves_json(const LogisticFit& fit, int points) {
   nlohmann::ordered_json curves = nlohmann::ordered_json::array();
   if (fit.common.coefficients.size() == 0 || fit.common.validity.empty()) return curves;
-  const auto grid = log_grid(fit.common.validity[0].min, fit.common.validity[0].max, points);
+  const auto grid = log_spaced(fit.common.validity[0].min, fit.common.validity[0].max, points);
   std::vector<nlohmann::ordered_json> ats;
   for (const auto& value : fit.critical)
     if (ats.empty() || ats.back() != value.at) ats.push_back(value.at);

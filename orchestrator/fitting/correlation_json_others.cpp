@@ -9,13 +9,6 @@
 namespace aerobreak {
 namespace {
 
-std::vector<double> log_spaced(double low, double high, int count) {
-  std::vector<double> grid;
-  for (int i = 0; i < count; ++i)
-    grid.push_back(count == 1 ? low : low * std::pow(high / low, i / (count - 1.0)));
-  return grid;
-}
-
 nlohmann::ordered_json band(const BandPoint& point) {
   return {{"value", point.probability}, {"ci95", {point.lower, point.upper}}};
 }

@@ -8,6 +8,13 @@ nlohmann::ordered_json number_or_null(const std::optional<double>& value) {
   return value && std::isfinite(*value) ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
 }
 
+std::vector<double> log_spaced(double low, double high, int count) {
+  std::vector<double> grid;
+  for (int i = 0; i < count; ++i)
+    grid.push_back(i == 0 ? low : i == count - 1 ? high : low * std::pow(high / low, i / (count - 1.0)));
+  return grid;
+}
+
 namespace {
 
 nlohmann::ordered_json mean_json(const std::optional<MeanEstimate>& estimate) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "orchestrator/fitting/correlation_set.hpp"
 
@@ -27,6 +28,9 @@ nlohmann::ordered_json full_json(const MultinomialFit& fit, int points);
 nlohmann::ordered_json full_json(const ScalingFit& fit, int points);
 nlohmann::ordered_json full_json(const RetainedFractionFit& fit, int points);
 nlohmann::ordered_json full_json(const FragmentSizeFit& fit, int points);
+
+// `count` values spread evenly in log from exactly `low` to exactly `high`.
+std::vector<double> log_spaced(double low, double high, int count);
 
 // Optional numbers as JSON null when absent.
 nlohmann::ordered_json number_or_null(const std::optional<double>& value);
