@@ -19,6 +19,7 @@ namespace {
 // The pieces of one Newton step, evaluated at one delta.
 struct Evaluation {
   Eigen::VectorXd mu;
+  Eigen::VectorXd residual;  // y - n mu, plus h (1/2 - mu) under the Firth penalty
   Eigen::VectorXd weights;  // n mu (1 - mu)
   double objective = 0.0;
   Eigen::VectorXd score;       // of delta
@@ -53,6 +54,20 @@ double log_likelihood_kernel(const BinomialData& data, const Eigen::VectorXd& et
   return sum;
 }
 
+// mu_i = logistic(eta_i) and the log-likelihood kernel with one exponential per row:
+// e = exp(-|eta|), log(1 + exp(eta)) = max(eta, 0) + log1p(e).
+double probabilities_and_kernel(const BinomialData& data, const Eigen::VectorXd& eta, Eigen::VectorXd& mu) {
+  mu.resize(eta.size());
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < eta.size(); ++i) {
+    // Beyond |eta| = 700 exp underflows (slowly, through libm's error path); 0 is exact to rounding.
+    const double e = std::abs(eta[i]) < 700.0 ? std::exp(-std::abs(eta[i])) : 0.0;
+    mu[i] = eta[i] >= 0.0 ? 1.0 / (1.0 + e) : e / (1.0 + e);
+    sum += data.successes[i] * eta[i] - data.trials[i] * (std::max(eta[i], 0.0) + std::log1p(e));
+  }
+  return sum;
+}
+
 // Firth's hat values h_i = w_i x_i' (X'WX)^-1 x_i on the full design, and log |X'WX|.
 double firth_terms(const BinomialData& data, const Eigen::VectorXd& weights, Eigen::VectorXd& hat) {
   const Eigen::MatrixXd root_weighted = data.design.array().colwise() * weights.array().sqrt();
@@ -70,25 +85,24 @@ double firth_terms(const BinomialData& data, const Eigen::VectorXd& weights, Eig
 Evaluation evaluate(const Problem& problem, const Eigen::VectorXd& delta) {
   const Eigen::VectorXd eta = problem.offset + problem.free_design * delta;
   Evaluation e;
-  e.mu = eta.unaryExpr([](double x) { return logistic(x); });
+  e.objective = probabilities_and_kernel(problem.data, eta, e.mu);
   e.weights = problem.data.trials.array() * e.mu.array() * (1.0 - e.mu.array());
-  e.objective = log_likelihood_kernel(problem.data, eta);
-  Eigen::VectorXd residual = problem.data.successes - problem.data.trials.cwiseProduct(e.mu);
+  e.residual = problem.data.successes - problem.data.trials.cwiseProduct(e.mu);
   if (problem.penalty == Penalty::firth) {
     // Modified score (Firth 1993, eq 2 for the logit link): y - n mu + h (1/2 - mu).
     Eigen::VectorXd hat;
     e.objective += 0.5 * firth_terms(problem.data, e.weights, hat);
-    residual += hat.cwiseProduct((0.5 - e.mu.array()).matrix());
+    e.residual += hat.cwiseProduct((0.5 - e.mu.array()).matrix());
   }
-  e.score = problem.free_design.transpose() * residual;
+  e.score = problem.free_design.transpose() * e.residual;
   const Eigen::MatrixXd root_weighted = problem.free_design.array().colwise() * e.weights.array().sqrt();
   e.information = root_weighted.transpose() * root_weighted;
   return e;
 }
 
-bool small_step(const Eigen::VectorXd& step, const Eigen::VectorXd& delta) {
+bool small_step(const Eigen::VectorXd& step, const Eigen::VectorXd& delta, double tolerance) {
   for (Eigen::Index j = 0; j < step.size(); ++j)
-    if (std::abs(step[j]) > 1e-10 * (1.0 + std::abs(delta[j]))) return false;
+    if (std::abs(step[j]) > tolerance * (1.0 + std::abs(delta[j]))) return false;
   return true;
 }
 
@@ -99,8 +113,10 @@ void finish(const Problem& problem, const GlmOptions& options, const Evaluation&
   const BinomialData& data = problem.data;
   fit.coefficients = options.constraint ? Eigen::VectorXd(options.constraint->map * fit.free + options.constraint->shift)
                                         : fit.free;
-  fit.covariance = at.information.ldlt().solve(Eigen::MatrixXd::Identity(fit.free.size(), fit.free.size()));
   fit.objective = at.objective;
+  fit.full_score = data.design.transpose() * at.residual;
+  if (!options.statistics) return;
+  fit.covariance = at.information.ldlt().solve(Eigen::MatrixXd::Identity(fit.free.size(), fit.free.size()));
   double log_binomial = 0.0;
   fit.deviance = 0.0;
   fit.pearson_chi2 = 0.0;
@@ -131,7 +147,7 @@ GlmFit fit_binomial(const BinomialData& data, const GlmOptions& options) {
     for (int halvings = 0; halvings < 40 && !accepted; ++halvings, step *= 0.5) {
       Evaluation next = evaluate(problem, fit.free + step);
       if (std::isfinite(next.objective) && next.objective >= current.objective - 1e-12 * std::abs(current.objective)) {
-        fit.converged = small_step(step, fit.free);
+        fit.converged = small_step(step, fit.free, options.tolerance);
         fit.free += step;
         fit.last_step = step;
         current = std::move(next);

@@ -35,6 +35,7 @@ struct GlmFit {
   double objective = 0.0;        // log-likelihood, plus 0.5 log |I(beta)| under the Firth penalty
   double deviance = 0.0;         // 2 (saturated - fitted) log-likelihood
   double pearson_chi2 = 0.0;     // sum (y - n mu)^2 / (n mu (1 - mu))
+  Eigen::VectorXd full_score;    // X' (y - n mu [+ h (1/2 - mu)]): the (modified) score of beta at the estimate
   Eigen::VectorXd last_step;     // the last Newton step in delta: a separating direction when it diverges
   int iterations = 0;
   bool converged = false;
@@ -45,11 +46,13 @@ struct GlmOptions {
   const LinearConstraint* constraint = nullptr;
   const Eigen::VectorXd* start = nullptr;  // delta to start from (warm start); zeros otherwise
   int max_iterations = 30;
+  double tolerance = 1e-10;  // on each step component, relative to 1 + |delta_j|
+  bool statistics = true;  // false: skip the covariance, deviance, Pearson X^2 and log-likelihood (profiles)
 };
 
 // Newton-Raphson on the (penalised) log-likelihood with step halving: for the canonical logit link
 // this is iteratively reweighted least squares (Fisher scoring = Newton). Converged when every
-// step component is below 1e-10 (1 + |delta_j|).
+// step component is below tolerance x (1 + |delta_j|).
 GlmFit fit_binomial(const BinomialData& data, const GlmOptions& options = {});
 
 // Fitted probabilities mu_i of the data's rows at coefficients beta.

@@ -21,6 +21,12 @@ std::vector<CaseGroup> group_cases(const OutcomeTable& table, const std::string&
   return groups;
 }
 
+std::vector<std::vector<const CaseOutcome*>> cases_by_point(const OutcomeTable& table) {
+  std::vector<std::vector<const CaseOutcome*>> by_point(table.grid_points.size());
+  for (const CaseOutcome& c : table.cases) by_point.at(c.grid_point).push_back(&c);
+  return by_point;
+}
+
 double axis_number(const nlohmann::ordered_json& grid_point, const std::string& axis) {
   const auto found = grid_point.find(axis);
   if (found == grid_point.end() || !found->is_number()) return std::numeric_limits<double>::quiet_NaN();

@@ -1,9 +1,9 @@
 #include "orchestrator/fitting/critical_dose.hpp"
 
-#include <boost/math/tools/toms748_solve.hpp>
+#include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <stdexcept>
+
+#include "orchestrator/fitting/proportion.hpp"
 
 namespace aerobreak {
 namespace {
@@ -23,23 +23,34 @@ LinearConstraint constraint_at(const CriticalDoseRequest& request, double theta)
   return constraint;
 }
 
+struct GapValue {
+  double value = 0.0;
+  double slope = 0.0;
+};
+
 // Twice the drop of the (penalised) log-likelihood when theta is imposed, minus chi^2_1(0.95):
-// negative inside the interval. Warm-starts from the last constrained fit.
+// negative inside the interval; and its derivative in theta, which the constrained fit gives for
+// free (envelope theorem: d l_p / d theta = dl/d beta_0 x d beta_0 / d theta = -U_0 beta_dose).
+// Warm-starts from the last constrained fit.
 class ProfileGap {
  public:
   ProfileGap(const BinomialData& data, const GlmFit& fit, const CriticalDoseRequest& request)
       : data_(data), request_(request), best_(fit.objective), start_(fit.coefficients.tail(fit.coefficients.size() - 1)) {}
 
-  double operator()(double theta) {
+  GapValue operator()(double theta) {
     const LinearConstraint constraint = constraint_at(request_, theta);
     GlmOptions options;
     options.penalty = request_.penalty;
     options.constraint = &constraint;
     options.start = &start_;
     options.max_iterations = 100;
+    options.statistics = false;
+    // The gap is quadratic in the error of the inner optimum: 1e-7 there is 1e-14 in the gap.
+    options.tolerance = 1e-7;
     const GlmFit constrained = fit_binomial(data_, options);
     if (constrained.free.allFinite()) start_ = constrained.free;
-    return 2.0 * (best_ - constrained.objective) - kChiSquare1At95;
+    return {2.0 * (best_ - constrained.objective) - kChiSquare1At95,
+            2.0 * constrained.full_score[0] * constrained.coefficients[request_.dose_column]};
   }
 
  private:
@@ -49,38 +60,59 @@ class ProfileGap {
   Eigen::VectorXd start_;
 };
 
-// Walks from the estimate towards `limit` in doubling steps until the gap turns positive, then
-// solves gap = 0 between the last two points (TOMS 748). nullopt when the limit comes first.
-std::optional<double> interval_end(ProfileGap& gap, double estimate, double first_step, double limit) {
+// The root of the gap between the estimate (gap -3.84) and `limit`, by Newton steps from `guess`
+// kept inside the bracket once one is known (bisection when a step leaves it), and doubling
+// outward until the gap turns positive. nullopt when it is still negative at the limit.
+std::optional<double> interval_end(ProfileGap& gap, double estimate, double guess, double limit) {
   const double direction = limit > estimate ? 1.0 : -1.0;
-  double inside = estimate, g_inside = -kChiSquare1At95, step = first_step;
-  for (;;) {
-    double probe = estimate + direction * step;
-    const bool last = direction * (probe - limit) >= 0.0;
-    if (last) probe = limit;
-    const double value = gap(probe);
-    if (value > 0.0) {
-      std::uintmax_t iterations = 200;
-      const auto tolerance = [](double a, double b) { return std::abs(a - b) <= 1e-11 * (1.0 + std::abs(a)); };
-      try {
-        const auto [a, b] = direction > 0.0
-                                ? boost::math::tools::toms748_solve(gap, inside, probe, g_inside, value, tolerance, iterations)
-                                : boost::math::tools::toms748_solve(gap, probe, inside, value, g_inside, tolerance, iterations);
-        return 0.5 * (a + b);
-      } catch (const std::exception&) {
-        // A profile that is not monotone between the two points (a constrained fit that did not
-        // converge): the end is reported as unknown rather than guessed.
-        return std::nullopt;
-      }
+  const auto beyond = [direction](double a, double b) { return direction * (a - b) > 0.0; };  // a further out than b
+  double inside = estimate;
+  std::optional<double> outside;
+  double theta = beyond(guess, limit) ? limit : guess;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const GapValue g = gap(theta);
+    if (!std::isfinite(g.value)) return std::nullopt;
+    if (g.value > 0.0) outside = theta;
+    else inside = theta;
+    if (std::abs(g.value) < 1e-10 || (outside && std::abs(*outside - inside) < 1e-12 * (1.0 + std::abs(theta)))) return theta;
+    if (!outside && theta == limit) return std::nullopt;
+    double next = theta - g.value / g.slope;
+    if (outside) {
+      if (!(beyond(next, inside) && beyond(*outside, next))) next = 0.5 * (inside + *outside);
+    } else if (!std::isfinite(next) || !beyond(next, theta)) {
+      next = theta + (theta - estimate);  // doubling the distance from the estimate
     }
-    if (last) return std::nullopt;
-    inside = probe;
-    g_inside = value;
-    step *= 2.0;
+    theta = beyond(next, limit) ? limit : next;
   }
+  return std::nullopt;
+}
+
+// The delta-method standard error of theta-hat: gradient of (logit(level) - c' beta) / beta_dose.
+double delta_standard_error(const GlmFit& fit, const Eigen::VectorXd& c, Eigen::Index dose, double theta) {
+  const Eigen::VectorXd& beta = fit.coefficients;
+  Eigen::VectorXd gradient = -c / beta[dose];
+  gradient[dose] = -theta / beta[dose];
+  return std::sqrt(std::max(0.0, gradient.dot(fit.covariance * gradient)));
 }
 
 }  // namespace
+
+CriticalDose critical_dose_delta(const GlmFit& fit, const CriticalDoseRequest& request) {
+  CriticalDose result;
+  result.level = request.level;
+  const double slope = fit.coefficients[request.dose_column];
+  if (slope == 0.0 || !fit.coefficients.allFinite()) return result;
+  Eigen::VectorXd c = request.reference;
+  c[request.dose_column] = 0.0;
+  const double theta = (logit(request.level) - c.dot(fit.coefficients)) / slope;
+  const double half_width = kZ95 * delta_standard_error(fit, c, request.dose_column, theta);
+  result.estimate = theta;
+  if (std::isfinite(half_width)) {
+    result.lower = theta - half_width;
+    result.upper = theta + half_width;
+  }
+  return result;
+}
 
 CriticalDose critical_dose(const BinomialData& data, const GlmFit& fit, const CriticalDoseRequest& request) {
   CriticalDose result;
@@ -92,11 +124,12 @@ CriticalDose critical_dose(const BinomialData& data, const GlmFit& fit, const Cr
   c[request.dose_column] = 0.0;
   const double theta = (logit(request.level) - c.dot(beta)) / slope;
   result.estimate = theta;
-  // A first step of a tenth of the searched width (at least 1e-3) brackets most ends in a few doublings.
-  const double first_step = std::max(1e-3, 0.1 * (request.search_high - request.search_low));
+  // The Newton search starts at the delta-method ends theta +- 1.96 SE (at least 1e-3 away).
+  double step = kZ95 * delta_standard_error(fit, c, request.dose_column, theta);
+  if (!std::isfinite(step) || step < 1e-3) step = 1e-3;
   ProfileGap gap(data, fit, request);
-  if (theta > request.search_low) result.lower = interval_end(gap, theta, first_step, request.search_low);
-  if (theta < request.search_high) result.upper = interval_end(gap, theta, first_step, request.search_high);
+  if (theta > request.search_low) result.lower = interval_end(gap, theta, theta - step, request.search_low);
+  if (theta < request.search_high) result.upper = interval_end(gap, theta, theta + step, request.search_high);
   return result;
 }
 

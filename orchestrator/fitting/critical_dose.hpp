@@ -34,6 +34,11 @@ struct CriticalDoseRequest {
 
 CriticalDose critical_dose(const BinomialData& data, const GlmFit& fit, const CriticalDoseRequest& request);
 
+// The same theta-hat with the delta-method interval theta +- 1.96 SE(theta), SE from the gradient of
+// (logit(level) - c' beta) / beta_dose and the covariance of beta: for the pooled models, whose
+// critical values are wanted at every group's covariates (many profiles over every case).
+CriticalDose critical_dose_delta(const GlmFit& fit, const CriticalDoseRequest& request);
+
 // The 0.95 quantile of chi^2 with one degree of freedom (= 1.959964^2).
 inline constexpr double kChiSquare1At95 = 3.841458820694124;
 

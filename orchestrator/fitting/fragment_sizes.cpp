@@ -162,8 +162,7 @@ FragmentSizeFit fit_fragment_sizes(const std::vector<std::int64_t>& sizes, std::
 }
 
 std::vector<FragmentSizeFit> fit_fragment_distributions(const OutcomeTable& table) {
-  std::vector<std::vector<const CaseOutcome*>> by_point(table.grid_points.size());
-  for (const CaseOutcome& c : table.cases) by_point[c.grid_point].push_back(&c);
+  const auto by_point = cases_by_point(table);
   std::vector<FragmentSizeFit> fits;
   for (std::size_t g = 0; g < by_point.size(); ++g) {
     std::vector<std::int64_t> sizes;

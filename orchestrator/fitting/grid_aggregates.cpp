@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "orchestrator/fitting/case_groups.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -24,9 +26,7 @@ GridPointSummary summarise(const nlohmann::ordered_json& grid_point, const std::
   }
   for (std::size_t k = 0; k < 3; ++k) summary.probabilities[k] = wilson_interval(summary.counts[k], summary.determined());
   // Undetermined cases are left out of every mean: their state is not final.
-  std::vector<const CaseOutcome*> determined;
-  for (const CaseOutcome* c : cases)
-    if (c->outcome != Outcome::undetermined) determined.push_back(c);
+  const auto determined = determined_cases(cases);
   summary.retained_mass_fraction = mean_of(determined, &CaseOutcome::retained_mass_fraction);
   summary.restitution_of_bounces = mean_of(determined, &CaseOutcome::restitution, Outcome::bounce);
   summary.damage_ratio = mean_of(determined, &CaseOutcome::damage_ratio);
@@ -62,8 +62,7 @@ FragmentStatistics fragment_statistics(const std::vector<const CaseOutcome*>& ca
 }
 
 std::vector<GridPointSummary> summarise_grid_points(const OutcomeTable& table) {
-  std::vector<std::vector<const CaseOutcome*>> by_point(table.grid_points.size());
-  for (const CaseOutcome& c : table.cases) by_point.at(c.grid_point).push_back(&c);
+  const auto by_point = cases_by_point(table);
   std::vector<GridPointSummary> summaries;
   summaries.reserve(table.grid_points.size());
   for (std::size_t g = 0; g < table.grid_points.size(); ++g) summaries.push_back(summarise(table.grid_points[g], by_point[g]));

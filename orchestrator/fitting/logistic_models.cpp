@@ -25,24 +25,28 @@ std::optional<Eigen::VectorXd> covariates_at(const nlohmann::ordered_json& grid_
   return values;
 }
 
-// Appends a row 1, log dose, covariate terms.
-void add_row(DoseData& rows, const CorrelationRequest& request, double dose, const Eigen::VectorXd& covariates,
-             double trials, double successes) {
+// Appends a row; the design is built once all rows are in (build_design).
+void add_row(DoseData& rows, double dose, const Eigen::VectorXd& covariates, double trials, double successes) {
   rows.dose.push_back(dose);
   rows.covariate_values.push_back(covariates);
-  Eigen::VectorXd row(2 + covariates.size());
-  row[0] = 1.0;
-  row[1] = std::log(dose);
-  for (Eigen::Index k = 0; k < covariates.size(); ++k)
-    row[2 + k] = covariate_term(request.covariates[static_cast<std::size_t>(k)], covariates[k]);
+  rows.trials.push_back(trials);
+  rows.successes.push_back(successes);
+}
+
+// Columns 1, log dose, covariate terms.
+void build_design(DoseData& rows, const CorrelationRequest& request) {
+  const auto n = static_cast<Eigen::Index>(rows.dose.size());
+  const auto k = static_cast<Eigen::Index>(request.covariates.size());
   auto& b = rows.binomial;
-  const Eigen::Index n = b.design.rows();
-  b.design.conservativeResize(n + 1, row.size());
-  b.design.row(n) = row.transpose();
-  b.trials.conservativeResize(n + 1);
-  b.trials[n] = trials;
-  b.successes.conservativeResize(n + 1);
-  b.successes[n] = successes;
+  b.design.resize(n, 2 + k);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    b.design(i, 0) = 1.0;
+    b.design(i, 1) = std::log(rows.dose[static_cast<std::size_t>(i)]);
+    const auto& covariates = rows.covariate_values[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < k; ++j) b.design(i, 2 + j) = covariate_term(request.covariates[static_cast<std::size_t>(j)], covariates[j]);
+  }
+  b.trials = Eigen::Map<const Eigen::VectorXd>(rows.trials.data(), n);
+  b.successes = Eigen::Map<const Eigen::VectorXd>(rows.successes.data(), n);
 }
 
 std::set<double> distinct(const std::vector<double>& values) { return {values.begin(), values.end()}; }
@@ -51,8 +55,11 @@ std::set<double> distinct(const std::vector<double>& values) { return {values.be
 
 DoseData speed_rows(const OutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
                     const CorrelationRequest& request) {
-  std::vector<std::vector<const CaseOutcome*>> by_point(table.grid_points.size());
-  for (const CaseOutcome& c : table.cases) by_point[c.grid_point].push_back(&c);
+  return speed_rows(table, cases_by_point(table), grid_points, response, request);
+}
+
+DoseData speed_rows(const OutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
+                    const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request) {
   DoseData rows;
   for (const std::size_t g : grid_points) {
     const auto determined = determined_cases(by_point[g]);
@@ -61,11 +68,12 @@ DoseData speed_rows(const OutcomeTable& table, const std::vector<std::size_t>& g
     if (determined.empty() || !(speed > 0.0) || !covariates) continue;
     const auto events = std::count_if(determined.begin(), determined.end(),
                                       [response](const CaseOutcome* c) { return c->outcome == response; });
-    add_row(rows, request, speed, *covariates, static_cast<double>(determined.size()), static_cast<double>(events));
+    add_row(rows, speed, *covariates, static_cast<double>(determined.size()), static_cast<double>(events));
     rows.cases += determined.size();
     rows.small_strain += small_strain_count(determined);
     ++rows.groups;
   }
+  build_design(rows, request);
   return rows;
 }
 
@@ -76,12 +84,13 @@ DoseData energy_rows(const OutcomeTable& table, const std::vector<const CaseOutc
   for (const CaseOutcome* c : determined_cases(cases)) {
     const auto covariates = covariates_at(table.grid_points[c->grid_point], request);
     if (!c->energy_per_contact || !(*c->energy_per_contact > 0.0) || !covariates) continue;
-    add_row(rows, request, *c->energy_per_contact, *covariates, 1.0, c->outcome == response ? 1.0 : 0.0);
+    add_row(rows, *c->energy_per_contact, *covariates, 1.0, c->outcome == response ? 1.0 : 0.0);
     ++rows.cases;
     rows.small_strain += c->small_strain_exceeded ? 1 : 0;
     points.insert(c->grid_point);
   }
   rows.groups = points.size();
+  build_design(rows, request);
   return rows;
 }
 
@@ -131,7 +140,7 @@ std::pair<FitStatus, std::string> unfittable(const DoseData& rows, Outcome respo
   const std::size_t doses = distinct(rows.dose).size();
   const auto p = static_cast<std::size_t>(b.design.cols());
   if (doses < 2 || b.design.rows() < static_cast<Eigen::Index>(p) ||
-      Eigen::FullPivLU<Eigen::MatrixXd>(b.design).rank() < b.design.cols())
+      Eigen::FullPivLU<Eigen::MatrixXd>(b.design.transpose() * b.design).rank() < b.design.cols())
     return {FitStatus::insufficient_data, "too few points: " + std::to_string(doses) + " distinct value(s) of " + dose +
                                               " among " + std::to_string(rows.cases) + " determined case(s); a slope " +
                                               "with " + std::to_string(p - 2) + " covariate(s) needs more"};
@@ -164,7 +173,7 @@ void add_critical_values(LogisticFit& fit, const GlmFit& glm, const CorrelationR
     ask.penalty = fit.method == "maximum likelihood" ? Penalty::none : Penalty::firth;
     for (const double level : request.levels) {
       ask.level = level;
-      const CriticalDose dose = critical_dose(fit.data, glm, ask);
+      const CriticalDose dose = covariate_points.empty() ? critical_dose(fit.data, glm, ask) : critical_dose_delta(glm, ask);
       const auto to_dose = [](std::optional<double> x) { return x ? std::optional(std::exp(*x)) : std::nullopt; };
       fit.critical.push_back({level, at, to_dose(dose.estimate), to_dose(dose.lower), to_dose(dose.upper)});
     }

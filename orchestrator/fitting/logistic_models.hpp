@@ -12,6 +12,8 @@ struct DoseData {
   BinomialData binomial;             // columns: 1, log dose, covariate terms
   std::vector<double> dose;          // per row, in dose units
   std::vector<Eigen::VectorXd> covariate_values;  // per row, untransformed
+  std::vector<double> trials;        // per row
+  std::vector<double> successes;     // per row
   std::size_t cases = 0;
   std::size_t small_strain = 0;
   std::size_t groups = 0;            // grid points that contributed
@@ -21,6 +23,9 @@ struct DoseData {
 // cases of `response`. Dose = the speed axis's value.
 DoseData speed_rows(const OutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
                     const CorrelationRequest& request);
+// The same with the cases already indexed by grid point (cases_by_point).
+DoseData speed_rows(const OutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
+                    const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request);
 // One row per determined case with a positive energy per contact (dose = E_kin / (N_c E_break)).
 DoseData energy_rows(const OutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
                      const CorrelationRequest& request);

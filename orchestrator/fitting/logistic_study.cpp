@@ -1,9 +1,11 @@
 // The logistic models of a whole study: which responses, which groups, pooled or not.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "orchestrator/fitting/logistic_models.hpp"
+#include "orchestrator/fitting/parallel_tasks.hpp"
 
 namespace aerobreak {
 namespace {
@@ -52,27 +54,39 @@ std::vector<LogisticFit> fit_logistic_models(const OutcomeTable& table, const st
   std::iota(all_points.begin(), all_points.end(), 0);
   std::vector<const CaseOutcome*> all_cases;
   for (const CaseOutcome& c : table.cases) all_cases.push_back(&c);
+  const auto by_point = cases_by_point(table);
   const auto covariate_points = group_covariate_points(table, groups, request);
   const bool pooled = groups.size() > 1;
-  std::vector<LogisticFit> fits;
+  // Each fit is a task; the tasks run on every core (run_in_parallel), results in this order.
+  std::vector<std::function<LogisticFit()>> tasks;
   for (const Outcome response : responses_present(table)) {
     const std::string prefix(to_string(response));
+    const auto speed_fit = [&, response, prefix](const std::string& label, const nlohmann::ordered_json& axes,
+                                                 const std::vector<std::size_t>& points, bool all) {
+      const CorrelationRequest* ask = all ? &request : &per_group;
+      tasks.push_back([&, response, prefix, label, axes, points = &points, all, ask] {
+        return fit_logistic(named(prefix + ".speed." + label, axes), response, "impact_speed",
+                            speed_rows(table, by_point, *points, response, *ask), *ask,
+                            all ? covariate_points : std::vector<Eigen::VectorXd>{});
+      });
+    };
+    const auto energy_fit = [&, response, prefix](const std::string& label, const nlohmann::ordered_json& axes,
+                                                  const std::vector<const CaseOutcome*>& cases, bool all) {
+      const CorrelationRequest* ask = all ? &request : &per_group;
+      tasks.push_back([&, response, prefix, label, axes, cases = &cases, all, ask] {
+        return fit_logistic(named(prefix + ".energy." + label, axes), response, "energy_per_contact",
+                            energy_rows(table, *cases, response, *ask), *ask,
+                            all ? covariate_points : std::vector<Eigen::VectorXd>{});
+      });
+    };
     if (!request.speed_axis.empty()) {
-      for (const CaseGroup& group : groups)
-        fits.push_back(fit_logistic(named(prefix + ".speed." + group.label, group.axes), response, "impact_speed",
-                                    speed_rows(table, group.grid_points, response, per_group), per_group, {}));
-      if (pooled)
-        fits.push_back(fit_logistic(named(prefix + ".speed.pooled", {}), response, "impact_speed",
-                                    speed_rows(table, all_points, response, request), request, covariate_points));
+      for (const CaseGroup& group : groups) speed_fit(group.label, group.axes, group.grid_points, false);
+      if (pooled) speed_fit("pooled", nlohmann::ordered_json::object(), all_points, true);
     }
-    for (const CaseGroup& group : groups)
-      fits.push_back(fit_logistic(named(prefix + ".energy." + group.label, group.axes), response, "energy_per_contact",
-                                  energy_rows(table, group.cases, response, per_group), per_group, {}));
-    if (pooled)
-      fits.push_back(fit_logistic(named(prefix + ".energy.pooled", {}), response, "energy_per_contact",
-                                  energy_rows(table, all_cases, response, request), request, covariate_points));
+    for (const CaseGroup& group : groups) energy_fit(group.label, group.axes, group.cases, false);
+    if (pooled) energy_fit("pooled", nlohmann::ordered_json::object(), all_cases, true);
   }
-  return fits;
+  return run_in_parallel(tasks);
 }
 
 BandPoint LogisticFit::probability(double dose_value, const Eigen::VectorXd& covariate_values) const {
