@@ -38,9 +38,19 @@ const Fit* find(const std::vector<Fit>& list, const std::string& name) {
 
 }  // namespace
 
-nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set) {
+nlohmann::ordered_json grid_points_json(const CorrelationSet& set) {
   nlohmann::ordered_json points = nlohmann::ordered_json::array();
   for (const auto& point : set.grid_points) points.push_back(grid_point_json(point));
+  return {{"name", kGridPointsName},
+          {"kind", "grid-points"},
+          {"status", "ok"},
+          {"confidence", 0.95},
+          {"interval", "wilson"},
+          {"provenance", provenance_json(set.provenance)},
+          {"grid_points", points}};
+}
+
+nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set) {
   nlohmann::ordered_json fits = nlohmann::ordered_json::array();
   add_lines(fits, set.logistic);
   add_lines(fits, set.multinomial);
@@ -52,11 +62,12 @@ nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set) {
           {"provenance", provenance_json(set.provenance)},
           {"request", request_json(set.request)},
           {"seconds", set.seconds},
-          {"grid_points", points},
+          {"grid_points", {{"count", set.grid_points.size()}, {"document", kGridPointsName}}},
           {"fits", fits}};
 }
 
 std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const std::string& name, int curve_points) {
+  if (name == kGridPointsName) return grid_points_json(set);
   nlohmann::ordered_json json;
   if (const auto* fit = find(set.logistic, name)) json = full_json(*fit, curve_points);
   else if (const auto* fit = find(set.multinomial, name)) json = full_json(*fit, curve_points);
@@ -70,7 +81,7 @@ std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const 
 }
 
 std::vector<std::string> fit_names(const CorrelationSet& set) {
-  std::vector<std::string> names;
+  std::vector<std::string> names{kGridPointsName};
   const auto add = [&names](const auto& list) {
     for (const auto& fit : list) names.push_back(fit.common.name);
   };

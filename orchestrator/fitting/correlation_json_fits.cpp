@@ -83,8 +83,10 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit) {
   line["response"] = std::string(to_string(fit.response));
   line["dose"] = fit.dose;
   line["method"] = fit.method;
+  // A pooled model's critical values (one set per group's covariates) are in its full document only.
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
-  for (const auto& value : fit.critical) critical.push_back(critical_json(value));
+  for (const auto& value : fit.critical)
+    if (value.at.empty()) critical.push_back(critical_json(value));
   line["critical"] = critical;
   return line;
 }

@@ -95,8 +95,11 @@ nlohmann::ordered_json common_json(const FitCommon& common) {
 }
 
 nlohmann::ordered_json summary_common(const FitCommon& common) {
-  return {{"name", common.name}, {"kind", common.kind}, {"status", std::string(to_string(common.status))},
-          {"detail", common.detail}, {"group", common.group}, {"cases", common.cases}};
+  nlohmann::ordered_json line{{"name", common.name}, {"kind", common.kind}, {"status", std::string(to_string(common.status))}};
+  if (!common.detail.empty()) line["detail"] = common.detail;
+  line["group"] = common.group;
+  line["cases"] = common.cases;
+  return line;
 }
 
 }  // namespace aerobreak

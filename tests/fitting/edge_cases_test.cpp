@@ -110,8 +110,9 @@ TEST_CASE("Grid points whose cases are all undetermined are counted, left out of
   CHECK(fit.common.status == FitStatus::ok);
   CHECK(fit.common.cases == 20);
   CHECK(fit.common.groups == 4);
-  const auto json = correlation_summary_json(set);
+  const auto json = grid_points_json(set);
   CHECK(json.at("grid_points")[2].at("outcomes").at("stick").at("probability").is_null());
+  CHECK(fit_json(set, "grid-points") == json);
 }
 
 TEST_CASE("A study that is all undetermined, or has no transition, fits nothing and says why", "[fitting][edge]") {

@@ -45,7 +45,10 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   const Json summary = service.get("/api/studies/1/correlations");
   CHECK(summary.at("provenance").at("study") == 1);
   CHECK(summary.at("provenance").at("result_set_hash").get<std::string>().size() == 64);
-  CHECK(summary.at("grid_points").size() == 16);
+  CHECK(summary.at("grid_points").at("count") == 16);
+  const Json points = service.get("/api/studies/1/correlations/grid-points");
+  REQUIRE(points.at("grid_points").size() == 16);
+  CHECK(points.at("grid_points")[0].at("determined") == 10);
   const Json* group = fit_named(summary, "break-up.speed.g1");
   REQUIRE(group);
   CHECK(group->at("group") == Json{{"primaries", 32}});
