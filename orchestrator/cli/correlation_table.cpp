@@ -83,11 +83,14 @@ std::string format_fit_list(const nlohmann::ordered_json& summary) {
       for (const auto& [axis, exponent] : fit.at("exponents").items())
         detail += (detail.empty() ? "" : "; ") + axis + " exponent " + number(exponent.at("estimate")) + " [" +
                   number(exponent.at("ci95")[0]) + ", " + number(exponent.at("ci95")[1]) + "]";
-    if (fit.contains("power_law_exponent"))
-      detail += "tau " + number(fit.at("power_law_exponent")) + ", lognormal sigma " + number(fit.at("lognormal").at("sigma"));
     rows.push_back({fit.at("name"), fit.at("status"), number(fit.at("cases")), detail});
   }
-  return aligned(rows);
+  std::string text = aligned(rows);
+  const auto& fragments = summary.at("fragment_sizes");
+  if (!fragments.empty())
+    text += "fragment-size fits (power law and lognormal) at " + std::to_string(fragments.size()) + " grid point(s): " +
+            fragments.front().get<std::string>() + (fragments.size() > 1 ? " ... " + fragments.back().get<std::string>() : "") + "\n";
+  return text;
 }
 
 }  // namespace aerobreak

@@ -56,14 +56,17 @@ nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set) {
   add_lines(fits, set.multinomial);
   add_lines(fits, set.scaling);
   add_lines(fits, set.retained_fraction);
-  add_lines(fits, set.fragment_sizes);
+  // One per grid point with re-entrained fragments: named here, each in full under its name.
+  nlohmann::ordered_json fragment_fits = nlohmann::ordered_json::array();
+  for (const auto& fit : set.fragment_sizes) fragment_fits.push_back(fit.common.name);
   return {{"format", "aerobreak-correlations"},
           {"format_version", 1},
           {"provenance", provenance_json(set.provenance)},
           {"request", request_json(set.request)},
           {"seconds", set.seconds},
           {"grid_points", {{"count", set.grid_points.size()}, {"document", kGridPointsName}}},
-          {"fits", fits}};
+          {"fits", fits},
+          {"fragment_sizes", fragment_fits}};
 }
 
 std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const std::string& name, int curve_points) {

@@ -107,16 +107,6 @@ nlohmann::ordered_json full_json(const RetainedFractionFit& fit, int points) {
   return json;
 }
 
-nlohmann::ordered_json summary_line(const FragmentSizeFit& fit) {
-  auto line = summary_common(fit.common);
-  if (fit.common.status == FitStatus::ok) {
-    line["power_law_exponent"] = fit.exponent;
-    line["lognormal"] = {{"mu", fit.mu}, {"sigma", fit.sigma}};
-    line["vuong_statistic"] = fit.vuong_statistic;
-  }
-  return line;
-}
-
 nlohmann::ordered_json full_json(const FragmentSizeFit& fit, int) {
   auto json = common_json(fit.common);
   json["largest_size"] = fit.largest_size;

@@ -20,7 +20,6 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit);
 nlohmann::ordered_json summary_line(const MultinomialFit& fit);
 nlohmann::ordered_json summary_line(const ScalingFit& fit);
 nlohmann::ordered_json summary_line(const RetainedFractionFit& fit);
-nlohmann::ordered_json summary_line(const FragmentSizeFit& fit);
 
 // The whole fit, with its data and its curve at `points` points.
 nlohmann::ordered_json full_json(const LogisticFit& fit, int points);

@@ -127,7 +127,7 @@ TEST_CASE("A study that is all undetermined, or has no transition, fits nothing 
   CHECK(stick.common.validity[0].max == 0.04);
 }
 
-TEST_CASE("Fragment sizes drawn from a power law give back its exponent; the lognormal loses Vuong's test",
+TEST_CASE("Fragment sizes drawn from a power law give back its exponent, and the lognormal loses Vuong's test",
           "[fitting][fragments]") {
   // tau = 2 on 1..1000, drawn by inverting the cumulative distribution.
   constexpr std::int64_t kLargest = 1000;
