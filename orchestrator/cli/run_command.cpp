@@ -77,9 +77,8 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_line_{};
 };
 
-std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, int port) {
-  ServiceOptions options;
-  options.port = port;
+std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, ServiceOptions options) {
+  const int port = options.port;
   auto service = std::make_unique<Service>(store, &scheduler, options);
   try {
     service->start();
@@ -133,14 +132,17 @@ int run(RunOptions options) {
   const auto data_directory = options.orchestrator.data_directory();
   Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
   const auto receipt = store.submit_study(make_submission(study));
-  const auto service = start_service(store, scheduler, options.port);
+  ServiceOptions service_options = options.orchestrator.service_options();
+  service_options.port = options.port;
+  const auto service = start_service(store, scheduler, service_options);
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
             << " already done), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
-            << "aerobreak run: service: " << study_url << "  (outcomes: " << study_url << "/outcomes)\n";
+            << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
+            << " in a browser (API: " << study_url << ")\n";
 
   const auto started = std::chrono::steady_clock::now();
   ProgressBar bar;

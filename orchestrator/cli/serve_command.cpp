@@ -49,7 +49,7 @@ int serve(const ServeOptions& options) {
   ShutdownSignals signals;
   Store store(options.orchestrator.store);
   Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log({})));
-  ServiceOptions service_options;
+  ServiceOptions service_options = options.orchestrator.service_options();
   service_options.host = options.host;
   service_options.port = options.port;
   if (!options.token_file.empty()) service_options.token = read_token(options.token_file);
@@ -58,7 +58,7 @@ int serve(const ServeOptions& options) {
   Service service(store, &scheduler, service_options);
   service.start();
   scheduler.start();
-  std::cerr << "aerobreak serve: " << service.url() << "  (store " << store.file().string() << ", schema version "
+  std::cerr << "aerobreak serve: " << service.url() << "/  (store " << store.file().string() << ", schema version "
             << store.schema_version() << "; workers: " << scheduler.status().launcher_command << ")" << std::endl;
   if (!options.port_file.empty()) write_port_file(options.port_file, service.port());
   const int received = signals.wait();

@@ -5,7 +5,7 @@
 
 namespace aerobreak {
 
-std::vector<CaseGroup> group_cases(const OutcomeTable& table, const std::string& speed_axis) {
+std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis) {
   std::vector<CaseGroup> groups;
   std::map<std::string, std::size_t> index;
   std::vector<std::size_t> group_of_point(table.grid_points.size());
@@ -21,7 +21,7 @@ std::vector<CaseGroup> group_cases(const OutcomeTable& table, const std::string&
   return groups;
 }
 
-std::vector<std::vector<const CaseOutcome*>> cases_by_point(const OutcomeTable& table) {
+std::vector<std::vector<const CaseOutcome*>> cases_by_point(const CaseOutcomeTable& table) {
   std::vector<std::vector<const CaseOutcome*>> by_point(table.grid_points.size());
   for (const CaseOutcome& c : table.cases) by_point.at(c.grid_point).push_back(&c);
   return by_point;

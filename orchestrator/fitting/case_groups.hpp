@@ -16,10 +16,10 @@ struct CaseGroup {
   std::vector<const CaseOutcome*> cases;
 };
 
-std::vector<CaseGroup> group_cases(const OutcomeTable& table, const std::string& speed_axis);
+std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis);
 
 // The cases of each grid point, by grid-point index.
-std::vector<std::vector<const CaseOutcome*>> cases_by_point(const OutcomeTable& table);
+std::vector<std::vector<const CaseOutcome*>> cases_by_point(const CaseOutcomeTable& table);
 
 // The value of `axis` at a grid point as a number; NaN when absent or not a number.
 double axis_number(const nlohmann::ordered_json& grid_point, const std::string& axis);

@@ -18,7 +18,7 @@ std::optional<Outcome> parse_outcome(std::string_view text);
 
 // One finished case as the statistics see it: what the store's results row and fragments say.
 struct CaseOutcome {
-  std::size_t grid_point = 0;  // index into OutcomeTable::grid_points
+  std::size_t grid_point = 0;  // index into CaseOutcomeTable::grid_points
   Outcome outcome = Outcome::undetermined;
   std::optional<double> retained_mass_fraction;  // mass in fragments that stay on the wall / total
   std::optional<double> restitution;             // normal restitution of the largest fragment
@@ -30,7 +30,7 @@ struct CaseOutcome {
 };
 
 // A study's finished cases and its grid: the input of every fit (compute_correlations).
-struct OutcomeTable {
+struct CaseOutcomeTable {
   std::vector<std::string> axes;                    // the study's axis names, in its order
   std::vector<nlohmann::ordered_json> grid_points;  // per grid point: axis name -> value
   std::vector<CaseOutcome> cases;

@@ -17,7 +17,7 @@ std::vector<double> log_spaced(double low, double high, int count) {
 
 namespace {
 
-nlohmann::ordered_json mean_json(const std::optional<MeanEstimate>& estimate) {
+nlohmann::ordered_json mean_json(const std::optional<MeanWithError>& estimate) {
   if (!estimate) return {{"n", 0}, {"mean", nullptr}, {"standard_error", nullptr}};
   return {{"n", estimate->n}, {"mean", estimate->mean}, {"standard_error", number_or_null(estimate->standard_error)}};
 }

@@ -22,7 +22,7 @@ std::string_view to_string(FitStatus status) {
   return "not-converged";
 }
 
-CorrelationSet compute_correlations(const OutcomeTable& table, const CorrelationRequest& request,
+CorrelationSet compute_correlations(const CaseOutcomeTable& table, const CorrelationRequest& request,
                                     const Provenance& provenance) {
   const auto started = std::chrono::steady_clock::now();
   CorrelationSet set;

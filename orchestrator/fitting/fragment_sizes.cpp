@@ -161,7 +161,7 @@ FragmentSizeFit fit_fragment_sizes(const std::vector<std::int64_t>& sizes, std::
   return fit;
 }
 
-std::vector<FragmentSizeFit> fit_fragment_distributions(const OutcomeTable& table) {
+std::vector<FragmentSizeFit> fit_fragment_distributions(const CaseOutcomeTable& table) {
   const auto by_point = cases_by_point(table);
   std::vector<FragmentSizeFit> fits;
   for (std::size_t g = 0; g < by_point.size(); ++g) {

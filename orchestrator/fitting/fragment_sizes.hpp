@@ -20,6 +20,6 @@ namespace aerobreak {
 FragmentSizeFit fit_fragment_sizes(const std::vector<std::int64_t>& sizes, std::int64_t largest_size);
 
 // One fit per grid point that has re-entrained fragments.
-std::vector<FragmentSizeFit> fit_fragment_distributions(const OutcomeTable& table);
+std::vector<FragmentSizeFit> fit_fragment_distributions(const CaseOutcomeTable& table);
 
 }  // namespace aerobreak

@@ -7,7 +7,7 @@
 namespace aerobreak {
 namespace {
 
-std::optional<MeanEstimate> mean_of(const std::vector<const CaseOutcome*>& cases,
+std::optional<MeanWithError> mean_of(const std::vector<const CaseOutcome*>& cases,
                                     std::optional<double> CaseOutcome::*field, std::optional<Outcome> only = {}) {
   std::vector<double> values;
   for (const CaseOutcome* c : cases)
@@ -61,7 +61,7 @@ FragmentStatistics fragment_statistics(const std::vector<const CaseOutcome*>& ca
   return statistics;
 }
 
-std::vector<GridPointSummary> summarise_grid_points(const OutcomeTable& table) {
+std::vector<GridPointSummary> summarise_grid_points(const CaseOutcomeTable& table) {
   const auto by_point = cases_by_point(table);
   std::vector<GridPointSummary> summaries;
   summaries.reserve(table.grid_points.size());

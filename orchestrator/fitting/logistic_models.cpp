@@ -53,12 +53,12 @@ std::set<double> distinct(const std::vector<double>& values) { return {values.be
 
 }  // namespace
 
-DoseData speed_rows(const OutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
                     const CorrelationRequest& request) {
   return speed_rows(table, cases_by_point(table), grid_points, response, request);
 }
 
-DoseData speed_rows(const OutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
                     const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request) {
   DoseData rows;
   for (const std::size_t g : grid_points) {
@@ -77,7 +77,7 @@ DoseData speed_rows(const OutcomeTable& table, const std::vector<std::vector<con
   return rows;
 }
 
-DoseData energy_rows(const OutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
+DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
                      const CorrelationRequest& request) {
   DoseData rows;
   std::set<std::size_t> points;
@@ -191,7 +191,12 @@ std::vector<std::string> parameter_names(const std::string& dose, const Correlat
 
 LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& dose, const DoseData& rows,
                          const CorrelationRequest& request, const std::vector<Eigen::VectorXd>& covariate_points) {
-  LogisticFit fit{std::move(common), response, dose, request.covariates, "maximum likelihood"};
+  LogisticFit fit;
+  fit.common = std::move(common);
+  fit.response = response;
+  fit.dose = dose;
+  fit.covariates = request.covariates;
+  fit.method = "maximum likelihood";
   fit.data = rows.binomial;
   fit.common.cases = rows.cases;
   fit.common.groups = rows.groups;

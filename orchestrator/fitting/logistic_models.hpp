@@ -21,13 +21,13 @@ struct DoseData {
 
 // Grouped rows, one per grid point with determined cases: trials = determined cases, successes =
 // cases of `response`. Dose = the speed axis's value.
-DoseData speed_rows(const OutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
                     const CorrelationRequest& request);
 // The same with the cases already indexed by grid point (cases_by_point).
-DoseData speed_rows(const OutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
                     const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request);
 // One row per determined case with a positive energy per contact (dose = E_kin / (N_c E_break)).
-DoseData energy_rows(const OutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
+DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
                      const CorrelationRequest& request);
 
 // The logistic model of one data set: ML; under separation Firth's penalised likelihood with the
@@ -39,7 +39,7 @@ LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& 
 
 // All logistic models of a study: per group and pooled, P(stick), P(bounce), P(break-up) (those
 // that occur), in log impact speed and in log energy per contact.
-std::vector<LogisticFit> fit_logistic_models(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                              const CorrelationRequest& request);
 
 }  // namespace aerobreak

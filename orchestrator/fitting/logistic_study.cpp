@@ -10,7 +10,7 @@
 namespace aerobreak {
 namespace {
 
-std::vector<Outcome> responses_present(const OutcomeTable& table) {
+std::vector<Outcome> responses_present(const CaseOutcomeTable& table) {
   std::vector<Outcome> present;
   for (const Outcome outcome : kDeterminedOutcomes)
     for (const CaseOutcome& c : table.cases)
@@ -30,7 +30,7 @@ FitCommon named(const std::string& name, const nlohmann::ordered_json& group) {
 }
 
 // The distinct covariate values of the groups, for the pooled models' critical doses.
-std::vector<Eigen::VectorXd> group_covariate_points(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<Eigen::VectorXd> group_covariate_points(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                                     const CorrelationRequest& request) {
   std::vector<Eigen::VectorXd> points;
   if (request.covariates.empty()) return points;
@@ -46,7 +46,7 @@ std::vector<Eigen::VectorXd> group_covariate_points(const OutcomeTable& table, c
 
 }  // namespace
 
-std::vector<LogisticFit> fit_logistic_models(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                              const CorrelationRequest& request) {
   CorrelationRequest per_group = request;
   per_group.covariates.clear();

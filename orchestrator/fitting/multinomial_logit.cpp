@@ -103,7 +103,7 @@ std::array<BandPoint, 3> MultinomialFit::probabilities(double dose_value) const 
   return bands;
 }
 
-std::vector<MultinomialFit> fit_multinomial_models(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<MultinomialFit> fit_multinomial_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                                    const CorrelationRequest& request) {
   std::vector<MultinomialFit> fits;
   if (request.speed_axis.empty()) return fits;

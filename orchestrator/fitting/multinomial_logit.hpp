@@ -13,7 +13,7 @@ namespace aerobreak {
 // order of the outcomes along the speed, which oblique or non-adhesive impacts need not keep.
 // Under separation no estimate exists; the fit says so and leaves the coefficients empty (the
 // binomial fits of the same group give Firth estimates).
-std::vector<MultinomialFit> fit_multinomial_models(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<MultinomialFit> fit_multinomial_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                                    const CorrelationRequest& request);
 
 // One multinomial fit of grouped counts (rows: doses; columns: stick, bounce, break-up).

@@ -20,9 +20,9 @@ std::optional<ProportionEstimate> wilson_interval(std::size_t successes, std::si
   return ProportionEstimate{p, std::max(0.0, centre - half_width), std::min(1.0, centre + half_width)};
 }
 
-std::optional<MeanEstimate> mean_estimate(std::span<const double> values) {
+std::optional<MeanWithError> mean_estimate(std::span<const double> values) {
   if (values.empty()) return std::nullopt;
-  MeanEstimate estimate;
+  MeanWithError estimate;
   estimate.n = values.size();
   const double n = static_cast<double>(values.size());
   estimate.mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
@@ -34,12 +34,12 @@ std::optional<MeanEstimate> mean_estimate(std::span<const double> values) {
   return estimate;
 }
 
-std::optional<MeanEstimate> ratio_estimate(std::span<const double> numerators, std::span<const double> denominators) {
+std::optional<MeanWithError> ratio_estimate(std::span<const double> numerators, std::span<const double> denominators) {
   if (numerators.size() != denominators.size()) throw std::invalid_argument("ratio estimate: unequal lengths");
   const double a = std::accumulate(numerators.begin(), numerators.end(), 0.0);
   const double b = std::accumulate(denominators.begin(), denominators.end(), 0.0);
   if (numerators.empty() || b <= 0.0) return std::nullopt;
-  MeanEstimate estimate;
+  MeanWithError estimate;
   estimate.n = numerators.size();
   estimate.mean = a / b;
   if (numerators.size() > 1) {

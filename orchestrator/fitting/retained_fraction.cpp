@@ -8,7 +8,7 @@
 namespace aerobreak {
 namespace {
 
-RetainedFractionFit fit_one(const OutcomeTable& table, const CaseGroup& group, const CorrelationRequest& request) {
+RetainedFractionFit fit_one(const CaseOutcomeTable& table, const CaseGroup& group, const CorrelationRequest& request) {
   RetainedFractionFit fit;
   fit.common.name = "retained.speed." + group.label;
   fit.common.kind = "retained-fraction";
@@ -55,7 +55,7 @@ RetainedFractionFit fit_one(const OutcomeTable& table, const CaseGroup& group, c
 
 }  // namespace
 
-std::vector<RetainedFractionFit> fit_retained_fractions(const OutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<RetainedFractionFit> fit_retained_fractions(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                                         const CorrelationRequest& request) {
   std::vector<RetainedFractionFit> fits;
   if (request.speed_axis.empty()) return fits;

@@ -99,7 +99,7 @@ std::string request_key(const CorrelationRequest& request) {
   return nlohmann::ordered_json{{"covariates", covariates}}.dump();
 }
 
-OutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {
+CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {
   StudyOutcomes outcomes = store.study_outcomes(study.id);
   if (outcomes.table.cases.empty())
     throw CorrelationRequestError("study " + std::to_string(study.id) + " has no results yet: nothing to fit", true);
@@ -118,7 +118,7 @@ OutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::in
 
 CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request) {
   Provenance provenance{study.id, {}, 0, std::string(version())};
-  const OutcomeTable table = study_outcome_table(store, study, &provenance.result_set_version, &provenance.result_set_hash);
+  const CaseOutcomeTable table = study_outcome_table(store, study, &provenance.result_set_version, &provenance.result_set_hash);
   return compute_correlations(table, request, provenance);
 }
 
@@ -129,22 +129,27 @@ std::shared_ptr<std::mutex> CorrelationCache::study_lock(std::int64_t study_id) 
   return entry;
 }
 
+std::int64_t CorrelationCache::result_set_version(std::int64_t study_id) {
+  const auto versions = store_.study_versions(study_id);
+  return versions ? versions->result_set : 0;
+}
+
 StoredCorrelations CorrelationCache::current(const StudyRecord& study, const CorrelationRequest& request) {
   const std::string key = request_key(request);
   auto stored = store_.stored_correlations(study.id, key);
-  if (stored && stored->result_set_version == store_.result_set_version(study.id)) return *stored;
+  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
   const auto lock = study_lock(study.id);
   std::lock_guard guard(*lock);
   // Another request may have refitted while this one waited.
   stored = store_.stored_correlations(study.id, key);
-  if (stored && stored->result_set_version == store_.result_set_version(study.id)) return *stored;
+  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
   return refit(study, request, key, stored);
 }
 
 StoredCorrelations CorrelationCache::refit(const StudyRecord& study, const CorrelationRequest& request,
                                            const std::string& key, const std::optional<StoredCorrelations>& stored) {
   Provenance provenance{study.id, {}, 0, std::string(version())};
-  const OutcomeTable table = study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
+  const CaseOutcomeTable table = study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
   if (stored && stored->result_set_hash == provenance.result_set_hash &&
       store_.confirm_correlations(study.id, key, provenance.result_set_hash, provenance.result_set_version))
     return *store_.stored_correlations(study.id, key);

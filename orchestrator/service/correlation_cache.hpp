@@ -33,7 +33,7 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
 std::string request_key(const CorrelationRequest& request);
 
 // A study's outcomes with each case's N filled in (from the primaries axis or the study's base).
-OutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
+CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
                                  std::string* result_set_hash = nullptr);
 
 // A study's fits as the table model (not cached): for consumers in C++ such as the lookup-table
@@ -41,7 +41,7 @@ OutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::in
 CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request);
 
 // The fits of a study, stored and served from the store while its result set is unchanged: a
-// request checks one row (the result-set version); a changed result set is read, its hash
+// request checks one row (the study's result-set version, Store::study_versions); a changed result set is read, its hash
 // compared with the stored set's, and refitted only when it differs. Fitting runs outside the
 // store's write lock, one study at a time; the new set is stored in one short transaction.
 class CorrelationCache {
@@ -51,6 +51,8 @@ class CorrelationCache {
 
  private:
   std::shared_ptr<std::mutex> study_lock(std::int64_t study_id);
+  // The study's result-set version (Store::study_versions; 0 before its first result).
+  std::int64_t result_set_version(std::int64_t study_id);
   StoredCorrelations refit(const StudyRecord& study, const CorrelationRequest& request, const std::string& key,
                            const std::optional<StoredCorrelations>& stored);
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <atomic>
 #include <cstddef>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,8 +28,20 @@ struct ServiceOptions {
   std::size_t max_body_bytes = 1 << 20;
   StudyLimits study_limits{10000, 100000, false};
   std::size_t max_page_size = 1000;
-  int threads = 8;
+  // cpp-httplib serves a keep-alive connection on one thread until it closes: with fewer threads
+  // than open connections the others wait their turn (16 wrk connections on 8 threads: p99 2-3x
+  // that on 32, docs/ORCHESTRATOR.md "Performance").
+  int threads = 32;
+  // The dashboard's folder (web_assets.hpp): served at `/` with the library files it names; empty:
+  // the API only.
+  std::filesystem::path web_directory;
+  // The folder of the case HDF5 files (STORE.data): GET /api/cases/ID/data serves a case's file only
+  // from under it; empty: no such downloads.
+  std::filesystem::path data_directory;
 };
+
+// The source tree's web/ folder, compiled in (the default of --web-dir).
+std::filesystem::path default_web_directory();
 
 // True for 127.0.0.0/8, ::1 and "localhost".
 bool is_loopback_host(const std::string& host);

@@ -3,6 +3,9 @@
 #include <array>
 #include <string>
 
+#include "orchestrator/store/outcome_migration.hpp"
+#include "orchestrator/store/store_summaries.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -103,39 +106,60 @@ CREATE TABLE fragments (
 ) WITHOUT ROWID;
 )sql";
 
-// Correlations (docs/CORRELATIONS.md). A study's result set changes when a result of one of its
-// cases is stored, changed or removed, or when it is linked to a case that already has one: the
-// triggers count those changes in study_result_versions, in the transaction that makes them, so
-// that a cached set of fits is known to be current from one row. correlation_sets holds one set of
-// fits per study and request (the pooled models' covariates): its summary and, in
-// correlation_fits, each fit's document; result_set_hash identifies the results it was fitted to.
+// Outcomes decided by what leaves the wall (docs/IMPACT.md section 5): the fraction left on the
+// wall is the retained one; the re-entrained fraction, whether the deposit is in pieces, the
+// damage ratio, the small-strain flag and the energy groups come with every result. Stored
+// results are classified again from their fragments (reclassify_stored_results).
 constexpr std::string_view kVersion2 = R"sql(
-CREATE TABLE study_result_versions (
-  study_id INTEGER PRIMARY KEY REFERENCES studies (id),
-  version  INTEGER NOT NULL
+ALTER TABLE results RENAME COLUMN mass_fraction_on_wall TO retained_mass_fraction;
+ALTER TABLE results ADD COLUMN reentrained_mass_fraction REAL;
+ALTER TABLE results ADD COLUMN damage_ratio REAL;
+ALTER TABLE results ADD COLUMN fractured_on_wall INTEGER CHECK (fractured_on_wall IN (0, 1));
+ALTER TABLE results ADD COLUMN small_strain_exceeded INTEGER CHECK (small_strain_exceeded IN (0, 1));
+ALTER TABLE results ADD COLUMN energy_per_contact REAL;
+ALTER TABLE results ADD COLUMN energy_over_rolling REAL;
+ALTER TABLE results ADD COLUMN initial_contacts INTEGER;
+)sql";
+
+// Summaries of each study and of each of its grid points, kept by triggers (store_summaries.hpp):
+// the read endpoints no longer aggregate every case of a study per request. migrate_store fills
+// them and creates the triggers right after this step.
+constexpr std::string_view kVersion3 = R"sql(
+CREATE TABLE study_summaries (
+  study_id           INTEGER PRIMARY KEY REFERENCES studies (id),
+  queued             INTEGER NOT NULL DEFAULT 0,
+  running            INTEGER NOT NULL DEFAULT 0,
+  done               INTEGER NOT NULL DEFAULT 0,
+  failed             INTEGER NOT NULL DEFAULT 0,
+  cancelled          INTEGER NOT NULL DEFAULT 0,
+  first_started_at   REAL,
+  last_finished_at   REAL,
+  finished_here      INTEGER NOT NULL DEFAULT 0,
+  case_state_version INTEGER NOT NULL DEFAULT 0,
+  result_set_version INTEGER NOT NULL DEFAULT 0
 );
 
-CREATE TRIGGER results_inserted AFTER INSERT ON results BEGIN
-  INSERT INTO study_result_versions (study_id, version)
-    SELECT study_id, 1 FROM study_cases WHERE case_id = NEW.case_id
-    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
-END;
-CREATE TRIGGER results_updated AFTER UPDATE ON results BEGIN
-  INSERT INTO study_result_versions (study_id, version)
-    SELECT study_id, 1 FROM study_cases WHERE case_id IN (OLD.case_id, NEW.case_id)
-    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
-END;
-CREATE TRIGGER results_deleted AFTER DELETE ON results BEGIN
-  INSERT INTO study_result_versions (study_id, version)
-    SELECT study_id, 1 FROM study_cases WHERE case_id = OLD.case_id
-    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
-END;
-CREATE TRIGGER study_case_linked AFTER INSERT ON study_cases
-  WHEN EXISTS (SELECT 1 FROM results WHERE case_id = NEW.case_id) BEGIN
-  INSERT INTO study_result_versions (study_id, version) VALUES (NEW.study_id, 1)
-    ON CONFLICT (study_id) DO UPDATE SET version = version + 1;
-END;
+CREATE TABLE grid_point_summaries (
+  study_id     INTEGER NOT NULL REFERENCES studies (id),
+  grid_key     TEXT NOT NULL,
+  position     INTEGER NOT NULL,
+  grid_point   TEXT NOT NULL,
+  cases        INTEGER NOT NULL DEFAULT 0,
+  stick        INTEGER NOT NULL DEFAULT 0,
+  bounce       INTEGER NOT NULL DEFAULT 0,
+  break_up     INTEGER NOT NULL DEFAULT 0,
+  undetermined INTEGER NOT NULL DEFAULT 0,
+  failed       INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (study_id, grid_key)
+) WITHOUT ROWID;
+CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
+)sql";
 
+// Correlations (docs/CORRELATIONS.md). correlation_sets holds one set of fits per study and request
+// (the pooled models' covariates): its summary and, in correlation_fits, each fit's document;
+// result_set_hash identifies the results it was fitted to, result_set_version the study's
+// result-set version (study_summaries, migration 3) at which that hash was last found current.
+constexpr std::string_view kVersion4 = R"sql(
 CREATE TABLE correlation_sets (
   id                 INTEGER PRIMARY KEY,
   study_id           INTEGER NOT NULL REFERENCES studies (id),
@@ -161,7 +185,10 @@ CREATE TABLE correlation_fits (
 
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
-    Migration{2, "result-set versions of studies, stored correlation sets and fits", kVersion2},
+    Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
+              kVersion2, reclassify_stored_results},
+    Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
+    Migration{4, "stored correlation sets and fits", kVersion4},
 };
 
 int user_version(SqliteDatabase& db) {
@@ -176,17 +203,25 @@ std::span<const Migration> store_migrations() { return kMigrations; }
 
 int latest_store_version() { return kMigrations.back().version; }
 
-int migrate_store(SqliteDatabase& db) {
+int migrate_store(SqliteDatabase& db) { return migrate_store(db, kMigrations); }
+
+int migrate_store(SqliteDatabase& db, std::span<const Migration> steps) {
   const int found = user_version(db);
-  if (found > latest_store_version()) {
+  const int latest = steps.empty() ? 0 : steps.back().version;
+  if (found > latest) {
     throw SqliteError("the store has schema version " + std::to_string(found) + ", newer than this aerobreak (" +
-                          std::to_string(latest_store_version()) + "); use a newer aerobreak",
+                          std::to_string(latest) + "); use a newer aerobreak",
                       SQLITE_MISMATCH);
   }
-  for (const Migration& step : kMigrations) {
+  for (const Migration& step : steps) {
     if (step.version <= found) continue;
     SqliteTransaction transaction(db);
+    // Whatever a step changes (outcomes re-classified, a table re-created), the summaries are
+    // recomputed after it in the same transaction; their triggers stay out of its way meanwhile.
+    drop_store_summary_triggers(db);
     db.execute(step.sql);
+    if (step.upgrade) step.upgrade(db);
+    if (has_store_summaries(db)) rebuild_store_summaries(db);
     db.execute("PRAGMA user_version = " + std::to_string(step.version));
     transaction.commit();
   }

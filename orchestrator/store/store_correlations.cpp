@@ -1,7 +1,7 @@
 // The store's side of the correlations (docs/CORRELATIONS.md): reading a study's outcomes for the
 // statistics, and keeping the fitted sets.
+#include <cstdio>
 #include <map>
-#include <set>
 #include <unordered_map>
 
 #include "orchestrator/store/store.hpp"
@@ -10,34 +10,15 @@
 namespace aerobreak {
 namespace {
 
-std::set<std::string> result_columns(SqliteDatabase& db) {
-  std::set<std::string> columns;
-  auto statement = db.prepare("SELECT name FROM pragma_table_info('results')");
-  while (statement.step()) columns.insert(statement.text(0));
-  return columns;
-}
-
-// The results columns of the shared outcome interface (docs/ORCHESTRATOR.md, "Store"), each as an
-// SQL expression: the column where this store has it, else NULL (a store from before the outcomes
-// migration keeps its retained fraction as mass_fraction_on_wall).
-std::string outcome_columns(SqliteDatabase& db) {
-  const auto columns = result_columns(db);
-  const auto column = [&columns](const std::string& name, const std::string& fallback = "NULL") {
-    return columns.count(name) ? "r." + name : fallback;
-  };
-  return column("retained_mass_fraction", column("mass_fraction_on_wall")) + ", " + column("damage_ratio") + ", " +
-         column("energy_per_contact") + ", " + column("small_strain_exceeded", "0");
-}
-
 std::int64_t version_of(SqliteDatabase& db, std::int64_t study_id) {
-  auto statement = db.prepare("SELECT version FROM study_result_versions WHERE study_id = ?");
+  auto statement = db.prepare("SELECT result_set_version FROM study_summaries WHERE study_id = ?");
   statement.bind_all(study_id);
   return statement.step() ? statement.integer(0) : 0;
 }
 
 // The sizes of the fragments that left the wall, per case.
 void add_reentrained_fragments(SqliteDatabase& db, std::int64_t study_id,
-                               const std::unordered_map<std::int64_t, std::size_t>& row_of_case, OutcomeTable& table) {
+                               const std::unordered_map<std::int64_t, std::size_t>& row_of_case, CaseOutcomeTable& table) {
   auto statement = db.prepare(
       "SELECT f.case_id, f.primaries FROM study_cases sc JOIN fragments f ON f.case_id = sc.case_id "
       "WHERE sc.study_id = ? AND f.on_wall = 0 ORDER BY f.case_id, f.rank");
@@ -60,12 +41,25 @@ CaseOutcome outcome_from(const SqliteStatement& row, std::size_t grid_point) {
   return c;
 }
 
-}  // namespace
-
-std::int64_t Store::result_set_version(std::int64_t study_id) {
-  auto db = read();
-  return version_of(*db, study_id);
+// Everything the statistics read of one result, as text: the result-set hash covers each of them,
+// so that a result changed in any fitted number (not only its class) is refitted.
+std::string case_identity(const std::string& result_key, const CaseOutcome& c) {
+  std::string text = result_key + ":" + std::string(to_string(c.outcome));
+  const auto add = [&text](const std::optional<double>& value) {
+    char number[32] = "-";
+    if (value) std::snprintf(number, sizeof number, "%.17g", *value);
+    text += std::string(":") + number;
+  };
+  add(c.restitution);
+  add(c.retained_mass_fraction);
+  add(c.damage_ratio);
+  add(c.energy_per_contact);
+  text += c.small_strain_exceeded ? ":flagged:" : ":within:";
+  for (const auto size : c.reentrained_sizes) text += std::to_string(size) + ",";
+  return text + "\n";
 }
+
+}  // namespace
 
 StudyOutcomes Store::study_outcomes(std::int64_t study_id) {
   auto db = read();
@@ -74,22 +68,24 @@ StudyOutcomes Store::study_outcomes(std::int64_t study_id) {
   try {
     outcomes.result_set_version = version_of(*db, study_id);
     auto statement = db->prepare(
-        "SELECT sc.grid_key, sc.grid_point, r.case_id, c.hash, r.attempt, r.committed_at, r.outcome, r.restitution, " +
-        outcome_columns(*db) +
-        " FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id "
-        "WHERE sc.study_id = ? ORDER BY sc.position");
+        "SELECT sc.grid_key, sc.grid_point, r.case_id, c.hash, r.attempt, r.committed_at, r.outcome, r.restitution, "
+        "r.retained_mass_fraction, r.damage_ratio, r.energy_per_contact, r.small_strain_exceeded "
+        "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? ORDER BY sc.position");
     statement.bind_all(study_id);
     std::map<std::string, std::size_t> point_of_key;
     std::unordered_map<std::int64_t, std::size_t> row_of_case;
+    std::vector<std::string> result_keys;
     while (statement.step()) {
       const auto [point, inserted] = point_of_key.emplace(statement.text(0), outcomes.table.grid_points.size());
       if (inserted) outcomes.table.grid_points.push_back(nlohmann::ordered_json::parse(statement.text(1)));
       row_of_case[statement.integer(2)] = outcomes.table.cases.size();
       outcomes.table.cases.push_back(outcome_from(statement, point->second));
-      outcomes.identity += statement.text(3) + ":" + std::to_string(statement.integer(4)) + ":" +
-                           std::to_string(statement.real(5)) + ":" + statement.text(6) + "\n";
+      result_keys.push_back(statement.text(3) + ":" + std::to_string(statement.integer(4)) + ":" +
+                            std::to_string(statement.real(5)));
     }
     add_reentrained_fragments(*db, study_id, row_of_case, outcomes.table);
+    for (std::size_t i = 0; i < result_keys.size(); ++i)
+      outcomes.identity += case_identity(result_keys[i], outcomes.table.cases[i]);
     db->execute("COMMIT");
   } catch (...) {
     db->execute("ROLLBACK");

@@ -46,8 +46,8 @@ CaseOutcome draw_case(std::size_t point, double speed, double primaries, double 
   return c;
 }
 
-OutcomeTable synthetic_study(std::size_t results) {
-  OutcomeTable table;
+CaseOutcomeTable synthetic_study(std::size_t results) {
+  CaseOutcomeTable table;
   table.axes = {"impact_speed", "primaries", "gamma_over_kn"};
   synthetic::Uniform uniform(2026);
   for (const double n : kPrimaries)
@@ -66,7 +66,7 @@ CorrelationRequest request() {
   return {"impact_speed", {{"primaries", true}, {"gamma_over_kn", true}}, {0.1, 0.5, 0.9}};
 }
 
-void time_fitting(const OutcomeTable& table) {
+void time_fitting(const CaseOutcomeTable& table) {
   double best = 1e30, best_cpu = 1e30;
   std::size_t fits = 0;
   for (int run = 0; run < 3; ++run) {
@@ -83,7 +83,7 @@ void time_fitting(const OutcomeTable& table) {
               std::thread::hardware_concurrency());
 }
 
-StudySubmission submission_of(const OutcomeTable& table) {
+StudySubmission submission_of(const CaseOutcomeTable& table) {
   StudySubmission study;
   study.hash = "correlation-bench";
   study.name = "correlation bench";
@@ -103,7 +103,7 @@ StudySubmission submission_of(const OutcomeTable& table) {
 }
 
 // The results and fragments of every case, in one transaction (case ids are 1..n in table order).
-void write_results(const std::filesystem::path& file, const OutcomeTable& table) {
+void write_results(const std::filesystem::path& file, const CaseOutcomeTable& table) {
   SqliteDatabase db(file);
   std::set<std::string> columns;
   for (auto info = db.prepare("SELECT name FROM pragma_table_info('results')"); info.step();) columns.insert(info.text(0));
@@ -130,7 +130,7 @@ void write_results(const std::filesystem::path& file, const OutcomeTable& table)
   transaction.commit();
 }
 
-int bench_store(const OutcomeTable& table, const std::filesystem::path& file) {
+int bench_store(const CaseOutcomeTable& table, const std::filesystem::path& file) {
   std::filesystem::remove(file);
   {
     Store store(file);
@@ -158,7 +158,7 @@ int bench_store(const OutcomeTable& table, const std::filesystem::path& file) {
 int main(int argc, char** argv) {
   using namespace aerobreak;
   const std::size_t results = argc > 1 ? std::stoul(argv[1]) : 100000;
-  const OutcomeTable table = synthetic_study(results);
+  const CaseOutcomeTable table = synthetic_study(results);
   time_fitting(table);
   if (argc > 2) return bench_store(table, argv[2]);
   return 0;

@@ -23,7 +23,7 @@ TEST_CASE("The 95 % profile-likelihood interval of v50 covers the truth in 93-97
   int covered = 0, fitted = 0;
   constexpr int kStudies = 400;
   for (int study = 0; study < kStudies; ++study) {
-    const OutcomeTable table = synthetic::draw_study(law, speeds, 20, uniform);
+    const CaseOutcomeTable table = synthetic::draw_study(law, speeds, 20, uniform);
     const auto groups = group_cases(table, request.speed_axis);
     REQUIRE(groups.size() == 1);
     const LogisticFit fit = fit_logistic({}, Outcome::break_up, "impact_speed",

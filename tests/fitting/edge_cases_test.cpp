@@ -14,8 +14,8 @@ namespace aerobreak {
 namespace {
 
 // `outcomes` per speed: one string of s (stick), b (bounce), u (break-up), ? (undetermined).
-OutcomeTable study_of(const std::vector<double>& speeds, const std::vector<std::string>& outcomes) {
-  OutcomeTable table;
+CaseOutcomeTable study_of(const std::vector<double>& speeds, const std::vector<std::string>& outcomes) {
+  CaseOutcomeTable table;
   table.axes = {"impact_speed"};
   for (std::size_t g = 0; g < speeds.size(); ++g) {
     table.grid_points.push_back({{"impact_speed", speeds[g]}});
@@ -31,7 +31,7 @@ OutcomeTable study_of(const std::vector<double>& speeds, const std::vector<std::
   return table;
 }
 
-CorrelationSet correlations_of(const OutcomeTable& table) {
+CorrelationSet correlations_of(const CaseOutcomeTable& table) {
   CorrelationRequest request;
   request.speed_axis = "impact_speed";
   return compute_correlations(table, request, {7, "hash", 1, "test"});

@@ -72,7 +72,7 @@ struct Counts {
 const Counts kSmall{{18, 15, 12, 8, 5, 2, 1, 0}, {2, 4, 5, 6, 5, 4, 2, 1}, {0, 1, 3, 6, 10, 14, 17, 19}};
 const Counts kLarge{{19, 17, 14, 11, 7, 4, 2, 1}, {1, 2, 4, 5, 5, 4, 3, 1}, {0, 1, 2, 4, 8, 12, 15, 18}};
 
-void add_group(OutcomeTable& table, double primaries, const Counts& counts) {
+void add_group(CaseOutcomeTable& table, double primaries, const Counts& counts) {
   for (std::size_t s = 0; s < kSpeeds.size(); ++s) {
     table.grid_points.push_back({{"impact_speed", kSpeeds[s]}, {"primaries", primaries}});
     const std::pair<Outcome, int> outcomes[] = {
@@ -87,8 +87,8 @@ void add_group(OutcomeTable& table, double primaries, const Counts& counts) {
   }
 }
 
-OutcomeTable fixture_study() {
-  OutcomeTable table;
+CaseOutcomeTable fixture_study() {
+  CaseOutcomeTable table;
   table.axes = {"impact_speed", "primaries"};
   add_group(table, 32, kSmall);
   add_group(table, 128, kLarge);
@@ -115,7 +115,7 @@ void check_critical(const CriticalValue& value, double estimate, double lower, d
   CHECK(*value.upper == Approx(upper).epsilon(kRelative));
 }
 
-LogisticFit group_fit(const OutcomeTable& table, Outcome response) {
+LogisticFit group_fit(const CaseOutcomeTable& table, Outcome response) {
   const auto groups = group_cases(table, "impact_speed");
   const auto request = speed_request();
   return fit_logistic({}, response, "impact_speed", speed_rows(table, groups[0].grid_points, response, request), request, {});
@@ -124,7 +124,7 @@ LogisticFit group_fit(const OutcomeTable& table, Outcome response) {
 }  // namespace
 
 TEST_CASE("Per-group logistic fits and profile-likelihood critical speeds agree with R", "[fitting][reference]") {
-  const OutcomeTable table = fixture_study();
+  const CaseOutcomeTable table = fixture_study();
   const LogisticFit break_up = group_fit(table, Outcome::break_up);
   REQUIRE(break_up.common.status == FitStatus::ok);
   check_estimate(break_up.common, 0, 5.19597713655170, 0.811609705746725);
@@ -142,7 +142,7 @@ TEST_CASE("Per-group logistic fits and profile-likelihood critical speeds agree 
 }
 
 TEST_CASE("The pooled model with log N as covariate agrees with R", "[fitting][reference]") {
-  const OutcomeTable table = fixture_study();
+  const CaseOutcomeTable table = fixture_study();
   CorrelationRequest request = speed_request();
   request.covariates = {{"primaries", true}};
   std::vector<std::size_t> all(table.grid_points.size());
@@ -163,7 +163,7 @@ TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting]
                                    6.6754, 7.2762, 7.931, 8.6448, 9.4228, 10.2709, 11.1953, 12.2028, 13.3011, 14.4982, 15.803, 17.2253};
   const std::vector<int> broke{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1,
                                1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
-  OutcomeTable table;
+  CaseOutcomeTable table;
   table.axes = {"impact_speed"};
   table.grid_points.push_back({{"impact_speed", 0.1}});
   for (std::size_t i = 0; i < energy.size(); ++i) {
@@ -188,7 +188,7 @@ TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting]
 TEST_CASE("The quasi-binomial retained-fraction fit agrees with R", "[fitting][reference]") {
   const std::vector<double> fractions{0.928, 0.871, 0.976, 0.834, 0.721, 0.905, 0.792, 0.814, 0.854, 0.597, 0.577, 0.464,
                                       0.443, 0.345, 0.358, 0.16,  0.184, 0.219, 0.244, 0,     0.025, 0.101, 0.198, 0.128};
-  OutcomeTable table;
+  CaseOutcomeTable table;
   table.axes = {"impact_speed"};
   for (std::size_t s = 0; s < kSpeeds.size(); ++s) {
     table.grid_points.push_back({{"impact_speed", kSpeeds[s]}});

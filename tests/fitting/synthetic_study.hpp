@@ -29,9 +29,9 @@ struct LogisticLaw {
 
 // `speeds` grid points on the axis "impact_speed" (and one more axis "primaries" = N), `replicates`
 // cases each: break-up with the law's probability, stick otherwise.
-inline OutcomeTable draw_study(const LogisticLaw& law, const std::vector<double>& speeds, int replicates, Uniform& uniform,
+inline CaseOutcomeTable draw_study(const LogisticLaw& law, const std::vector<double>& speeds, int replicates, Uniform& uniform,
                                double primaries = 32) {
-  OutcomeTable table;
+  CaseOutcomeTable table;
   table.axes = {"impact_speed", "primaries"};
   for (const double speed : speeds) {
     table.grid_points.push_back({{"impact_speed", speed}, {"primaries", primaries}});

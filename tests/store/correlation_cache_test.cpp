@@ -1,5 +1,5 @@
-// The correlations' storage over a real SQLite file: the reader, the result-set version kept by the
-// migration's triggers, and the cache that refits only when the result set changed.
+// The correlations' storage over a real SQLite file: the reader, the study's result-set version
+// (Store::study_versions), and the cache that refits only when the result set changed.
 #include <catch2/catch.hpp>
 
 #include "orchestrator/service/correlation_cache.hpp"
@@ -17,7 +17,7 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
   CHECK(outcomes.table.grid_points.size() == 16);
   CHECK(outcomes.table.axes == std::vector<std::string>{"impact_speed", "primaries"});
   CHECK(outcomes.result_set_version == 48);  // one per committed result
-  CHECK(store.result_set_version(id) == 48);
+  CHECK(store.study_versions(id)->result_set == 48);
   std::size_t break_ups = 0;
   for (const CaseOutcome& c : outcomes.table.cases) {
     REQUIRE(c.retained_mass_fraction);
@@ -32,8 +32,8 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
   auto again = correlation_study_submission("reader", 3);
   again.hash = "reader-again";
   const auto second = store.submit_study(again).study_id;
-  CHECK(store.result_set_version(second) == 48);  // one per case linked with its result
-  CHECK(store.result_set_version(id) == 48);
+  CHECK(store.study_versions(second)->result_set == 48);  // one per case linked with its result
+  CHECK(store.study_versions(id)->result_set == 48);
 }
 
 TEST_CASE("Fits are stored, served while the result set is unchanged, refitted when it changes", "[store][correlations]") {
