@@ -36,7 +36,9 @@ StoredCorrelations current(Store& store, CorrelationCache& cache, const httplib:
   try {
     return cache.current(study, correlation_request(study, covariates_parameter(request)));
   } catch (const CorrelationRequestError& error) {
-    throw RequestError{error.no_results ? 409 : 400, error.what()};
+    // A study without results has no correlations yet: 404, as the dashboard expects of a part it
+    // cannot show (docs/WEB.md); the message says why.
+    throw RequestError{error.no_results ? 404 : 400, error.what()};
   }
 }
 

@@ -80,7 +80,7 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   CHECK(covariate.status == 400);
   CHECK(covariate.body.at("error").get<std::string>().find("covariate 'angle' is not an axis of study 1") != std::string::npos);
   const Answer no_results = get(service, "/api/studies/2/correlations");
-  CHECK(no_results.status == 409);
+  CHECK(no_results.status == 404);
   CHECK(no_results.body.at("error").get<std::string>().find("no results") != std::string::npos);
   CHECK(get(service, "/api/studies/99/correlations").status == 404);
   CHECK(get(service, "/api/studies/1/correlations?covariates=" + std::string(300, 'x')).status == 400);
