@@ -23,7 +23,8 @@ std::string text_or(const nlohmann::json& message, const char* key, const std::s
 
 }  // namespace
 
-Scheduler::Scheduler(Store& store, SchedulerOptions options) : store_(store), options_(std::move(options)) {
+Scheduler::Scheduler(Store& store, SchedulerOptions options)
+    : store_(store), options_(std::move(options)), searches_(store, options_.log) {
   status_.launcher_command = join_command(worker_job_command(options_.launcher));
 }
 
@@ -60,8 +61,19 @@ void Scheduler::note(const std::string& line) {
   if (options_.log) options_.log(line);
 }
 
+void Scheduler::advance_searches() {
+  if (!searches_due_) return;
+  searches_due_ = false;
+  try {
+    searches_.advance();
+  } catch (const std::exception& error) {
+    note(std::string("adaptive search: ") + error.what());
+  }
+}
+
 void Scheduler::run() {
   while (!stopping_) {
+    advance_searches();
     if (job_) {
       // Wait for one message at most 50 ms, then take the ones already there without waiting:
       // each may free a rank, and the freed rank gets its next case right after.
@@ -82,6 +94,7 @@ void Scheduler::run() {
       std::unique_lock lock(wake_mutex_);
       wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return woken_ || stopping_.load(); });
       woken_ = false;
+      searches_due_ = true;
     }
   }
   if (job_) {
@@ -170,6 +183,7 @@ void Scheduler::handle(const nlohmann::json& message) {
                          text_or(message, "host", "?") + ":" + std::to_string(message.value("rank", -1)));
     return;
   }
+  searches_due_ = true;
   if (type == "result") {
     try {
       const nlohmann::ordered_json result = message.at("result");
@@ -256,6 +270,7 @@ void Scheduler::reap_job() {
   store_.end_job(job_id, code, note_text);
   job_.reset();
   in_flight_.clear();
+  searches_due_ = true;
 
   std::lock_guard lock(status_mutex_);
   status_.job_running = false;

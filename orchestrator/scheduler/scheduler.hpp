@@ -16,6 +16,7 @@
 
 #include "orchestrator/scheduler/launcher.hpp"
 #include "orchestrator/scheduler/worker_job.hpp"
+#include "orchestrator/search/search_driver.hpp"
 #include "orchestrator/store/store.hpp"
 
 namespace aerobreak {
@@ -57,6 +58,8 @@ struct SchedulerStatus {
 // nothing, it gets the next case the moment it reports its last one), commits every result the
 // moment it arrives, and turns every way a case or a job can end into a store transition
 // (store.hpp). All of it on one thread, the store's one writer besides submissions and cancels.
+// Between messages it decides the adaptive searches' next rounds (search_driver.hpp) as their
+// last rounds finish, so that their cases join the queue the moment they can be chosen.
 class Scheduler {
  public:
   Scheduler(Store& store, SchedulerOptions options);
@@ -87,6 +90,7 @@ class Scheduler {
   void check_hard_limits();
   void stop_idle_job();
   void reap_job();
+  void advance_searches();
   void note(const std::string& line);
 
   Store& store_;
@@ -98,6 +102,8 @@ class Scheduler {
   bool woken_ = false;
 
   // Scheduling thread only.
+  SearchDriver searches_;
+  bool searches_due_ = true;  // a case of a search may have finished: look for rounds to decide
   std::unique_ptr<WorkerJob> job_;
   std::map<std::int64_t, InFlight> in_flight_;
   std::optional<std::int64_t> overdue_case_;
