@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "orchestrator/study/study_expansion.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -13,9 +15,7 @@ std::string number(const nlohmann::ordered_json& value) {
 }
 
 std::string group_label(const nlohmann::ordered_json& group) {
-  std::string label;
-  for (const auto& [name, value] : group.items())
-    label += (label.empty() ? "" : " ") + name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  const std::string label = grid_label(group);
   return label.empty() ? "(one group)" : label;
 }
 

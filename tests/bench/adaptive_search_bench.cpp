@@ -15,20 +15,6 @@ namespace {
 using namespace aerobreak;
 using namespace aerobreak::testing;
 
-BoundarySearchSpec search_spec(double relative_width) {
-  BoundarySearchSpec spec;
-  spec.axis = "impact_speed";
-  spec.pointer = "/impact/speed";
-  spec.from = 0.005;
-  spec.to = 0.3;
-  spec.targets = {{"break-up", {0.5}}};
-  spec.relative_width = relative_width;
-  spec.budget = 5000;
-  spec.batch = 10;
-  spec.initial = 10;
-  return spec;
-}
-
 std::vector<double> grid_speeds(const BoundarySearchSpec& spec, int count) {
   std::vector<double> speeds;
   for (int k = 0; k < count; ++k)
@@ -79,7 +65,7 @@ int main(int argc, char** argv) {
   std::printf("%-14s %-26s %-30s %-10s\n", "relative width", "adaptive: mean (median) n", "best uniform grid: mean (median) n",
               "ratio");
   for (const double width : {0.5, 0.3, 0.2}) {
-    const auto spec = search_spec(width);
+    const auto spec = speed_search(width, 5000);
     std::vector<int> adaptive;
     for (int r = 0; r < repetitions; ++r) {
       const auto search = simulate_search(spec, law, 0.001, 5000 + static_cast<std::uint64_t>(r));

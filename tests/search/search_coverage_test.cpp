@@ -11,19 +11,7 @@
 namespace aerobreak::testing {
 namespace {
 
-BoundarySearchSpec speed_search() {
-  BoundarySearchSpec spec;
-  spec.axis = "impact_speed";
-  spec.pointer = "/impact/speed";
-  spec.from = 0.005;
-  spec.to = 0.3;
-  spec.targets = {{"break-up", {0.5}}};
-  spec.relative_width = 0.3;
-  spec.budget = 300;
-  spec.batch = 10;
-  spec.initial = 10;
-  return spec;
-}
+BoundarySearchSpec speed_search() { return testing::speed_search(0.3, 300); }
 
 struct Coverage {
   int covered = 0;

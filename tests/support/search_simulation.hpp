@@ -11,6 +11,22 @@
 
 namespace aerobreak::testing {
 
+// A search for v50 of the impact speed over 0.005-0.3 d/tau, in rounds of 10 after 10 initial
+// cases: the setting of the coverage test and the benchmark.
+inline BoundarySearchSpec speed_search(double relative_width, int budget) {
+  BoundarySearchSpec spec;
+  spec.axis = "impact_speed";
+  spec.pointer = "/impact/speed";
+  spec.from = 0.005;
+  spec.to = 0.3;
+  spec.targets = {{"break-up", {0.5}}};
+  spec.relative_width = relative_width;
+  spec.budget = budget;
+  spec.batch = 10;
+  spec.initial = 10;
+  return spec;
+}
+
 struct SimulatedSearch {
   RoundPlan final;  // the last decision: state and estimates
   int cases = 0;
