@@ -223,8 +223,8 @@ TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leave
   db.execute("UPDATE results SET outcome = 'stick' WHERE outcome = 'undetermined'");
   db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
              "VALUES (" + std::to_string(study_id + 1) + ", 'later', 'later', '{}', 'active', 3, 60, 0)");
-  db.execute("INSERT INTO study_cases SELECT " + std::to_string(study_id + 1) +
-             ", case_id, position, grid_point, 'later', replicate FROM study_cases");
+  db.execute("INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) SELECT " +
+             std::to_string(study_id + 1) + ", case_id, position, grid_point, 'later', replicate FROM study_cases");
   check_summaries(db);
 }
 
