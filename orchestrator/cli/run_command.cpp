@@ -75,9 +75,11 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_line_{};
 };
 
-std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, int port) {
+std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, int port,
+                                       std::function<void(const std::string&)> access_log) {
   ServiceOptions options;
   options.port = port;
+  options.access_log = std::move(access_log);
   auto service = std::make_unique<Service>(store, &scheduler, options);
   try {
     service->start();
@@ -114,14 +116,19 @@ int run(RunOptions options) {
 
   Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
-  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
-  const auto receipt = store.submit_study(make_submission(study));
-  const auto service = start_service(store, scheduler, options.port);
+  const auto log = line_log(data_directory / "orchestrator.log");
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
+  StudySubmission submission = make_submission(study);
+  DataFileChecker checker;
+  recompute_lost_data_files(submission, store, checker);
+  const auto receipt = store.submit_study(submission);
+  const auto service = start_service(store, scheduler, options.port, log);
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done), store " << store.file().string() << "\n"
+            << " already done" << (receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "")
+            << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: service: " << study_url << "  (outcomes: " << study_url << "/outcomes)\n";
 

@@ -1,12 +1,14 @@
 #pragma once
 #include <atomic>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
 
 #include "orchestrator/scheduler/scheduler.hpp"
+#include "orchestrator/service/connection_stream.hpp"
 #include "orchestrator/store/store.hpp"
 #include "orchestrator/study/study.hpp"
 
@@ -27,7 +29,10 @@ struct ServiceOptions {
   std::size_t max_body_bytes = 1 << 20;
   StudyLimits study_limits{10000, 100000, false};
   std::size_t max_page_size = 1000;
-  int threads = 8;
+  // What one connection may take: connections at once, timeouts, header size (docs/ORCHESTRATOR.md).
+  ConnectionLimits connections;
+  // Gets one line per request (client, method, target, status, milliseconds); null: no log.
+  std::function<void(const std::string&)> access_log;
 };
 
 // True for 127.0.0.0/8, ::1 and "localhost".
