@@ -9,6 +9,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   libhdf5-dev hdf5-tools
   libsqlite3-dev
+  libssl-dev
   nlohmann-json3-dev
   libcpp-httplib-dev
   catch2

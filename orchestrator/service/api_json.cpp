@@ -76,7 +76,7 @@ nlohmann::ordered_json to_json(const ResultRecord& record) {
           {"committed_at", record.committed_at}};
 }
 
-nlohmann::ordered_json to_json(const CaseDetail& detail) {
+nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check) {
   nlohmann::ordered_json json = to_json(detail.record);
   json["document"] = detail.document;
   auto& attempts = json["attempt_history"] = nlohmann::ordered_json::array();
@@ -99,6 +99,15 @@ nlohmann::ordered_json to_json(const CaseDetail& detail) {
                          {"radius_of_gyration", optional_json(fragment.radius_of_gyration)}});
   }
   json["data_file"] = optional_json(detail.data_file);
+  json["data_file_check"] = nullptr;
+  if (data_file_check) {
+    const auto& digest = detail.data_file_digest;
+    json["data_file_check"] = {
+        {"state", std::string(to_string(data_file_check->state))},
+        {"problem", data_file_check->problem.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(data_file_check->problem)},
+        {"size", digest.size >= 0 ? nlohmann::ordered_json(digest.size) : nlohmann::ordered_json(nullptr)},
+        {"sha256", digest.sha256.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(digest.sha256)}};
+  }
   json["result"] = detail.result ? *detail.result : nlohmann::ordered_json(nullptr);
   return json;
 }
@@ -120,7 +129,8 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
           {"cases", receipt.cases},
           {"new_cases", receipt.new_cases},
           {"already_done", receipt.already_done},
-          {"requeued", receipt.requeued}};
+          {"requeued", receipt.requeued},
+          {"recomputed", receipt.recomputed}};
 }
 
 nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {

@@ -103,8 +103,15 @@ CREATE TABLE fragments (
 ) WITHOUT ROWID;
 )sql";
 
+// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+constexpr std::string_view kVersion2 = R"sql(
+ALTER TABLE results ADD COLUMN data_file_size INTEGER;
+ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
+    Migration{2, "size and SHA-256 of each result's data file", kVersion2},
 };
 
 int user_version(SqliteDatabase& db) {
