@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages aerobreak needs (only those missing) and builds it into build/.
+# Installs the Debian packages aerobreak needs (only those missing), the dashboard's npm packages
+# (from the committed lockfiles) and builds aerobreak into build/.
 # Idempotent and quiet when everything is already there. Usage: scripts/setup.sh [--no-build]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,7 +16,12 @@ packages=(
   catch2
   libcli11-dev
   libeigen3-dev
+  chromium
 )
+# Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a
+# node (e.g. from another source, with its own npm) keeps it.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -34,6 +40,17 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get update -qq
   "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# The npm packages pinned by each lockfile: the page's libraries (web/) and the browser tests'
+# driver (tests/browser/). Installed again only when the lockfile changed.
+for folder in web tests/browser; do
+  stamp="$folder/node_modules/.aerobreak-lock"
+  if ! cmp -s "$folder/package-lock.json" "$stamp" 2>/dev/null; then
+    echo "setup: npm ci in $folder"
+    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    cp "$folder/package-lock.json" "$stamp"
+  fi
+done
 
 [[ "${1:-}" == "--no-build" ]] && exit 0
 

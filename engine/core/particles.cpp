@@ -24,6 +24,16 @@ void Particles::clear_forces() {
   std::fill(torque.begin(), torque.end(), Vec3{});
 }
 
+Vec3 Particles::centre_of_mass() const {
+  Vec3 centre;
+  double total = 0.0;
+  for (std::size_t i = 0; i < size(); ++i) {
+    centre += mass[i] * position[i];
+    total += mass[i];
+  }
+  return centre / total;
+}
+
 void Particles::reserve(std::size_t n) {
   position.reserve(n);
   velocity.reserve(n);

@@ -26,6 +26,8 @@ struct Particles {
   std::size_t add(const Vec3& at, double sphere_radius, double density, std::uint16_t material_index = 0);
   void clear_forces();
   void reserve(std::size_t n);
+  // The mass-weighted mean position (the particles must not be empty).
+  Vec3 centre_of_mass() const;
 };
 
 }  // namespace aerobreak

@@ -19,13 +19,7 @@ Cluster cluster_from_particles(const Particles& particles) {
 Particles place_for_impact(const Particles& cluster, const Rotation& orientation, const Wall& wall, double gap,
                            const Vec3& velocity) {
   Particles p = cluster;
-  Vec3 centre;
-  double mass = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    centre += p.mass[i] * p.position[i];
-    mass += p.mass[i];
-  }
-  centre = centre / mass;
+  const Vec3 centre = p.centre_of_mass();
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.position[i] = orientation.apply(p.position[i] - centre);

@@ -10,9 +10,6 @@
 #include "engine/dem/simulation.hpp"
 
 namespace aerobreak {
-namespace {
-
-}  // namespace
 
 FragmentAnalysis find_fragments(const Particles& p, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& contacts,
                                 const std::vector<std::uint32_t>& wall_contacts_per_particle, const Wall& wall) {
@@ -91,6 +88,15 @@ FragmentAnalysis find_fragments(const Simulation& simulation, std::size_t wall_i
   });
   const Wall wall = simulation.walls().empty() ? Wall{} : simulation.walls()[wall_index];
   return find_fragments(p, contacts, on_wall, wall);
+}
+
+std::vector<FragmentFate> fates_of(const std::vector<Fragment>& fragments, const std::vector<Vec3>& velocity,
+                                   const Vec3& wall_normal) {
+  const Vec3 n = wall_normal / norm(wall_normal);
+  std::vector<FragmentFate> fates(fragments.size());
+  for (std::size_t k = 0; k < fragments.size(); ++k)
+    fates[k] = {fragments[k].size, fragments[k].mass, fragments[k].on_wall(), dot(velocity[k], n), norm(velocity[k])};
+  return fates;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>> size_distribution(const std::vector<Fragment>& fragments) {

@@ -7,6 +7,7 @@
 #include "engine/core/particles.hpp"
 #include "engine/core/vec3.hpp"
 #include "engine/dem/wall.hpp"
+#include "engine/impact/outcome.hpp"
 
 namespace aerobreak {
 
@@ -43,6 +44,11 @@ FragmentAnalysis find_fragments(const Particles& particles,
 // Fragments of a running simulation from its live contacts; wall contacts are those with
 // `wall_index`.
 FragmentAnalysis find_fragments(const Simulation& simulation, std::size_t wall_index = 0);
+
+// What the outcome rule reads of each fragment, with `velocity[k]` taken as fragment k's
+// centre-of-mass velocity (the window mean of a settled state, or the instantaneous one).
+std::vector<FragmentFate> fates_of(const std::vector<Fragment>& fragments, const std::vector<Vec3>& velocity,
+                                   const Vec3& wall_normal);
 
 // Number of fragments of each size, ascending in size: (size, count).
 std::vector<std::pair<std::size_t, std::size_t>> size_distribution(const std::vector<Fragment>& fragments);

@@ -155,16 +155,24 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   c.orientation_seed = im["orientation_seed"].get<std::uint64_t>();
   c.gap = im["gap"].get<double>();
 
-  c.largest_fragment_share = d["classification"]["largest_fragment_share"].get<double>();
+  c.thresholds.bounce_share = d["classification"]["largest_fragment_share"].get<double>();
 
   const Json& run = d["run"];
-  c.time_limit = run["time_limit"].get<double>();
+  if (run.contains("time_limit_s")) {
+    if (c.physical)
+      c.time_limit = run["time_limit_s"].get<double>() / c.physical->time_unit();
+    else
+      violation("/run/time_limit_s", "needs \"units\": \"physical\" (a reduced case has no second; give /run/time_limit in tau)");
+  } else {
+    c.time_limit = run["time_limit"].get<double>();
+  }
   c.snapshot_interval = run.value("snapshot_interval", 0.0);
   c.time_step = run.value("time_step", 0.0);
   c.steps_per_period = run["steps_per_period"].get<double>();
   c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);
   c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
-  if (c.time_step > 0.0 && c.time_step >= c.time_limit)
+  c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);
+  if (c.time_step > 0.0 && c.time_limit > 0.0 && c.time_step >= c.time_limit)
     violation("/run/time_step", "must be smaller than /run/time_limit");
   // The cluster starts `gap` above the wall, so its first wall contact comes after gap / v_n
   // (docs/IMPACT.md): a speed too small to reach the wall within time_limit (5e-324 d/tau, say,

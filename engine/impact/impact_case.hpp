@@ -11,6 +11,7 @@
 #include "engine/core/material.hpp"
 #include "engine/core/units.hpp"
 #include "engine/impact/json_schema.hpp"
+#include "engine/impact/outcome.hpp"
 
 namespace aerobreak {
 
@@ -30,6 +31,7 @@ struct ClusterSource {
 struct SettleCriteria {
   double quiet_window = 0.0;          // tau; 0: automatic
   double rest_speed_fraction = 0.01;  // of the impact speed
+  bool stop_when_outcome_fixed = true;  // the outcome-fixed rule as well as the quiet one
 };
 
 // One impact case, in reduced units (d, m, tau = sqrt(m/k_n)), as schemas/case.schema.json
@@ -51,9 +53,9 @@ struct ImpactCase {
   std::uint64_t orientation_seed = 0;
   double gap = 0.01;              // d
 
-  double largest_fragment_share = 0.9;
+  OutcomeThresholds thresholds;   // bounce_share from /classification/largest_fragment_share
 
-  double time_limit = 0.0;         // tau
+  double time_limit = 0.0;         // tau (given as /run/time_limit, or /run/time_limit_s over tau)
   double snapshot_interval = 0.0;  // tau; 0: first and last frames only
   double time_step = 0.0;          // tau; 0: automatic
   double steps_per_period = 50.0;

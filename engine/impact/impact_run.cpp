@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 
 #include "engine/cluster/ballistic_aggregation.hpp"
@@ -46,7 +47,69 @@ ClusterShape shape_of(const Particles& p, const std::vector<std::uint32_t>& memb
   s.radius_of_gyration = radius_of_gyration(c);
   s.fractal_dimension = mass_radius_dimension(c);
   s.coordination = 2.0 * static_cast<double>(contacts) / static_cast<double>(members.size());
+  s.filling_factor = members.size() > 1 ? filling_factor(c) : std::numeric_limits<double>::quiet_NaN();
   return s;
+}
+
+// Diameter of the bounding sphere of the particles about their centre of mass.
+double extent_of(const Particles& p) {
+  const Vec3 centre = p.centre_of_mass();
+  double extent = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
+  return extent;
+}
+
+// The particle-particle contacts of a simulation as sorted pairs (i < j).
+std::vector<std::pair<std::uint32_t, std::uint32_t>> contact_pairs(const Simulation& sim) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  sim.contacts().for_each([&](const ContactState& c) {
+    if (!c.with_wall) pairs.emplace_back(std::min(c.i, c.j), std::max(c.i, c.j));
+  });
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// How many of the sorted pairs `before` are missing from the sorted pairs `after`.
+std::size_t missing_from(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& before,
+                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& after) {
+  std::size_t missing = 0;
+  auto found = after.begin();
+  for (const auto& pair : before) {
+    found = std::lower_bound(found, after.end(), pair);
+    if (found == after.end() || *found != pair) ++missing;
+  }
+  return missing;
+}
+
+// The contact energies of two primaries of diameter d = 1 (the geometric mean of a polydisperse
+// cluster) of the case's material, under the case's normal law.
+ContactEnergies primary_contact_energies(const ImpactCase& c) {
+  const MaterialTable materials({c.material});
+  const double mass = c.material.density * std::numbers::pi / 6.0;
+  const auto law = make_contact_forces(c.model, c.model.normal);
+  return contact_energies(*law, sphere_pair_constants(0.5, mass, 0.5, mass, materials.pair(0, 0)),
+                          c.model.rolling ? c.model.critical_rolling : 0.0);
+}
+
+Wall impact_wall(const ImpactCase& c) {
+  Wall wall;
+  wall.point = {0.0, 0.0, 0.0};
+  wall.normal = {0.0, 0.0, 1.0};
+  wall.material = kWallMaterial;
+  wall.adhesive = c.wall_adhesive;
+  return wall;
+}
+
+// Settle criterion (docs/IMPACT.md). The automatic window covers 50 contact periods and a tenth
+// of the time the cluster needs to cross its own extent at the normal impact speed.
+void choose_settle_window(ImpactResult& r, double extent) {
+  const ImpactCase& c = r.impact_case;
+  const double normal_speed = -dot(r.impact_velocity, r.wall_normal);
+  r.quiet_window = c.settle.quiet_window > 0.0
+                       ? c.settle.quiet_window
+                       : std::max(50.0 * r.time_step_estimate.period, 0.1 * extent / normal_speed);
+  if (!(r.quiet_window > 0.0) || !std::isfinite(r.quiet_window)) r.quiet_window = 1000.0 * r.time_step;
+  r.rest_speed = c.settle.rest_speed_fraction * c.speed;
 }
 
 void tell(const std::function<void(const std::string&)>& log, const std::string& line) {
@@ -98,18 +161,18 @@ Particles prepare_cluster(const ImpactCase& c, RelaxationSummary& relaxation,
   return particles;
 }
 
-ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
-  ImpactResult r;
+PreparedImpact::PreparedImpact() = default;
+PreparedImpact::PreparedImpact(PreparedImpact&&) noexcept = default;
+PreparedImpact::~PreparedImpact() = default;
+
+PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& options) {
+  PreparedImpact prepared;
+  ImpactResult& r = prepared.result;
   r.impact_case = c;
   const Particles cluster = prepare_cluster(c, r.relaxation, options.log);
-  const std::size_t n = cluster.size();
-  r.primaries = n;
+  r.primaries = cluster.size();
 
-  Wall wall;
-  wall.point = {0.0, 0.0, 0.0};
-  wall.normal = {0.0, 0.0, 1.0};
-  wall.material = kWallMaterial;
-  wall.adhesive = c.wall_adhesive;
+  const Wall wall = impact_wall(c);
   r.wall_normal = wall.normal;
   r.orientation = impact_orientation(c);
   r.impact_velocity = impact_velocity(c);
@@ -119,48 +182,65 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   settings.steps_per_period = c.steps_per_period;
   settings.speed_scale = c.speed;
   settings.initial_bond_gap = kBondGap;
-  Simulation sim(place_for_impact(cluster, r.orientation, wall, c.gap, r.impact_velocity), {c.material, c.wall_material},
-                 {wall}, c.model, settings);
+  prepared.simulation =
+      std::make_unique<Simulation>(place_for_impact(cluster, r.orientation, wall, c.gap, r.impact_velocity),
+                                   std::vector<Material>{c.material, c.wall_material}, std::vector<Wall>{wall}, c.model,
+                                   settings);
+  const Simulation& sim = *prepared.simulation;
   r.time_step = sim.time_step();
   r.time_step_estimate = sim.time_step_estimate();
   r.initial_energy = sim.energy();
-  r.initial_contacts = sim.contacts().size();  // no wall contact at the start: the cluster is `gap` above
-  // The engine counts the bonds formed when the run starts as made: events are counted from here.
-  const ContactEvents pair_start = sim.pair_events();
-  const ContactEvents wall_start = sim.wall_events();
+  prepared.initial_contacts = contact_pairs(sim);
+  r.initial_contacts = prepared.initial_contacts.size();  // no wall contact yet: the cluster is `gap` above
+  prepared.pair_start = sim.pair_events();
+  prepared.wall_start = sim.wall_events();
   double total_mass = 0.0;
   for (double m : sim.particles().mass) total_mass += m;
   r.impact_kinetic_energy = 0.5 * total_mass * norm2(r.impact_velocity);
+  r.contact_energies = primary_contact_energies(c);
+  r.energy_groups = energy_groups(r.impact_kinetic_energy, r.initial_contacts, r.contact_energies);
 
-  std::vector<std::uint32_t> everyone(n);
-  for (std::uint32_t i = 0; i < n; ++i) everyone[i] = i;
+  std::vector<std::uint32_t> everyone(r.primaries);
+  std::iota(everyone.begin(), everyone.end(), 0u);
   r.before = shape_of(sim.particles(), everyone, r.initial_contacts);
+  choose_settle_window(r, extent_of(sim.particles()));
+  return prepared;
+}
 
-  // Settle criterion (docs/IMPACT.md). The automatic quiet window covers 50 contact periods and a
-  // tenth of the time the cluster needs to cross its own extent at the normal impact speed.
-  const double normal_speed = -dot(r.impact_velocity, wall.normal);
-  double extent = 0.0;  // diameter of the cluster's bounding sphere about its centre of mass
-  {
-    const Particles& p = sim.particles();
-    Vec3 centre;
-    for (std::size_t i = 0; i < n; ++i) centre += p.mass[i] * p.position[i];
-    centre = centre / total_mass;
-    for (std::size_t i = 0; i < n; ++i) extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
-  }
-  r.quiet_window = c.settle.quiet_window > 0.0
-                       ? c.settle.quiet_window
-                       : std::max(50.0 * r.time_step_estimate.period, 0.1 * extent / normal_speed);
-  if (!(r.quiet_window > 0.0) || !std::isfinite(r.quiet_window)) r.quiet_window = 1000.0 * r.time_step;
-  r.rest_speed = c.settle.rest_speed_fraction * c.speed;
-  SettleMonitor monitor(r.quiet_window, r.rest_speed);
+namespace {
 
+ImpactProgress progress_of(const Simulation& sim, double time_limit, double elapsed) {
+  ImpactProgress progress;
+  progress.time = sim.time();
+  progress.time_limit = time_limit;
+  progress.steps = sim.step_count();
+  progress.steps_per_second = static_cast<double>(sim.step_count()) / elapsed;
+  progress.particle_steps_per_second = progress.steps_per_second * static_cast<double>(sim.particles().size());
+  sim.contacts().for_each([&](const ContactState& contact) {
+    if (contact.with_wall)
+      ++progress.wall_contacts;
+    else
+      ++progress.contacts;
+  });
+  progress.fragments = find_fragments(sim).fragments.size();
+  progress.kinetic_energy = sim.energy().kinetic();
+  return progress;
+}
+
+// Steps the simulation until the monitor finds the outcome settled or the time limit comes,
+// writing snapshots and progress on the way; returns the wall-clock seconds it took.
+double run_until_settled(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options) {
+  ImpactResult& r = prepared.result;
+  Simulation& sim = *prepared.simulation;
+  const ImpactCase& c = r.impact_case;
   const double dt = sim.time_step();
   const auto limit_steps = static_cast<std::int64_t>(std::ceil(c.time_limit / dt - 1e-9));
   const std::int64_t check_steps = std::max<std::int64_t>(1, static_cast<std::int64_t>(r.quiet_window / dt / 20.0));
   const std::int64_t snapshot_steps =
       c.snapshot_interval > 0.0 ? std::max<std::int64_t>(1, std::llround(c.snapshot_interval / dt)) : 0;
   // Chunks between progress checks: about 1e6 particle-steps, and never past a check or snapshot.
-  const std::int64_t progress_steps = std::max<std::int64_t>(1, 1'000'000 / static_cast<std::int64_t>(n));
+  const std::int64_t progress_steps =
+      std::max<std::int64_t>(1, 1'000'000 / static_cast<std::int64_t>(sim.particles().size()));
 
   std::int64_t last_snapshot = -1;
   auto snapshot = [&] {
@@ -178,9 +258,7 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   std::int64_t next_snapshot = snapshot_steps > 0 ? snapshot_steps : limit_steps + 1;
   while (sim.step_count() < limit_steps) {
     const std::int64_t s = sim.step_count();
-    const std::int64_t target =
-        std::min({limit_steps, next_check, next_snapshot, s + progress_steps});
-    sim.run(target - s);
+    sim.run(std::min({limit_steps, next_check, next_snapshot, s + progress_steps}) - s);
     if (sim.step_count() == next_snapshot) {
       snapshot();
       next_snapshot += snapshot_steps;
@@ -191,84 +269,104 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
     }
     if (options.progress && seconds_since(last_progress) >= options.progress_seconds) {
       last_progress = Clock::now();
-      const double elapsed = seconds_since(start);
-      ImpactProgress progress;
-      progress.time = sim.time();
-      progress.time_limit = c.time_limit;
-      progress.steps = sim.step_count();
-      progress.steps_per_second = static_cast<double>(sim.step_count()) / elapsed;
-      progress.particle_steps_per_second = progress.steps_per_second * static_cast<double>(n);
-      sim.contacts().for_each([&](const ContactState& contact) {
-        if (contact.with_wall)
-          ++progress.wall_contacts;
-        else
-          ++progress.contacts;
-      });
-      progress.fragments = find_fragments(sim).fragments.size();
-      progress.kinetic_energy = sim.energy().kinetic();
-      options.progress(progress);
+      options.progress(progress_of(sim, c.time_limit, seconds_since(start)));
     }
   }
-  r.wall_clock_seconds = seconds_since(start);
+  const double seconds = seconds_since(start);
   snapshot();
+  return seconds;
+}
 
+// The run's counters, as the simulation left them.
+void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, double seconds) {
+  ImpactResult& r = prepared.result;
+  const Simulation& sim = *prepared.simulation;
+  r.wall_clock_seconds = seconds;
   r.steps = sim.step_count();
   r.simulated_time = sim.time();
   r.settled = monitor.settled();
+  r.settled_by = monitor.rule();
   r.settled_at = monitor.settled_at();
   r.quiet_since = monitor.quiet_since();
-  if (!r.settled) r.unsettled_reason = monitor.last_reason();
+  if (!r.settled) r.unsettled_reason = monitor.open_reason(sim);
   r.particle_steps_per_second =
-      r.wall_clock_seconds > 0.0 ? static_cast<double>(n) * static_cast<double>(r.steps) / r.wall_clock_seconds : 0.0;
+      seconds > 0.0 ? static_cast<double>(r.primaries) * static_cast<double>(r.steps) / seconds : 0.0;
   r.neighbor_builds = sim.neighbor_builds();
   r.pair_events = sim.pair_events();
-  r.pair_events.made -= pair_start.made;
-  r.pair_events.broken -= pair_start.broken;
+  r.pair_events.made -= prepared.pair_start.made;
+  r.pair_events.broken -= prepared.pair_start.broken;
   r.wall_events = sim.wall_events();
-  r.wall_events.made -= wall_start.made;
-  r.wall_events.broken -= wall_start.broken;
+  r.wall_events.made -= prepared.wall_start.made;
+  r.wall_events.broken -= prepared.wall_start.broken;
   r.final_energy = sim.energy();
+}
 
-  // Final analysis: fragments of the final contact graph.
-  // Settled: the judged state is the final one (the run stopped right after the judgement).
+// Restitution of the largest fragment: v_n after over |v_n| before, and along the impact's tangent.
+void measure_restitution(ImpactResult& r) {
+  r.rebound_velocity = r.fragment_final_velocity.front();
+  const double impact_normal = dot(r.impact_velocity, r.wall_normal);  // < 0
+  r.restitution_normal = -dot(r.rebound_velocity, r.wall_normal) / impact_normal;
+  const Vec3 tangential = r.impact_velocity - impact_normal * r.wall_normal;
+  const double tangential_speed = norm(tangential);
+  r.restitution_tangential = tangential_speed > 1e-12 * r.impact_case.speed
+                                 ? dot(r.rebound_velocity, tangential) / (tangential_speed * tangential_speed)
+                                 : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The final state: fragments of the final contact graph (settled: the judged state, which is the
+// final one, the run having stopped right after the judgement), outcome, restitution, compaction
+// of the largest fragment, damage and the small-strain check.
+void analyse_final_state(PreparedImpact& prepared, const SettleMonitor& monitor) {
+  ImpactResult& r = prepared.result;
+  const Simulation& sim = *prepared.simulation;
   const FragmentAnalysis end = r.settled ? monitor.judged_fragments() : find_fragments(sim);
   r.fragments = end.fragments;
   if (r.settled) r.fragment_mean_velocity = monitor.judged_mean_velocities();
-  std::size_t largest_contacts = 0;
-  sim.contacts().for_each([&](const ContactState& contact) {
-    if (contact.with_wall) {
-      ++r.final_wall_contacts;
-      return;
-    }
-    ++r.final_contacts;
-    if (end.fragment_of[contact.i] == 0) ++largest_contacts;
-  });
-  r.classification = classify(r.fragments, r.settled, c.largest_fragment_share);
+  r.fragment_final_velocity = r.fragment_mean_velocity;
+  if (!r.settled)
+    for (const Fragment& f : r.fragments) r.fragment_final_velocity.push_back(f.velocity);
+  r.classification =
+      classify(fates_of(r.fragments, r.fragment_final_velocity, r.wall_normal), r.settled, r.impact_case.thresholds);
+  measure_restitution(r);
 
-  // Restitution from the largest fragment's velocity averaged over the settling quiet window (a
-  // fragment stuck to the wall still vibrates), or its velocity at the end if it never settled.
-  const Fragment& largest = r.fragments.front();
-  const Vec3 rebound = r.settled ? r.fragment_mean_velocity.front() : largest.velocity;
-  const double impact_normal = dot(r.impact_velocity, wall.normal);  // < 0
-  r.restitution_normal = -dot(rebound, wall.normal) / impact_normal;
-  const Vec3 tangential = r.impact_velocity - impact_normal * wall.normal;
-  const double tangential_speed = norm(tangential);
-  r.restitution_tangential = tangential_speed > 1e-12 * c.speed
-                                 ? dot(rebound, tangential) / (tangential_speed * tangential_speed)
-                                 : std::numeric_limits<double>::quiet_NaN();
-  double on_wall = 0.0;
-  for (const Fragment& f : r.fragments) {
-    if (f.on_wall()) on_wall += f.mass;
-    r.fragment_translational_kinetic += 0.5 * f.mass * norm2(f.velocity);
-  }
-  r.mass_fraction_on_wall = on_wall / total_mass;
+  const auto final_contacts = contact_pairs(sim);
+  r.final_contacts = final_contacts.size();
+  r.final_wall_contacts = sim.contacts().size() - final_contacts.size();
+  r.initial_contacts_broken = missing_from(prepared.initial_contacts, final_contacts);
+  std::size_t largest_contacts = 0;
+  for (const auto& [i, j] : final_contacts)
+    if (end.fragment_of[i] == 0) ++largest_contacts;
+  for (const Fragment& f : r.fragments) r.fragment_translational_kinetic += 0.5 * f.mass * norm2(f.velocity);
 
   std::vector<std::uint32_t> members;
-  members.reserve(largest.size);
-  for (std::uint32_t i = 0; i < n; ++i)
+  members.reserve(r.fragments.front().size);
+  for (std::uint32_t i = 0; i < sim.particles().size(); ++i)
     if (end.fragment_of[i] == 0) members.push_back(i);
   r.after = shape_of(sim.particles(), members, largest_contacts);
-  return r;
+
+  DeepestOverlaps deepest;
+  if (r.initial_contacts + r.pair_events.made > 0) deepest.pair = sim.pair_events().deepest_overlap_ratio;
+  if (r.wall_events.made > 0) deepest.wall = sim.wall_events().deepest_overlap_ratio;
+  r.validity = check_small_strain(deepest, sim.particles(), sim.materials(), sim.walls().front(), sim.model());
+}
+
+}  // namespace
+
+ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
+  PreparedImpact prepared = prepare_impact(c, options);
+  if (options.log) {
+    const std::string setup = describe_setup(prepared.result);
+    for (std::size_t begin = 0, end; begin < setup.size(); begin = end + 1) {
+      end = setup.find('\n', begin);
+      options.log(setup.substr(begin, end - begin));
+    }
+  }
+  SettleMonitor monitor(prepared.result.quiet_window, prepared.result.rest_speed, c.thresholds,
+                        c.settle.stop_when_outcome_fixed);
+  const double seconds = run_until_settled(prepared, monitor, options);
+  record_run(prepared, monitor, seconds);
+  analyse_final_state(prepared, monitor);
+  return std::move(prepared.result);
 }
 
 }  // namespace aerobreak

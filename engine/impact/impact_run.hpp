@@ -1,7 +1,10 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/cluster/cluster.hpp"
 #include "engine/core/particles.hpp"
@@ -40,6 +43,24 @@ struct ImpactRunOptions {
 // source put them) and fills `relaxation`.
 Particles prepare_cluster(const ImpactCase& impact_case, RelaxationSummary& relaxation,
                           const std::function<void(const std::string&)>& log = {});
+
+// An impact set up and not yet run: the simulation before its first step, and the result with
+// its set-up filled in (the case, the cluster before, the time step, the initial contacts, the
+// contact energies and dimensionless groups, the settle window).
+struct PreparedImpact {
+  ImpactResult result;
+  std::unique_ptr<Simulation> simulation;
+  ContactEvents pair_start;  // the engine counts the bonds of the start as made: events count from here
+  ContactEvents wall_start;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> initial_contacts;  // (i < j), sorted
+  PreparedImpact();
+  PreparedImpact(PreparedImpact&&) noexcept;
+  ~PreparedImpact();
+};
+
+// Prepares the cluster, turns it to the seeded random orientation, places it `gap` above the wall
+// with every primary at the impact velocity and builds the simulation (docs/IMPACT.md section 3).
+PreparedImpact prepare_impact(const ImpactCase& impact_case, const ImpactRunOptions& options = {});
 
 // Runs one impact case end to end (docs/IMPACT.md): prepares the cluster, turns it to the seeded
 // random orientation, places it `gap` above the wall with every primary at the impact velocity,

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "engine/dem/simulation.hpp"
@@ -20,6 +20,15 @@ std::string number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", x);
   return buffer;
+}
+
+std::uint64_t all_events(const Simulation& simulation) {
+  return simulation.pair_events().made + simulation.pair_events().broken + simulation.wall_events().made +
+         simulation.wall_events().broken;
+}
+
+std::uint64_t wall_events(const Simulation& simulation) {
+  return simulation.wall_events().made + simulation.wall_events().broken;
 }
 
 }  // namespace
@@ -60,55 +69,143 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
   return {};
 }
 
-SettleMonitor::SettleMonitor(double quiet_window, double rest_speed)
-    : quiet_window_(quiet_window), rest_speed_(rest_speed) {
+std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
+                                const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
+                                double rest_speed, const OutcomeThresholds& thresholds) {
+  std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed);
+  if (!reason.empty()) return reason;
+  const Classification c = classify(fates_of(fragments, mean_velocity, wall_normal), true, thresholds);
+  if (c.outcome != ImpactOutcome::break_up) return "the state is a " + to_string(c.outcome) + ", not a break-up";
+  double mass = 0.0;
+  for (const Fragment& f : fragments) mass += f.mass;
+  for (std::size_t k = 0; k < fragments.size(); ++k)
+    if (fragments[k].on_wall() && fragments[k].mass >= thresholds.bounce_share * mass)
+      return describe_fragment(k, fragments[k]) + " on the wall could still leave as a bounce";
+  return {};
+}
+
+std::string to_string(SettleRule rule) { return rule == SettleRule::quiet ? "quiet" : "outcome_fixed"; }
+
+SettleMonitor::SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds,
+                             bool outcome_fixed_rule)
+    : quiet_window_(quiet_window), rest_speed_(rest_speed), thresholds_(thresholds),
+      outcome_fixed_rule_(outcome_fixed_rule) {
   if (!(quiet_window > 0.0)) throw std::invalid_argument("settle: quiet_window must be > 0");
   if (!(rest_speed >= 0.0)) throw std::invalid_argument("settle: rest_speed must be >= 0");
 }
 
-void SettleMonitor::start_window(const Simulation& simulation, std::uint64_t events) {
-  started_ = true;
-  events_ = events;
-  window_start_ = simulation.time();
-  positions_ = simulation.particles().position;
+SettleMonitor::Window SettleMonitor::open_window(const Simulation& simulation, bool with_deposit) const {
+  Window w;
+  w.start = simulation.time();
+  w.positions = simulation.particles().position;
+  w.events = with_deposit ? wall_events(simulation) : all_events(simulation);
+  if (!with_deposit) return w;
+  // The primaries of the fragments touching the wall, and their contacts among themselves.
+  const FragmentAnalysis now = find_fragments(simulation);
+  std::vector<char> on_wall(now.fragment_of.size(), 0);
+  for (std::uint32_t i = 0; i < now.fragment_of.size(); ++i)
+    if (now.fragments[now.fragment_of[i]].on_wall()) {
+      on_wall[i] = 1;
+      w.deposit.push_back(i);
+    }
+  simulation.contacts().for_each([&](const ContactState& c) {
+    if (!c.with_wall && on_wall[c.i] && on_wall[c.j]) w.deposit_contacts.emplace_back(std::min(c.i, c.j), std::max(c.i, c.j));
+  });
+  std::sort(w.deposit_contacts.begin(), w.deposit_contacts.end());
+  return w;
+}
+
+SettleMonitor::Judgement SettleMonitor::judge(const Simulation& simulation, const Window& window) const {
+  // Velocities are those of each fragment's present primaries, from their displacement over the
+  // window: a fragment stuck to the wall still vibrates.
+  Judgement j;
+  j.fragments = find_fragments(simulation);
+  const Particles& p = simulation.particles();
+  const Wall wall = simulation.walls().empty() ? Wall{} : simulation.walls().front();
+  j.wall_normal = wall.normal / norm(wall.normal);
+  const std::size_t count = j.fragments.fragments.size();
+  j.mean_velocity.assign(count, Vec3{});
+  j.lowest_gap_before.assign(count, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::uint32_t k = j.fragments.fragment_of[i];
+    j.mean_velocity[k] += p.mass[i] * (p.position[i] - window.positions[i]);
+    j.lowest_gap_before[k] =
+        std::min(j.lowest_gap_before[k], dot(window.positions[i] - wall.point, j.wall_normal) - p.radius[i]);
+  }
+  const double elapsed = simulation.time() - window.start;
+  for (std::size_t k = 0; k < count; ++k) j.mean_velocity[k] = j.mean_velocity[k] / (j.fragments.fragments[k].mass * elapsed);
+  return j;
+}
+
+void SettleMonitor::settle(const Simulation& simulation, SettleRule rule, const Window& window) {
+  settled_ = true;
+  rule_ = rule;
+  settled_at_ = simulation.time();
+  since_ = window.start;
+}
+
+bool SettleMonitor::judge_quiet(const Simulation& simulation) {
+  ++judgements_;
+  Judgement j = judge(simulation, quiet_);
+  last_reason_ = unsettled_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before, j.wall_normal, rest_speed_);
+  judged_ = std::move(j.fragments);
+  judged_mean_velocity_ = std::move(j.mean_velocity);
+  since_ = quiet_.start;
+  if (last_reason_.empty()) settle(simulation, SettleRule::quiet, quiet_);
+  return settled_;
+}
+
+bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
+  const Window now = open_window(simulation, true);
+  if (now.events != fixed_.events || now.deposit != fixed_.deposit || now.deposit_contacts != fixed_.deposit_contacts)
+    return false;
+  ++judgements_;
+  Judgement j = judge(simulation, fixed_);
+  const std::string reason = outcome_open_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before,
+                                                 j.wall_normal, rest_speed_, thresholds_);
+  if (!reason.empty()) return false;
+  last_reason_.clear();
+  judged_ = std::move(j.fragments);
+  judged_mean_velocity_ = std::move(j.mean_velocity);
+  settle(simulation, SettleRule::outcome_fixed, fixed_);
+  return true;
+}
+
+std::string SettleMonitor::open_reason(const Simulation& simulation) const {
+  std::string reason;
+  if (all_events(simulation) != quiet_.events)
+    reason = "contacts were still made or broken after t = " + number(quiet_.start);
+  else if (quiet_opened_by_change_)
+    reason = "contacts were still made or broken until about t = " + number(quiet_.start) +
+             ", less than a quiet window before the end";
+  else
+    reason = "the quiet window that began at t = " + number(quiet_.start) + " had not ended";
+  if (!last_reason_.empty()) reason += "; at the last judgement " + last_reason_;
+  return reason;
 }
 
 bool SettleMonitor::update(const Simulation& simulation) {
   if (settled_) return true;
-  const std::uint64_t events = simulation.pair_events().made + simulation.pair_events().broken +
-                               simulation.wall_events().made + simulation.wall_events().broken;
-  if (!started_ || events != events_) {
-    start_window(simulation, events);
+  if (!started_) {
+    started_ = true;
+    quiet_ = open_window(simulation, false);
+    fixed_ = open_window(simulation, true);
+    since_ = quiet_.start;
     return false;
   }
-  const double elapsed = simulation.time() - window_start_;
-  if (elapsed < quiet_window_) return false;
-
-  ++judgements_;
-  // No contact was made or broken in the window, so the fragments now are those at its start.
-  const FragmentAnalysis now = find_fragments(simulation);
-  const Particles& p = simulation.particles();
-  const Wall wall = simulation.walls().empty() ? Wall{} : simulation.walls().front();
-  const Vec3 n = wall.normal / norm(wall.normal);
-  std::vector<Vec3> mean_velocity(now.fragments.size());
-  std::vector<double> lowest_before(now.fragments.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const std::uint32_t k = now.fragment_of[i];
-    mean_velocity[k] += p.mass[i] * (p.position[i] - positions_[i]);
-    lowest_before[k] = std::min(lowest_before[k], dot(positions_[i] - wall.point, n) - p.radius[i]);
+  // The quiet rule first: when both would pass, the run is settled in the plain sense.
+  if (all_events(simulation) != quiet_.events) {
+    quiet_ = open_window(simulation, false);
+    quiet_opened_by_change_ = true;
+  } else if (simulation.time() - quiet_.start >= quiet_window_) {
+    if (judge_quiet(simulation)) return true;
+    quiet_ = open_window(simulation, false);
+    quiet_opened_by_change_ = false;
   }
-  for (std::size_t k = 0; k < now.fragments.size(); ++k)
-    mean_velocity[k] = mean_velocity[k] / (now.fragments[k].mass * elapsed);
-
-  last_reason_ = unsettled_reason(now.fragments, mean_velocity, lowest_before, n, rest_speed_);
-  judged_ = now;
-  judged_mean_velocity_ = mean_velocity;
-  if (last_reason_.empty()) {
-    settled_ = true;
-    settled_at_ = simulation.time();
-    return true;
+  if (outcome_fixed_rule_ && simulation.time() - fixed_.start >= quiet_window_) {
+    if (judge_outcome_fixed(simulation)) return true;
+    fixed_ = open_window(simulation, true);
   }
-  start_window(simulation, events);
   return false;
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/vec3.hpp"
 #include "engine/impact/fragments.hpp"
+#include "engine/impact/outcome.hpp"
 
 namespace aerobreak {
 
@@ -13,45 +15,93 @@ class Simulation;
 // The state judgement of the settle criterion (docs/IMPACT.md): empty when every fragment is
 // either resting on the wall or off it and moving away, and no two fragments can still meet;
 // otherwise one sentence saying which fragment is not. `mean_velocity[k]` is fragment k's
-// centre-of-mass velocity averaged over the quiet window, `lowest_gap_before[k]` its lowest gap to
+// centre-of-mass velocity averaged over the window, `lowest_gap_before[k]` its lowest gap to
 // the wall at the window's start, `rest_speed` the largest mean normal speed that counts as rest.
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                              const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
                              double rest_speed);
 
-// Watches a running impact and says when its outcome is settled: no contact (particle-particle or
-// wall) has been made or broken for `quiet_window`, and then unsettled_reason() finds nothing. If
-// the judgement fails, a new window starts. Call update() between steps as often as wished.
+// The state judgement of the outcome-fixed rule (docs/IMPACT.md section 4): empty when the state
+// passes unsettled_reason, is a break-up, and no fragment on the wall holds the bounce share of
+// the mass (so no later lift-off can make it a bounce); otherwise why not. Fragments off the wall
+// may still split, which leaves a break-up a break-up.
+std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
+                                const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
+                                double rest_speed, const OutcomeThresholds& thresholds);
+
+// Which rule found a run settled.
+enum class SettleRule {
+  quiet,          // no contact made or broken anywhere for a window, then unsettled_reason empty
+  outcome_fixed,  // the deposit unchanged for a window, then outcome_open_reason empty
+};
+std::string to_string(SettleRule rule);
+
+// Watches a running impact and says when its outcome is settled, by either rule (docs/IMPACT.md
+// section 4):
+//  - quiet: no contact (particle-particle or wall) has been made or broken for `quiet_window`,
+//    and then unsettled_reason() finds nothing;
+//  - outcome fixed (unless turned off): over a window of the same length no wall contact was made
+//    or broken and the primaries on the wall kept the same contacts among themselves (contacts
+//    inside fragments in flight may change), and then outcome_open_reason() finds nothing.
+// A window whose judgement fails is followed by a new one. Call update() between steps as often
+// as wished.
 class SettleMonitor {
  public:
-  SettleMonitor(double quiet_window, double rest_speed);
+  SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds = {},
+                bool outcome_fixed_rule = true);
 
   bool update(const Simulation& simulation);
 
   bool settled() const { return settled_; }
+  SettleRule rule() const { return rule_; }
   double settled_at() const { return settled_at_; }        // time of the successful judgement
-  double quiet_since() const { return window_start_; }     // start of the last quiet window
+  double quiet_since() const { return since_; }            // start of its window (else of the last quiet one)
   const std::string& last_reason() const { return last_reason_; }  // why the last judgement failed
+  // Why a run that ends now is not settled: contacts still changing, and the last objection.
+  std::string open_reason(const Simulation& simulation) const;
   std::uint64_t judgements() const { return judgements_; }
   // The fragments of the last judgement and their centre-of-mass velocities averaged over its
-  // quiet window (after a successful one: the settled state).
+  // window (after a successful one: the settled state).
   const FragmentAnalysis& judged_fragments() const { return judged_; }
   const std::vector<Vec3>& judged_mean_velocities() const { return judged_mean_velocity_; }
   double quiet_window() const { return quiet_window_; }
   double rest_speed() const { return rest_speed_; }
 
  private:
-  void start_window(const Simulation& simulation, std::uint64_t events);
+  // A window: when it began, the positions then, the contact events counted then, and (for the
+  // outcome-fixed rule) the primaries on the wall and their contacts among themselves.
+  struct Window {
+    double start = 0.0;
+    std::vector<Vec3> positions;
+    std::uint64_t events = 0;
+    std::vector<std::uint32_t> deposit;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> deposit_contacts;
+  };
+  struct Judgement {
+    FragmentAnalysis fragments;
+    std::vector<Vec3> mean_velocity;
+    std::vector<double> lowest_gap_before;
+    Vec3 wall_normal;
+  };
+  Window open_window(const Simulation& simulation, bool with_deposit) const;
+  Judgement judge(const Simulation& simulation, const Window& window) const;
+  bool judge_quiet(const Simulation& simulation);
+  bool judge_outcome_fixed(const Simulation& simulation);
+  void settle(const Simulation& simulation, SettleRule rule, const Window& window);
 
   double quiet_window_;
   double rest_speed_;
+  OutcomeThresholds thresholds_;
+  bool outcome_fixed_rule_;
   bool started_ = false;
   bool settled_ = false;
+  SettleRule rule_ = SettleRule::quiet;
   double settled_at_ = 0.0;
-  double window_start_ = 0.0;
-  std::uint64_t events_ = 0;
+  double since_ = 0.0;
   std::uint64_t judgements_ = 0;
-  std::vector<Vec3> positions_;  // at the window's start
+  Window quiet_;
+  bool quiet_opened_by_change_ = false;  // the quiet window began because contacts changed
+  Window fixed_;
   std::string last_reason_;
   FragmentAnalysis judged_;
   std::vector<Vec3> judged_mean_velocity_;

@@ -1,5 +1,6 @@
 #include "orchestrator/cli/impact_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,16 @@ void print_progress(const ImpactProgress& p) {
                p.kinetic_energy);
 }
 
+// Each line of `text` on stderr, after "impact: ".
+void print_lines(const std::string& text) {
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    std::fprintf(stderr, "impact: %s\n", text.substr(begin, end - begin).c_str());
+    begin = end + 1;
+  }
+}
+
 int run_command(const ImpactOptions& o) {
   ImpactCase impact_case;
   try {
@@ -129,6 +140,7 @@ int run_command(const ImpactOptions& o) {
     DocumentFile output(o.output);
     if (o.check) {
       output.write(impact_case.document);
+      print_lines(describe_setup(prepare_impact(impact_case).result));
       return 0;
     }
     TrajectoryFiles files(o);
@@ -173,7 +185,8 @@ void add_impact_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   impact->add_flag("--check", options->check,
-                   "Only validate the case and write it completed with its defaults (no run)");
+                   "Only validate the case, write it completed with its defaults, and print (stderr) the time "
+                   "unit, time step, lambda and energy groups of its set-up (no run)");
   impact->callback([options, &exit_code] { exit_code = run_command(*options); });
 }
 

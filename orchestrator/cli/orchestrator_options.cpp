@@ -27,6 +27,16 @@ void OrchestratorOptions::add_to(CLI::App& command) {
   command.add_option("--idle-shutdown", idle_shutdown, "Seconds an idle worker job waits for work before it stops")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  web_directory = default_web_directory().string();
+  command.add_option("--web-dir", web_directory, "The dashboard's folder, served at / (empty: the API only)")
+      ->capture_default_str();
+}
+
+ServiceOptions OrchestratorOptions::service_options() const {
+  ServiceOptions options;
+  options.web_directory = web_directory;
+  options.data_directory = std::filesystem::absolute(data_directory());
+  return options;
 }
 
 std::filesystem::path OrchestratorOptions::data_directory() const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "orchestrator/scheduler/scheduler.hpp"
+#include "orchestrator/service/service.hpp"
 
 namespace aerobreak {
 
@@ -21,10 +22,13 @@ struct OrchestratorOptions {
   int ranks = 0;     // 0: the machine's cores
   std::vector<std::string> launcher_arguments;
   double idle_shutdown = 10.0;  // seconds
+  std::string web_directory;    // the dashboard's folder; default: the source tree's web/
 
   void add_to(CLI::App& command);
   std::filesystem::path data_directory() const;
   SchedulerOptions scheduler_options(std::function<void(const std::string&)> log) const;
+  // Service options with the dashboard's folder and the data folder (case files) set.
+  ServiceOptions service_options() const;
 };
 
 // SIGINT and SIGTERM, blocked in the constructing thread (construct it before starting any thread,

@@ -25,6 +25,22 @@ std::string probability(const nlohmann::ordered_json& estimate) {
   return text;
 }
 
+std::string fraction(const nlohmann::ordered_json& value) {
+  if (!value.is_number()) return "-";
+  char text[16];
+  std::snprintf(text, sizeof text, "%.3f", value.get<double>());
+  return text;
+}
+
+// Results flagged outside the small-strain range, and "(+k unchecked)" for results without the
+// check.
+std::string flagged(const nlohmann::ordered_json& point) {
+  std::string text = std::to_string(point.at("small_strain_exceeded").get<long long>());
+  const auto unchecked = point.at("small_strain_unchecked").get<long long>();
+  if (unchecked > 0) text += " (+" + std::to_string(unchecked) + " unchecked)";
+  return text;
+}
+
 }  // namespace
 
 std::string format_outcome_table(const nlohmann::ordered_json& table) {
@@ -33,7 +49,8 @@ std::string format_outcome_table(const nlohmann::ordered_json& table) {
   std::vector<std::string> header;
   if (!points.empty())
     for (const auto& [axis, value] : points[0].at("grid_point").items()) header.push_back(axis);
-  for (const char* column : {"n", "P(stick) 95% CI", "P(bounce) 95% CI", "P(break-up) 95% CI", "undetermined", "failed"})
+  for (const char* column : {"n", "P(stick) 95% CI", "P(bounce) 95% CI", "P(break-up) 95% CI", "undetermined", "failed",
+                             "retained", "fractured on wall", "large strain"})
     header.push_back(column);
   rows.push_back(header);
   for (const auto& point : points) {
@@ -46,6 +63,9 @@ std::string format_outcome_table(const nlohmann::ordered_json& table) {
     row.push_back(probability(outcomes.at("break-up")));
     row.push_back(std::to_string(outcomes.at("undetermined").at("count").get<long long>()));
     row.push_back(std::to_string(point.at("failed").get<long long>()));
+    row.push_back(fraction(point.at("retained_mass_fraction_mean")));
+    row.push_back(std::to_string(point.at("fractured_on_wall").get<long long>()));
+    row.push_back(flagged(point));
     rows.push_back(row);
   }
   std::vector<std::size_t> widths(header.size(), 0);

@@ -6,7 +6,9 @@ namespace aerobreak {
 
 // The outcome table of a study (the JSON of GET /api/studies/ID/outcomes) as aligned text: one row
 // per grid point, its axis values, the finished cases n, and P(stick), P(bounce), P(break-up)
-// with their 95 % Wilson intervals, then the undetermined and failed counts.
+// with their 95 % Wilson intervals, then the undetermined and failed counts, the mean retained
+// mass fraction, the results whose deposit is in pieces and those flagged outside the
+// small-strain range.
 std::string format_outcome_table(const nlohmann::ordered_json& table);
 
 }  // namespace aerobreak

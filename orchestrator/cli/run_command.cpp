@@ -75,11 +75,8 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_line_{};
 };
 
-std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, int port,
-                                       std::function<void(const std::string&)> access_log) {
-  ServiceOptions options;
-  options.port = port;
-  options.access_log = std::move(access_log);
+std::unique_ptr<Service> start_service(Store& store, Scheduler& scheduler, ServiceOptions options) {
+  const int port = options.port;
   auto service = std::make_unique<Service>(store, &scheduler, options);
   try {
     service->start();
@@ -122,7 +119,10 @@ int run(RunOptions options) {
   DataFileChecker checker;
   recompute_lost_data_files(submission, store, checker);
   const auto receipt = store.submit_study(submission);
-  const auto service = start_service(store, scheduler, options.port, log);
+  ServiceOptions service_options = options.orchestrator.service_options();
+  service_options.port = options.port;
+  service_options.access_log = log;
+  const auto service = start_service(store, scheduler, service_options);
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
@@ -130,7 +130,8 @@ int run(RunOptions options) {
             << " already done" << (receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "")
             << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
-            << "aerobreak run: service: " << study_url << "  (outcomes: " << study_url << "/outcomes)\n";
+            << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
+            << " in a browser (API: " << study_url << ")\n";
 
   const auto started = std::chrono::steady_clock::now();
   ProgressBar bar;

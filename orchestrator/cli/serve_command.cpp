@@ -63,7 +63,7 @@ int serve(const ServeOptions& options) {
   Store store(options.orchestrator.store);
   const auto log = line_log({});
   Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
-  ServiceOptions service_options;
+  ServiceOptions service_options = options.orchestrator.service_options();
   service_options.host = options.host;
   service_options.port = options.port;
   service_options.connections.max_connections = options.max_connections;
@@ -75,7 +75,7 @@ int serve(const ServeOptions& options) {
   service.start();
   if (!options.port_file.empty()) write_port_file(options.port_file, service.port());
   scheduler.start();
-  std::cerr << "aerobreak serve: " << service.url() << "  (store " << store.file().string() << ", schema version "
+  std::cerr << "aerobreak serve: " << service.url() << "/  (store " << store.file().string() << ", schema version "
             << store.schema_version() << "; workers: " << scheduler.status().launcher_command << ")" << std::endl;
   const int received = signals.wait();
   std::cerr << "aerobreak serve: " << (received == SIGINT ? "SIGINT" : "SIGTERM")

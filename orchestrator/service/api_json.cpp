@@ -69,7 +69,14 @@ nlohmann::ordered_json to_json(const ResultRecord& record) {
           {"restitution", optional_json(record.restitution)},
           {"largest_fragment_share", optional_json(record.largest_fragment_share)},
           {"fragment_count", optional_json(record.fragment_count)},
-          {"mass_fraction_on_wall", optional_json(record.mass_fraction_on_wall)},
+          {"retained_mass_fraction", optional_json(record.retained_mass_fraction)},
+          {"reentrained_mass_fraction", optional_json(record.reentrained_mass_fraction)},
+          {"damage_ratio", optional_json(record.damage_ratio)},
+          {"fractured_on_wall", optional_json(record.fractured_on_wall)},
+          {"small_strain_exceeded", optional_json(record.small_strain_exceeded)},
+          {"energy_per_contact", optional_json(record.energy_per_contact)},
+          {"energy_over_rolling", optional_json(record.energy_over_rolling)},
+          {"initial_contacts", optional_json(record.initial_contacts)},
           {"impact_energy", optional_json(record.impact_energy)},
           {"wall_clock_seconds", optional_json(record.wall_clock_seconds)},
           {"data_file", optional_json(record.data_file)},
@@ -133,24 +140,32 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
           {"recomputed", receipt.recomputed}};
 }
 
+nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {
+  const std::size_t finished = cell.finished();
+  nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
+  for (const auto& [outcome, count] : cell.outcomes) {
+    const auto estimate = wilson_interval(count, finished);
+    outcomes[outcome] = {{"count", count},
+                         {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
+                         {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
+                                           : nlohmann::ordered_json(nullptr)}};
+  }
+  return {{"grid_point", cell.grid_point},
+          {"cases", cell.cases},
+          {"finished", finished},
+          {"failed", cell.failed},
+          {"outcomes", outcomes},
+          {"retained_mass_fraction_mean", optional_json(cell.mean_retained_mass_fraction)},
+          {"damage_ratio_mean", optional_json(cell.mean_damage_ratio)},
+          {"energy_per_contact_mean", optional_json(cell.mean_energy_per_contact)},
+          {"fractured_on_wall", cell.fractured_on_wall},
+          {"small_strain_exceeded", cell.small_strain_exceeded},
+          {"small_strain_unchecked", cell.small_strain_unchecked}};
+}
+
 nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (const auto& cell : cells) {
-    const std::size_t finished = cell.finished();
-    nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
-    for (const auto& [outcome, count] : cell.outcomes) {
-      const auto estimate = wilson_interval(count, finished);
-      outcomes[outcome] = {{"count", count},
-                           {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-                           {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
-                                             : nlohmann::ordered_json(nullptr)}};
-    }
-    rows.push_back({{"grid_point", cell.grid_point},
-                    {"cases", cell.cases},
-                    {"finished", finished},
-                    {"failed", cell.failed},
-                    {"outcomes", outcomes}});
-  }
+  for (const auto& cell : cells) rows.push_back(grid_point_outcomes_json(cell));
   return {{"confidence", 0.95}, {"interval", "wilson"}, {"grid_points", rows}};
 }
 

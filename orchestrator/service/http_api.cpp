@@ -9,12 +9,14 @@
 #include "engine/core/version.hpp"
 #include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/dashboard_endpoints.hpp"
 #include "orchestrator/service/error_answers.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/service/json_body.hpp"
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/service/web_endpoints.hpp"
 
 namespace aerobreak {
 namespace {
@@ -158,6 +160,8 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
     for (const auto& job : store.jobs(limit)) items.push_back(to_json(job));
     send_json(response, 200, {{"items", items}});
   }));
+  register_dashboard_endpoints(server, store, options);
+  register_web_endpoints(server, options);
 }
 
 }  // namespace aerobreak

@@ -19,6 +19,8 @@ bool is_loopback_host(const std::string& host) {
   return ::inet_pton(AF_INET, host.c_str(), &address) == 1 && (ntohl(address.s_addr) >> 24) == 127;
 }
 
+std::filesystem::path default_web_directory() { return AEROBREAK_WEB_DIR; }
+
 Service::Service(Store& store, Scheduler* scheduler, ServiceOptions options)
     : store_(store), scheduler_(scheduler), options_(std::move(options)) {}
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <atomic>
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -33,7 +34,16 @@ struct ServiceOptions {
   ConnectionLimits connections;
   // Gets one line per request (client, method, target, status, milliseconds); null: no log.
   std::function<void(const std::string&)> access_log;
+  // The dashboard's folder (web_assets.hpp): served at `/` with the library files it names; empty:
+  // the API only.
+  std::filesystem::path web_directory;
+  // The folder of the case HDF5 files (STORE.data): GET /api/cases/ID/data serves a case's file only
+  // from under it; empty: no such downloads.
+  std::filesystem::path data_directory;
 };
+
+// The source tree's web/ folder, compiled in (the default of --web-dir).
+std::filesystem::path default_web_directory();
 
 // True for 127.0.0.0/8, ::1 and "localhost".
 bool is_loopback_host(const std::string& host);

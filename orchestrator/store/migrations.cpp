@@ -3,6 +3,8 @@
 #include <array>
 #include <string>
 
+#include "orchestrator/store/outcome_migration.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -103,15 +105,32 @@ CREATE TABLE fragments (
 ) WITHOUT ROWID;
 )sql";
 
-// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+// Outcomes decided by what leaves the wall (docs/IMPACT.md section 5): the fraction left on the
+// wall is the retained one; the re-entrained fraction, whether the deposit is in pieces, the
+// damage ratio, the small-strain flag and the energy groups come with every result. Stored
+// results are classified again from their fragments (reclassify_stored_results).
 constexpr std::string_view kVersion2 = R"sql(
+ALTER TABLE results RENAME COLUMN mass_fraction_on_wall TO retained_mass_fraction;
+ALTER TABLE results ADD COLUMN reentrained_mass_fraction REAL;
+ALTER TABLE results ADD COLUMN damage_ratio REAL;
+ALTER TABLE results ADD COLUMN fractured_on_wall INTEGER CHECK (fractured_on_wall IN (0, 1));
+ALTER TABLE results ADD COLUMN small_strain_exceeded INTEGER CHECK (small_strain_exceeded IN (0, 1));
+ALTER TABLE results ADD COLUMN energy_per_contact REAL;
+ALTER TABLE results ADD COLUMN energy_over_rolling REAL;
+ALTER TABLE results ADD COLUMN initial_contacts INTEGER;
+)sql";
+
+// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+constexpr std::string_view kVersion3 = R"sql(
 ALTER TABLE results ADD COLUMN data_file_size INTEGER;
 ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
 )sql";
 
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
-    Migration{2, "size and SHA-256 of each result's data file", kVersion2},
+    Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
+              kVersion2, reclassify_stored_results},
+    Migration{3, "size and SHA-256 of each result's data file", kVersion3},
 };
 
 int user_version(SqliteDatabase& db) {
@@ -137,6 +156,7 @@ int migrate_store(SqliteDatabase& db) {
     if (step.version <= found) continue;
     SqliteTransaction transaction(db);
     db.execute(step.sql);
+    if (step.upgrade) step.upgrade(db);
     db.execute("PRAGMA user_version = " + std::to_string(step.version));
     transaction.commit();
   }

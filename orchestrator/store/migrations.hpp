@@ -6,12 +6,14 @@
 
 namespace aerobreak {
 
-// One step of the store's schema: applying `sql` to a database at version - 1 brings it to
-// `version`. Steps are never edited once released; a change is a new step.
+// One step of the store's schema: applying `sql`, then `upgrade` (what SQL alone cannot do; null
+// for none), to a database at version - 1 brings it to `version`. Steps are never edited once
+// released; a change is a new step.
 struct Migration {
   int version;
   std::string_view summary;
   std::string_view sql;
+  void (*upgrade)(SqliteDatabase& db) = nullptr;
 };
 
 std::span<const Migration> store_migrations();

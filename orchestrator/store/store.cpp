@@ -218,6 +218,14 @@ const nlohmann::ordered_json& member(const nlohmann::ordered_json& object, const
   return found == object.end() ? null : *found;
 }
 
+std::optional<std::int64_t> optional_integer(const nlohmann::ordered_json& value) {
+  return value.is_number_integer() ? std::optional(value.get<std::int64_t>()) : std::nullopt;
+}
+
+std::optional<int> optional_flag(const nlohmann::ordered_json& value) {
+  return value.is_boolean() ? std::optional(value.get<bool>() ? 1 : 0) : std::nullopt;
+}
+
 // The summary columns of a result document (schemas/result.schema.json); the document itself is
 // stored whole beside them.
 void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
@@ -225,17 +233,25 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
   const auto& outcome = member(result, "outcome");
   const auto& outcome_class = member(outcome, "class");
   if (!outcome_class.is_string()) throw std::invalid_argument("result document without /outcome/class");
-  const auto& fragment_count = member(outcome, "fragment_count");
+  const auto& dimensionless = member(result, "dimensionless");
+  const auto& small_strain = member(member(result, "validity"), "small_strain");
   auto statement = db.prepare(
       "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
-      "mass_fraction_on_wall, impact_energy, wall_clock_seconds, data_file, document, committed_at, data_file_size, "
-      "data_file_sha256) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "retained_mass_fraction, reentrained_mass_fraction, damage_ratio, fractured_on_wall, small_strain_exceeded, "
+      "energy_per_contact, energy_over_rolling, initial_contacts, impact_energy, wall_clock_seconds, data_file, "
+      "document, committed_at, data_file_size, data_file_sha256) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   statement.bind_all(case_id, attempt, outcome_class.get<std::string>(),
                      optional_number(member(member(outcome, "restitution"), "normal")),
                      optional_number(member(outcome, "largest_fragment_share")),
-                     fragment_count.is_number_integer() ? std::optional(fragment_count.get<std::int64_t>())
-                                                        : std::nullopt,
-                     optional_number(member(outcome, "mass_fraction_on_wall")),
+                     optional_integer(member(outcome, "fragment_count")),
+                     optional_number(member(outcome, "retained_mass_fraction")),
+                     optional_number(member(outcome, "reentrained_mass_fraction")),
+                     optional_number(member(outcome, "damage_ratio")), optional_flag(member(outcome, "fractured_on_wall")),
+                     small_strain.is_boolean() ? std::optional(small_strain.get<bool>() ? 0 : 1) : std::nullopt,
+                     optional_number(member(dimensionless, "energy_per_contact")),
+                     optional_number(member(dimensionless, "energy_over_rolling")),
+                     optional_integer(member(dimensionless, "initial_contacts")),
                      optional_number(member(member(result, "setup"), "impact_kinetic_energy")), wall_clock_seconds,
                      data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now,
                      digest.size >= 0 && !data_file.empty() ? std::optional(digest.size) : std::nullopt,

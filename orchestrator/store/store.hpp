@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "orchestrator/store/sqlite_database.hpp"
@@ -83,8 +84,17 @@ class Store {
   std::optional<StudyRecord> study(std::int64_t study_id);
   std::optional<StudyProgress> progress(std::int64_t study_id);
   Page<CaseRecord> cases(std::int64_t study_id, std::optional<CaseStatus> status, const PageRequest& page);
+  Page<CaseRecord> cases(std::int64_t study_id, const CaseFilter& filter, const PageRequest& page);
   Page<ResultRecord> results(std::int64_t study_id, std::optional<std::string> outcome, const PageRequest& page);
   std::vector<GridPointOutcomes> outcomes(std::int64_t study_id);
+  // Per grid point, in submission order: the outcome counts and the moments of the results'
+  // scalar quantities (store_grid_queries.cpp).
+  std::vector<GridPointStatistics> grid_statistics(std::int64_t study_id);
+  // The study's grid points (key and axis values), in submission order.
+  std::vector<std::pair<std::string, nlohmann::ordered_json>> grid_points(std::int64_t study_id);
+  // Fragments of the results at the given grid points, counted per grid point and size (grid
+  // points without a result are left out).
+  std::vector<GridPointFragments> fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
   std::vector<JobRecord> jobs(std::size_t limit);
   // The data files, with their recorded size and checksum, of the done cases among `hashes`.

@@ -106,6 +106,17 @@ struct CaseRecord {
   nlohmann::ordered_json grid_point;
   int replicate = 0;
   std::optional<std::string> outcome;
+  // From the case's result, when it has one.
+  std::optional<double> restitution;
+  std::optional<double> retained_mass_fraction;
+  std::optional<std::int64_t> fragment_count;
+};
+
+// Which of a study's cases to list: each condition that is set must hold.
+struct CaseFilter {
+  std::optional<CaseStatus> status;
+  std::optional<std::string> outcome;                 // stick | bounce | break-up | undetermined
+  std::optional<std::vector<std::string>> grid_keys;  // only these grid points (StudySubmission::Case::grid_key)
 };
 
 struct ResultRecord {
@@ -118,7 +129,14 @@ struct ResultRecord {
   std::optional<double> restitution;
   std::optional<double> largest_fragment_share;
   std::optional<std::int64_t> fragment_count;
-  std::optional<double> mass_fraction_on_wall;
+  std::optional<double> retained_mass_fraction;
+  std::optional<double> reentrained_mass_fraction;
+  std::optional<double> damage_ratio;
+  std::optional<bool> fractured_on_wall;
+  std::optional<bool> small_strain_exceeded;  // null: not checked (results migrated from an older store)
+  std::optional<double> energy_per_contact;
+  std::optional<double> energy_over_rolling;
+  std::optional<std::int64_t> initial_contacts;
   std::optional<double> impact_energy;
   std::optional<double> wall_clock_seconds;
   std::optional<std::string> data_file;
@@ -161,13 +179,47 @@ struct StoredDataFile {
   DataFileDigest digest;
 };
 
-// Outcome counts of the finished cases at one grid point of a study.
+// Outcome counts of the finished cases at one grid point of a study, and what their results say
+// about the deposit, the damage and the small-strain range.
 struct GridPointOutcomes {
+  std::string grid_key;
   nlohmann::ordered_json grid_point;
   std::size_t cases = 0;  // all replicates, whatever their status
   std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
   std::size_t failed = 0;
   std::size_t finished() const;                 // cases with a result
+  std::optional<double> mean_retained_mass_fraction;  // over the results (nullopt: none)
+  std::optional<double> mean_damage_ratio;            // over the results that have one
+  std::optional<double> mean_energy_per_contact;      // over the results that have one
+  std::size_t fractured_on_wall = 0;        // results whose deposit is in pieces
+  std::size_t small_strain_exceeded = 0;    // results flagged outside the small-strain range
+  std::size_t small_strain_unchecked = 0;   // results without the check (migrated from an older store)
+};
+
+// Count, sum and sum of squares of one result quantity over the results that have it.
+struct Moments {
+  std::size_t count = 0;
+  double sum = 0.0;
+  double sum_of_squares = 0.0;
+};
+
+// One grid point of a study: its outcome counts and the moments of the results' scalar quantities.
+struct GridPointStatistics {
+  GridPointOutcomes outcomes;
+  Moments retained_mass_fraction;
+  Moments restitution;
+  Moments fragment_count;
+  Moments largest_fragment_share;
+  Moments damage_ratio;
+  Moments energy_per_contact;
+};
+
+// The fragments that the results of one grid point left: how many results, and for each fragment
+// size (primaries) how many fragments of that size in all.
+struct GridPointFragments {
+  std::string grid_key;
+  std::size_t results = 0;
+  std::vector<std::pair<std::int64_t, std::size_t>> sizes;  // (primaries, fragments), by size
 };
 
 struct JobRecord {

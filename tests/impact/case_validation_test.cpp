@@ -52,7 +52,7 @@ TEST_CASE("a minimal case loads and the schema's defaults are completed") {
   CHECK(c.document["cluster"]["generator"]["method"] == "ballistic");
   CHECK(c.model.normal == NormalLaw::jkr);
   CHECK(c.model.friction == 0.5);
-  CHECK(c.largest_fragment_share == 0.9);
+  CHECK(c.thresholds.bounce_share == 0.9);
   CHECK(c.angle_degrees == 0.0);
   CHECK(c.gap == 0.01);
   CHECK(c.cluster.primaries == 8);
@@ -98,8 +98,25 @@ TEST_CASE("invalid cases are rejected with errors that name the field") {
     CHECK(names(rejection(c), "/impact/speed", "must be a number"));
   }
   SECTION("a missing required field") {
+    c["impact"].erase("speed");
+    CHECK(names(rejection(c), "/impact/speed", "is required"));
+  }
+  SECTION("a missing time limit: one of time_limit (tau) or time_limit_s is required") {
     c["run"].erase("time_limit");
-    CHECK(names(rejection(c), "/run/time_limit", "is required"));
+    CHECK(names(rejection(c), "/run", "/run/time_limit: is required"));
+    CHECK(names(rejection(c), "/run", "/run/time_limit_s: is required"));
+  }
+  SECTION("both time limits") {
+    c["run"]["time_limit_s"] = 1e-6;
+    CHECK(names(rejection(c), "/run", "exactly one"));
+  }
+  SECTION("a time limit in seconds in a reduced case") {
+    c["run"] = {{"time_limit_s", 1e-6}};
+    CHECK(names(rejection(c), "/run/time_limit_s", "needs \"units\": \"physical\""));
+  }
+  SECTION("a bounce share that would let two pieces both hold it") {
+    c["classification"] = {{"largest_fragment_share", 0.5}};
+    CHECK(names(rejection(c), "/classification/largest_fragment_share", "must be > 0.5"));
   }
   SECTION("a value outside the enumeration") {
     c["model"] = {{"normal", "jkr2"}};
@@ -185,6 +202,22 @@ TEST_CASE("physical units keep gamma/k_n and lambda (eq 19)") {
   CHECK_THAT(p.speed, WithinRel(1.0 / p.physical->speed_unit(), 1e-12));
   CHECK_THAT(adhesion_energy_ratio(p.material, 1.0, p.speed), WithinRel(adhesion_energy_ratio(si, 2e-8, 1.0), 1e-9));
   CHECK(p.document["material"]["softening"] == 0.01);
+}
+
+TEST_CASE("a physical case may give its time limit in seconds") {
+  Json c = testing::minimal_case();
+  c["units"] = "physical";
+  c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0},
+                   {"surface_energy", 0.05},   {"diameter", 2e-8}};
+  c["impact"]["speed"] = 1.0;
+  c["run"] = {{"time_limit_s", 2e-8}};
+  const ImpactCase p = parse_impact_case(c);
+  REQUIRE(p.physical);
+  // tau = sqrt(m/k_n): m = rho pi d^3/6, k_n = E d/(3 (1 - nu^2)) (eq 7).
+  const double mass = 1725.0 * std::numbers::pi * 8e-24 / 6.0;
+  const double tau = std::sqrt(mass / (2.5e10 * 2e-8 / (3.0 * 0.91)));
+  CHECK_THAT(p.time_limit, WithinRel(2e-8 / tau, 1e-12));
+  CHECK_FALSE(p.document["run"].contains("time_limit"));
 }
 
 TEST_CASE("the schema validator refuses keywords it does not implement") {

@@ -1,5 +1,5 @@
-// Fragments (connected components of the contact graph), the outcome rule and the settle
-// judgement on constructed states with known answers.
+// Fragments (connected components of the contact graph), the outcome rule (by what leaves the
+// wall) and the settle judgements on constructed states with known answers.
 #include <catch2/catch.hpp>
 
 #include <numbers>
@@ -91,33 +91,109 @@ TEST_CASE("two separate clusters are two fragments, joined they are one") {
   CHECK(find_fragments(p, contacts, {}, Wall{}).fragments.size() == 1);
 }
 
-TEST_CASE("the outcome rule: break-up below the share threshold, else stick on the wall, bounce off it") {
-  SECTION("stick") {
-    const auto c = classify({fragment(95, true, 0.0), fragment(5, false, 0.1)}, true);
+namespace {
+
+// `primaries` primaries of `mass_each`, on the wall at rest or off it moving away.
+FragmentFate fate(std::size_t primaries, bool on_wall, double mass_each = 1.0) {
+  return {primaries, mass_each * static_cast<double>(primaries), on_wall, on_wall ? 0.0 : 0.1, on_wall ? 0.0 : 0.1};
+}
+
+constexpr bool settled = true;
+
+}  // namespace
+
+TEST_CASE("the outcome rule decides by what leaves the wall") {
+  SECTION("stick: nothing leaves the wall") {
+    const Classification c = classify({fate(100, true)}, settled);
     CHECK(c.outcome == ImpactOutcome::stick);
-    CHECK_THAT(c.largest_fragment_share, WithinRel(0.95, 1e-14));
+    CHECK_FALSE(c.fractured_on_wall);
+    CHECK(c.retained_mass_fraction == 1.0);
+    CHECK(c.reentrained_mass_fraction == 0.0);
+    CHECK(c.reentrained.empty());
+    CHECK(c.largest_reentrained_share == 0.0);
   }
-  SECTION("bounce") {
-    CHECK(classify({fragment(100, false, 0.02)}, true).outcome == ImpactOutcome::bounce);
+  SECTION("stick: a deposit cracked into pieces on the wall is still a stick, fractured on the wall") {
+    // The former rule called this a break-up: the largest piece holds 60 % of the primaries.
+    const Classification c = classify({fate(60, true), fate(30, true), fate(10, true)}, settled);
+    CHECK(c.outcome == ImpactOutcome::stick);
+    CHECK(c.fractured_on_wall);
+    CHECK(c.retained_mass_fraction == 1.0);
+    CHECK_THAT(c.largest_fragment_share, WithinRel(0.6, 1e-14));
   }
-  SECTION("break-up, whatever the largest fragment does") {
-    CHECK(classify({fragment(85, true, 0.0), fragment(15, false, 0.1)}, true).outcome == ImpactOutcome::break_up);
-    CHECK(classify({fragment(85, false, 0.1), fragment(15, false, 0.1)}, true).outcome == ImpactOutcome::break_up);
+  SECTION("bounce: the heaviest fragment off the wall holds at least the bounce share; debris stays behind") {
+    const Classification c = classify({fate(95, false), fate(5, true)}, settled);
+    CHECK(c.outcome == ImpactOutcome::bounce);
+    CHECK_FALSE(c.fractured_on_wall);
+    CHECK_THAT(c.retained_mass_fraction, WithinRel(0.05, 1e-14));
+    CHECK_THAT(c.reentrained_mass_fraction, WithinRel(0.95, 1e-14));
+    CHECK(c.reentrained == std::vector<std::size_t>{0});
   }
-  SECTION("the threshold can be re-applied to the same fragments") {
-    const std::vector<Fragment> f{fragment(85, true, 0.0), fragment(15, false, 0.1)};
-    CHECK(classify(f, true, 0.9).outcome == ImpactOutcome::break_up);
-    CHECK(classify(f, true, 0.8).outcome == ImpactOutcome::stick);
+  SECTION("bounce: debris may also leave, in pieces of its own") {
+    const Classification c = classify({fate(92, false), fate(5, false), fate(3, true)}, settled);
+    CHECK(c.outcome == ImpactOutcome::bounce);
+    CHECK_THAT(c.reentrained_mass_fraction, WithinRel(0.97, 1e-14));
+    CHECK_THAT(c.largest_reentrained_share, WithinRel(0.92, 1e-14));
+    CHECK(c.reentrained == std::vector<std::size_t>{0, 1});
   }
-  SECTION("never a guess when the time limit came first") {
-    const auto c = classify({fragment(100, true, 0.0)}, false);
+  SECTION("break-up: mass leaves the wall in pieces") {
+    const Classification c = classify({fate(50, true), fate(30, false), fate(20, false)}, settled);
+    CHECK(c.outcome == ImpactOutcome::break_up);
+    CHECK_THAT(c.retained_mass_fraction, WithinRel(0.5, 1e-14));
+    CHECK_THAT(c.largest_reentrained_share, WithinRel(0.3, 1e-14));
+    CHECK(c.reentrained == std::vector<std::size_t>{1, 2});
+  }
+  SECTION("break-up: one monomer leaving a deposit is mass leaving the wall") {
+    // Under the former rule a stick: the largest fragment holds 99 % of the primaries.
+    const Classification c = classify({fate(99, true), fate(1, false)}, settled);
+    CHECK(c.outcome == ImpactOutcome::break_up);
+    CHECK_THAT(c.retained_mass_fraction, WithinRel(0.99, 1e-14));
+    CHECK_FALSE(c.fractured_on_wall);
+  }
+  SECTION("break-up: the whole cluster leaves, but no piece holds the bounce share") {
+    const Classification c = classify({fate(85, false), fate(15, false)}, settled);
+    CHECK(c.outcome == ImpactOutcome::break_up);
+    CHECK(c.retained_mass_fraction == 0.0);
+    CHECK(c.reentrained_mass_fraction == 1.0);
+  }
+  SECTION("shares are shares of the mass, not of the primaries") {
+    // 10 heavy primaries leave with 90 % of the mass; 90 light ones, 10 % of it, stay.
+    const Classification c = classify({fate(90, true, 1.0 / 90.0), fate(10, false, 0.9)}, settled);
+    CHECK(c.outcome == ImpactOutcome::bounce);
+    CHECK_THAT(c.largest_reentrained_share, WithinRel(0.9, 1e-14));
+    CHECK_THAT(c.largest_fragment_share, WithinRel(0.9, 1e-14));
+  }
+  SECTION("the bounce share is the case's threshold, and is reached at equality") {
+    const std::vector<FragmentFate> f{fate(85, false), fate(15, true)};
+    CHECK(classify(f, settled, {0.9}).outcome == ImpactOutcome::break_up);
+    CHECK(classify(f, settled, {0.85}).outcome == ImpactOutcome::bounce);
+    CHECK(classify(f, settled, {0.8}).outcome == ImpactOutcome::bounce);
+    CHECK_THROWS_AS(classify(f, settled, {0.5}), std::invalid_argument);
+    CHECK_THROWS_AS(classify(f, settled, {1.2}), std::invalid_argument);
+  }
+  SECTION("never a guess when the time limit came first; the fractions are those of the last state") {
+    const Classification c = classify({fate(70, true), fate(30, false)}, false);
     CHECK(c.outcome == ImpactOutcome::undetermined);
     CHECK(to_string(c.outcome) == "undetermined");
-  }
-  SECTION("a largest fragment off the wall and not moving away is undetermined") {
-    CHECK(classify({fragment(100, false, -0.01)}, true).outcome == ImpactOutcome::undetermined);
+    CHECK_THAT(c.retained_mass_fraction, WithinRel(0.7, 1e-14));
   }
   CHECK(to_string(ImpactOutcome::break_up) == "break-up");
+}
+
+TEST_CASE("the outcome rule reads a fragment's place and velocity from the fragment analysis") {
+  const Scene s = scene();
+  const FragmentAnalysis a = find_fragments(s.p, s.contacts, s.wall_contacts, Wall{});
+  std::vector<Vec3> velocity;
+  for (const Fragment& f : a.fragments) velocity.push_back(f.velocity);
+  const std::vector<FragmentFate> f = fates_of(a.fragments, velocity, {0.0, 0.0, 2.0});
+  REQUIRE(f.size() == 3);
+  CHECK(f[0].on_wall);
+  CHECK_FALSE(f[1].on_wall);
+  CHECK(f[1].primaries == 2);
+  CHECK_THAT(f[1].normal_velocity, WithinRel(0.3, 1e-14));
+  CHECK_THAT(f[2].speed, WithinRel(1.0, 1e-14));
+  const Classification c = classify(f, settled);
+  CHECK(c.outcome == ImpactOutcome::break_up);
+  CHECK_THAT(c.retained_mass_fraction, WithinRel(0.5, 1e-14));
 }
 
 TEST_CASE("the settle judgement") {
@@ -153,5 +229,50 @@ TEST_CASE("the settle judgement") {
     mean[1] = {-1.0, 0.0, 0.01};
     f[1].normal_velocity = 0.01;
     CHECK(unsettled_reason(f, mean, {0.0, 9.0}, up, 0.01).empty());
+  }
+}
+
+TEST_CASE("the outcome-fixed judgement: a break-up that can no longer become anything else") {
+  const Vec3 up{0.0, 0.0, 1.0};
+  // A deposit of 50 primaries at rest on the wall, two pieces of 30 and 20 flying apart above it.
+  std::vector<Fragment> f{fragment(50, true, 0.0), fragment(30, false, 0.5), fragment(20, false, 0.5)};
+  f[0].centre_of_mass = {0.0, 0.0, 2.0};
+  f[0].bounding_radius = 3.0;
+  f[1].centre_of_mass = {-10.0, 0.0, 12.0};
+  f[1].bounding_radius = 2.0;
+  f[1].lowest_gap = 9.5;
+  f[2].centre_of_mass = {10.0, 0.0, 12.0};
+  f[2].bounding_radius = 2.0;
+  f[2].lowest_gap = 9.5;
+  std::vector<Vec3> mean{{0.0, 0.0, 0.0}, {-0.2, 0.0, 0.5}, {0.2, 0.0, 0.5}};
+  const std::vector<double> gap_before{0.0, 9.0, 9.0};
+  const OutcomeThresholds thresholds{0.9};
+
+  CHECK(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds).empty());
+
+  SECTION("what the settle judgement refuses, this one refuses too") {
+    mean[0].z = -0.05;
+    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds), Catch::Matchers::Contains("not at rest"));
+  }
+  SECTION("pieces in flight on course to meet") {
+    mean[1] = {0.2, 0.0, 0.5};
+    mean[2] = {-0.2, 0.0, 0.5};
+    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds), Catch::Matchers::Contains("approaching"));
+  }
+  SECTION("a stick or a bounce is not fixed by this rule") {
+    const std::vector<Fragment> deposit{f[0]};
+    CHECK_THAT(outcome_open_reason(deposit, {mean[0]}, {0.0}, up, 0.01, thresholds), Catch::Matchers::Contains("stick"));
+    std::vector<Fragment> bouncing{fragment(95, false, 0.5), fragment(5, true, 0.0)};
+    bouncing[0].centre_of_mass = {0.0, 0.0, 12.0};
+    bouncing[0].lowest_gap = 9.5;
+    bouncing[1].centre_of_mass = {20.0, 0.0, 0.5};
+    CHECK_THAT(outcome_open_reason(bouncing, {{0.0, 0.0, 0.5}, {}}, {9.0, 0.0}, up, 0.01, thresholds),
+               Catch::Matchers::Contains("bounce"));
+  }
+  SECTION("a deposit heavy enough to leave later as a bounce keeps the outcome open") {
+    f[0].size = 950;
+    f[0].mass = 950.0;
+    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds),
+               Catch::Matchers::Contains("could still leave as a bounce"));
   }
 }

@@ -13,7 +13,9 @@
 #include <string>
 #include <unistd.h>
 
+#include "engine/core/units.hpp"
 #include "engine/impact/impact_result.hpp"
+#include "engine/impact/impact_run.hpp"
 #include "impact_support.hpp"
 
 using namespace aerobreak;
@@ -66,9 +68,39 @@ TEST_CASE("aerobreak impact refuses an invalid case and names the field") {
 TEST_CASE("aerobreak impact --check writes the case completed with its defaults") {
   const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact --check " +
-                               scratch.write("case.json", testing::minimal_case().dump(2)).string());
+                                   scratch.write("case.json", testing::minimal_case().dump(2)).string(),
+                               true);
   REQUIRE(out.exit_code == 0);
   const Json completed = Json::parse(out.text);
   CHECK(completed["model"]["normal"] == "jkr");
   CHECK(completed["impact"]["gap"] == 0.01);
+}
+
+TEST_CASE("aerobreak impact --check prints tau, the time step, lambda and the energy groups") {
+  const aerobreak::testing::ScratchDirectory scratch("impact_cli");
+  Json c = testing::minimal_case();
+  c["units"] = "physical";
+  c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0},
+                   {"surface_energy", 0.05},   {"diameter", 2e-8}};
+  c["impact"]["speed"] = 1.0;
+  c["model"] = {{"rolling", {{"enabled", true}, {"critical_displacement", 0.02}}}};
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact -o /dev/null --check " +
+                               scratch.write("case.json", c.dump(2)).string());
+  INFO(out.text);
+  REQUIRE(out.exit_code == 0);
+  // The case's own numbers, from the engine's functions.
+  const ImpactCase parsed = parse_impact_case(c);
+  const ImpactResult prepared = prepare_impact(parsed).result;
+  const auto line = [](const char* format, double x) {
+    char text[160];
+    std::snprintf(text, sizeof text, format, x);
+    return std::string(text);
+  };
+  CHECK_THAT(out.text, Contains(line("time unit tau = sqrt(m/k_n) = %.4g s", parsed.physical->time_unit())));
+  CHECK_THAT(out.text, Contains(line("time step %.6g tau", prepared.time_step)));
+  CHECK_THAT(out.text, Contains(line("lambda (eq 19) = %.6g", adhesion_energy_ratio(parsed.material, 1.0, parsed.speed))));
+  CHECK_THAT(out.text, Contains(line("E_kin / (N_c E_break) = %.6g", prepared.energy_groups.energy_per_contact)));
+  CHECK_THAT(out.text, Contains(line("E_kin / E_roll = %.6g", prepared.energy_groups.energy_over_rolling)));
+  CHECK_THAT(out.text, Contains("(1.5426 F_c delta_c)"));
+  CHECK_THAT(out.text, !Contains("impact: t = "));  // nothing ran
 }

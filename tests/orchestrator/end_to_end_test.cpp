@@ -3,6 +3,7 @@
 // the REST API and from the file itself.
 #include <sqlite3.h>
 
+#include <map>
 #include <set>
 
 #include "tests/orchestrator/service_process.hpp"
@@ -63,6 +64,17 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
     workers.insert(record.at("worker").get<std::string>());
   CHECK(workers.size() == 2);
 
+  // The outcome table counts, per grid point, the results flagged outside the small-strain range
+  // and averages their retained mass fraction, as the results themselves say.
+  std::map<std::string, std::pair<long long, double>> flagged_and_retained;
+  const auto all_results = service.get("/api/studies/" + std::to_string(study) + "/results");
+  for (const auto& result : all_results.at("items")) {
+    REQUIRE(result.at("small_strain_exceeded").is_boolean());
+    REQUIRE(result.at("retained_mass_fraction").is_number());
+    auto& [flagged, retained] = flagged_and_retained[result.at("grid_point").dump()];
+    flagged += result.at("small_strain_exceeded").get<bool>() ? 1 : 0;
+    retained += result.at("retained_mass_fraction").get<double>() / 2.0;
+  }
   const auto table = service.get("/api/studies/" + std::to_string(study) + "/outcomes");
   REQUIRE(table.at("grid_points").size() == 3);
   for (const auto& point : table.at("grid_points")) {
@@ -70,6 +82,10 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
     long long total = 0;
     for (const auto& [outcome, estimate] : point.at("outcomes").items()) total += estimate.at("count").get<long long>();
     CHECK(total == 2);
+    const auto& [flagged, retained] = flagged_and_retained.at(point.at("grid_point").dump());
+    CHECK(point.at("small_strain_exceeded") == flagged);
+    CHECK(point.at("small_strain_unchecked") == 0);
+    CHECK(point.at("retained_mass_fraction_mean").get<double>() == Approx(retained));
   }
   const auto jobs = service.get("/api/jobs");
   REQUIRE_FALSE(jobs.at("items").empty());
@@ -106,6 +122,7 @@ TEST_CASE("aerobreak run runs a study to completion and prints the outcome table
   INFO(first.text);
   CHECK(first.exit_code == 0);
   CHECK_THAT(first.text, Catch::Contains("P(stick) 95% CI") && Catch::Contains("4 done, 0 failed"));
+  CHECK_THAT(first.text, Catch::Contains("retained") && Catch::Contains("large strain"));
   CHECK(count_rows(store, "SELECT count(*) FROM results") == 4);
 
   // Again: everything is done already, nothing is rerun.

@@ -71,4 +71,44 @@ TEST_CASE("Outcome counts are grouped per grid point over the replicates", "[sto
   CHECK(cells[1].finished() == 1);
 }
 
+TEST_CASE("Results and outcome tables carry the retained mass, the damage and the small-strain flags", "[store]") {
+  testing::TemporaryStoreFile file("outcome-columns");
+  Store store(file.path());
+  const auto study = store.submit_study(testing::submission("s1", "c", {0.1, 0.2}, 3));
+  const auto job = store.start_job("test", 1);
+  const testing::ResultSummary summaries[] = {
+      {1.0, false, true, 0.0, 1.0}, {1.0, true, true, 0.2, 2.0}, {0.4, true, false, 0.5, 3.0},  // speed 0.1
+      {0.7, false, false, 0.4, 5.0}, {0.1, false, false, 0.9, 7.0}};                          // speed 0.2
+  const char* outcomes[] = {"stick", "stick", "break-up", "break-up", "break-up"};
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto claimed = store.claim_next_case(job);
+    REQUIRE(claimed);
+    store.commit_result(claimed->case_id, claimed->attempt, testing::result_document(outcomes[k], {4}, summaries[k]), "", 1.0);
+  }
+  const auto page = store.results(study.study_id, std::nullopt, {});
+  REQUIRE(page.items.size() == 5);
+  const ResultRecord& third = page.items[2];
+  CHECK(third.retained_mass_fraction == Approx(0.4));
+  CHECK(third.reentrained_mass_fraction == Approx(0.6));
+  CHECK(third.damage_ratio == Approx(0.5));
+  CHECK(third.fractured_on_wall == true);
+  CHECK(third.small_strain_exceeded == true);
+  CHECK(third.energy_per_contact == Approx(3.0));
+  CHECK_FALSE(third.energy_over_rolling);
+  CHECK(third.initial_contacts == 3);
+  CHECK(page.items[0].small_strain_exceeded == false);
+
+  const auto cells = store.outcomes(study.study_id);
+  REQUIRE(cells.size() == 2);
+  CHECK(*cells[0].mean_retained_mass_fraction == Approx((1.0 + 1.0 + 0.4) / 3.0));
+  CHECK(*cells[0].mean_damage_ratio == Approx((0.0 + 0.2 + 0.5) / 3.0));
+  CHECK(*cells[0].mean_energy_per_contact == Approx(2.0));
+  CHECK(cells[0].fractured_on_wall == 2);
+  CHECK(cells[0].small_strain_exceeded == 1);
+  CHECK(cells[0].small_strain_unchecked == 0);
+  CHECK(*cells[1].mean_retained_mass_fraction == Approx(0.4));
+  CHECK(cells[1].small_strain_exceeded == 2);
+  CHECK(cells[1].finished() == 2);
+}
+
 }  // namespace aerobreak

@@ -45,7 +45,17 @@ inline StudySubmission submission(const std::string& study_hash, const std::stri
   return study;
 }
 
-inline nlohmann::ordered_json result_document(const std::string& outcome, std::initializer_list<int> fragment_sizes) {
+// What a result document says beyond its class and fragments (schemas/result.schema.json).
+struct ResultSummary {
+  double retained = 1.0;
+  bool fractured_on_wall = false;
+  bool small_strain = true;
+  double damage_ratio = 0.25;
+  double energy_per_contact = 2.0;
+};
+
+inline nlohmann::ordered_json result_document(const std::string& outcome, std::initializer_list<int> fragment_sizes,
+                                              const ResultSummary& summary = {}) {
   nlohmann::ordered_json fragments = nlohmann::ordered_json::array();
   int largest = 0;
   int total = 0;
@@ -55,12 +65,18 @@ inline nlohmann::ordered_json result_document(const std::string& outcome, std::i
     largest = std::max(largest, size);
     total += size;
   }
-  return {{"outcome",
+  return {{"dimensionless", {{"initial_contacts", total - 1}, {"energy_per_contact", summary.energy_per_contact},
+                             {"energy_over_rolling", nullptr}}},
+          {"outcome",
            {{"class", outcome},
+            {"fractured_on_wall", summary.fractured_on_wall},
+            {"retained_mass_fraction", summary.retained},
+            {"reentrained_mass_fraction", 1.0 - summary.retained},
+            {"damage_ratio", summary.damage_ratio},
             {"largest_fragment_share", static_cast<double>(largest) / total},
             {"fragment_count", fragments.size()},
-            {"restitution", {{"normal", 0.25}, {"tangential", nullptr}}},
-            {"mass_fraction_on_wall", 1.0}}},
+            {"restitution", {{"normal", 0.25}, {"tangential", nullptr}}}}},
+          {"validity", {{"small_strain", summary.small_strain}}},
           {"setup", {{"impact_kinetic_energy", 0.002}}},
           {"fragments", {{"list", fragments}}}};
 }

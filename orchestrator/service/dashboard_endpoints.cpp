@@ -1,0 +1,172 @@
+#include "orchestrator/service/dashboard_endpoints.hpp"
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+
+#include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/case_file_download.hpp"
+#include "orchestrator/service/grid_filter.hpp"
+#include "orchestrator/service/http_support.hpp"
+#include "orchestrator/service/outcome_statistics.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr std::size_t kMaxProgressPage = 100;
+constexpr std::size_t kMaxFragmentGridPoints = 1000;
+
+// The grid points of recently filtered studies: a study's grid points never change once it is
+// stored, and listing them costs a pass over its cases. At most kStudies studies are kept.
+class GridPointCache {
+ public:
+  using Points = std::vector<std::pair<std::string, nlohmann::ordered_json>>;
+  std::shared_ptr<const Points> points(Store& store, std::int64_t study_id) {
+    {
+      std::lock_guard lock(mutex_);
+      if (const auto found = cache_.find(study_id); found != cache_.end()) return found->second;
+    }
+    auto points = std::make_shared<const Points>(store.grid_points(study_id));
+    std::lock_guard lock(mutex_);
+    if (cache_.size() >= kStudies) cache_.clear();
+    cache_[study_id] = points;
+    return points;
+  }
+
+ private:
+  static constexpr std::size_t kStudies = 32;
+  std::mutex mutex_;
+  std::map<std::int64_t, std::shared_ptr<const Points>> cache_;
+};
+
+nlohmann::ordered_json moments_json(const Moments& moments) {
+  const auto estimate = mean_interval(moments.count, moments.sum, moments.sum_of_squares);
+  if (!estimate) return nullptr;
+  const auto optional = [](const std::optional<double>& value) {
+    return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+  };
+  return {{"n", estimate->count},
+          {"mean", estimate->mean},
+          {"sd", optional(estimate->standard_deviation)},
+          {"ci95", estimate->lower ? nlohmann::ordered_json::array({*estimate->lower, *estimate->upper})
+                                   : nlohmann::ordered_json(nullptr)}};
+}
+
+// Each axis (in the study's order) with its distinct values, sorted.
+nlohmann::ordered_json axes_json(const std::vector<GridPointStatistics>& cells) {
+  nlohmann::ordered_json axes = nlohmann::ordered_json::array();
+  if (cells.empty()) return axes;
+  for (const auto& [axis, first] : cells.front().outcomes.grid_point.items()) {
+    std::set<nlohmann::ordered_json> values;
+    for (const auto& cell : cells) values.insert(cell.outcomes.grid_point.at(axis));
+    axes.push_back({{"name", axis}, {"values", nlohmann::ordered_json(values)}});
+  }
+  return axes;
+}
+
+nlohmann::ordered_json grid_json(const StudyRecord& study, const std::vector<GridPointStatistics>& cells) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const auto& cell : cells) {
+    auto row = grid_point_outcomes_json(cell.outcomes);
+    row["retained_mass_fraction"] = moments_json(cell.retained_mass_fraction);
+    row["restitution"] = moments_json(cell.restitution);
+    row["fragment_count"] = moments_json(cell.fragment_count);
+    row["largest_fragment_share"] = moments_json(cell.largest_fragment_share);
+    rows.push_back(std::move(row));
+  }
+  return {{"study", study.id}, {"confidence", 0.95}, {"axes", axes_json(cells)}, {"grid_points", rows}};
+}
+
+CaseFilter case_filter(const httplib::Request& request, Store& store, GridPointCache& grid, std::int64_t study_id) {
+  CaseFilter filter;
+  if (request.has_param("status")) {
+    filter.status = parse_case_status(request.get_param_value("status"));
+    if (!filter.status) throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
+  }
+  if (request.has_param("outcome")) {
+    filter.outcome = request.get_param_value("outcome");
+    if (*filter.outcome != "stick" && *filter.outcome != "bounce" && *filter.outcome != "break-up" &&
+        *filter.outcome != "undetermined")
+      throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
+  }
+  const AxisFilter axes(request);
+  if (!axes.empty()) filter.grid_keys = axes.matching_keys(*grid.points(store, study_id));
+  return filter;
+}
+
+nlohmann::ordered_json case_row_json(const CaseRecord& record) {
+  auto json = to_json(record);
+  const auto optional = [](const auto& value) {
+    return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+  };
+  json["restitution"] = optional(record.restitution);
+  json["retained_mass_fraction"] = optional(record.retained_mass_fraction);
+  json["fragment_count"] = optional(record.fragment_count);
+  return json;
+}
+
+nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, const StudyRecord& study,
+                                          const AxisFilter& axes) {
+  const auto points_held = grid.points(store, study.id);
+  const auto& points = *points_held;
+  const auto keys = axes.matching_keys(points);
+  if (keys.size() > kMaxFragmentGridPoints)
+    throw RequestError{400, std::to_string(keys.size()) + " grid points match; narrow them to at most " +
+                                std::to_string(kMaxFragmentGridPoints) + " with axis.NAME=VALUE"};
+  std::map<std::string, const nlohmann::ordered_json*> grid_point_of;
+  for (const auto& [key, grid_point] : points) grid_point_of[key] = &grid_point;
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const auto& point : store.fragment_sizes(study.id, keys)) {
+    nlohmann::ordered_json sizes = nlohmann::ordered_json::array();
+    for (const auto& [primaries, count] : point.sizes) sizes.push_back({primaries, count});
+    rows.push_back({{"grid_point", *grid_point_of.at(point.grid_key)}, {"results", point.results}, {"sizes", sizes}});
+  }
+  return {{"study", study.id}, {"grid_points", rows}};
+}
+
+}  // namespace
+
+void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options) {
+  auto grid = std::make_shared<GridPointCache>();
+  server.Get("/api/progress", guarded([&store](const httplib::Request& request, httplib::Response& response) {
+    PageRequest page;
+    page.limit = unsigned_parameter(request, "limit", 20, kMaxProgressPage);
+    page.offset = unsigned_parameter(request, "offset", 0, std::size_t{1} << 40);
+    const auto studies = store.studies(page);
+    nlohmann::ordered_json items = nlohmann::ordered_json::array();
+    for (const auto& study : studies.items) {
+      auto json = to_json(study, false);
+      json["progress"] = to_json(*store.progress(study.id));
+      items.push_back(std::move(json));
+    }
+    send_json(response, 200, {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  }));
+  server.Get(R"(/api/studies/(\d+)/grid)", guarded([&store](const httplib::Request& request, httplib::Response& response) {
+    const auto study = existing_study(store, path_id(request));
+    send_json(response, 200, grid_json(study, store.grid_statistics(study.id)));
+  }));
+  server.Get(R"(/api/studies/(\d+)/case-table)",
+             guarded([&store, &options, grid](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               const auto filter = case_filter(request, store, *grid, study.id);
+               const auto page = page_request(request, options);
+               const auto cases = store.cases(study.id, filter, page);
+               nlohmann::ordered_json items = nlohmann::ordered_json::array();
+               for (const auto& record : cases.items) items.push_back(case_row_json(record));
+               send_json(response, 200,
+                         {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+             }));
+  server.Get(R"(/api/studies/(\d+)/fragment-sizes)",
+             guarded([&store, grid](const httplib::Request& request, httplib::Response& response) {
+               const auto study = existing_study(store, path_id(request));
+               send_json(response, 200, fragment_sizes_json(store, *grid, study, AxisFilter(request)));
+             }));
+  server.Get(R"(/api/cases/(\d+)/data)",
+             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
+               send_case_file(response, store, path_id(request), options.data_directory);
+             }));
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,129 @@
+// The store's per-grid-point queries: outcome counts, moments of the results' scalar quantities and
+// fragment-size counts, aggregated by SQLite so that a study of 100,000 cases answers in one pass.
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "orchestrator/store/store.hpp"
+#include "orchestrator/store/store_read_connection.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr std::array<std::string_view, 4> kOutcomes{"stick", "bounce", "break-up", "undetermined"};
+
+// Each result quantity with moments: its column and where it goes.
+struct MomentColumn {
+  std::string_view column;
+  Moments GridPointStatistics::*moments;
+};
+constexpr std::array<MomentColumn, 6> kMomentColumns{{
+    {"r.retained_mass_fraction", &GridPointStatistics::retained_mass_fraction},
+    {"r.restitution", &GridPointStatistics::restitution},
+    {"r.fragment_count", &GridPointStatistics::fragment_count},
+    {"r.largest_fragment_share", &GridPointStatistics::largest_fragment_share},
+    {"r.damage_ratio", &GridPointStatistics::damage_ratio},
+    {"r.energy_per_contact", &GridPointStatistics::energy_per_contact},
+}};
+
+// Results counted per grid point by a flag: fractured on the wall, outside the small-strain range,
+// and without the small-strain check (results migrated from a version-1 store).
+constexpr std::array<std::string_view, 3> kFlagCounts{
+    "sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)",
+    "sum(r.case_id IS NOT NULL AND r.small_strain_exceeded IS NULL)"};
+
+std::optional<double> mean(const Moments& moments) {
+  return moments.count > 0 ? std::optional(moments.sum / static_cast<double>(moments.count)) : std::nullopt;
+}
+
+std::string grid_statistics_sql() {
+  std::string sql =
+      "SELECT sc.grid_key, min(sc.grid_point), count(*), sum(c.status = 'failed')";
+  for (const auto outcome : kOutcomes) sql += ", sum(r.outcome = '" + std::string(outcome) + "')";
+  for (const auto& [column, member] : kMomentColumns) {
+    const std::string name(column);
+    sql += ", count(" + name + "), total(" + name + "), total(" + name + " * " + name + ")";
+  }
+  for (const auto flag : kFlagCounts) sql += ", " + std::string(flag);
+  return sql +
+         " FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = sc.case_id "
+         "WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)";
+}
+
+GridPointStatistics statistics_from(const SqliteStatement& row) {
+  GridPointStatistics statistics;
+  auto& cell = statistics.outcomes;
+  cell.grid_key = row.text(0);
+  cell.grid_point = nlohmann::ordered_json::parse(row.text(1));
+  cell.cases = static_cast<std::size_t>(row.integer(2));
+  cell.failed = static_cast<std::size_t>(row.integer(3));
+  int column = 4;
+  for (const auto outcome : kOutcomes) cell.outcomes[std::string(outcome)] = static_cast<std::size_t>(row.integer(column++));
+  for (const auto& [name, member] : kMomentColumns) {
+    Moments& moments = statistics.*member;
+    moments.count = static_cast<std::size_t>(row.integer(column++));
+    moments.sum = row.real(column++);
+    moments.sum_of_squares = row.real(column++);
+  }
+  cell.fractured_on_wall = static_cast<std::size_t>(row.integer(column++));
+  cell.small_strain_exceeded = static_cast<std::size_t>(row.integer(column++));
+  cell.small_strain_unchecked = static_cast<std::size_t>(row.integer(column++));
+  cell.mean_retained_mass_fraction = mean(statistics.retained_mass_fraction);
+  cell.mean_damage_ratio = mean(statistics.damage_ratio);
+  cell.mean_energy_per_contact = mean(statistics.energy_per_contact);
+  return statistics;
+}
+
+}  // namespace
+
+std::vector<GridPointStatistics> Store::grid_statistics(std::int64_t study_id) {
+  auto db = read();
+  auto statement = db->prepare(grid_statistics_sql());
+  statement.bind_all(study_id);
+  std::vector<GridPointStatistics> cells;
+  while (statement.step()) cells.push_back(statistics_from(statement));
+  return cells;
+}
+
+std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
+  std::vector<GridPointOutcomes> cells;
+  for (auto& statistics : grid_statistics(study_id)) cells.push_back(std::move(statistics.outcomes));
+  return cells;
+}
+
+std::vector<std::pair<std::string, nlohmann::ordered_json>> Store::grid_points(std::int64_t study_id) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT grid_key, min(grid_point) FROM study_cases WHERE study_id = ? GROUP BY grid_key ORDER BY min(position)");
+  statement.bind_all(study_id);
+  std::vector<std::pair<std::string, nlohmann::ordered_json>> points;
+  while (statement.step()) points.emplace_back(statement.text(0), nlohmann::ordered_json::parse(statement.text(1)));
+  return points;
+}
+
+std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys) {
+  auto db = read();
+  const std::string keys = nlohmann::json(grid_keys).dump();
+  const std::string matching = "WHERE sc.study_id = ? AND sc.grid_key IN (SELECT value FROM json_each(?)) ";
+  auto results = db->prepare("SELECT sc.grid_key, count(*) FROM study_cases sc JOIN results r ON r.case_id = sc.case_id " +
+                             matching + "GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  results.bind_all(study_id, keys);
+  std::vector<GridPointFragments> points;
+  std::map<std::string, std::size_t> index;
+  while (results.step()) {
+    index[results.text(0)] = points.size();
+    points.push_back({results.text(0), static_cast<std::size_t>(results.integer(1)), {}});
+  }
+  auto sizes = db->prepare("SELECT sc.grid_key, f.primaries, count(*) FROM study_cases sc JOIN fragments f "
+                           "ON f.case_id = sc.case_id " + matching + "GROUP BY sc.grid_key, f.primaries ORDER BY 1, 2");
+  sizes.bind_all(study_id, keys);
+  while (sizes.step()) {
+    const auto found = index.find(sizes.text(0));
+    if (found != index.end())
+      points[found->second].sizes.emplace_back(sizes.integer(1), static_cast<std::size_t>(sizes.integer(2)));
+  }
+  return points;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,165 @@
+// Migration 2 on a store written by schema version 1 (made here from version 1's own SQL):
+// stored results are classified again by what leaves the wall, from their stored fragments,
+// without re-running them.
+#include <string>
+#include <vector>
+
+#include "orchestrator/store/migrations.hpp"
+#include "tests/store/store_support.hpp"
+
+namespace aerobreak {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct StoredFragment {
+  int primaries;
+  bool on_wall;
+  double normal_speed;  // of its window-mean velocity, along the wall normal +z
+};
+
+// One result as version 1 stored it: the former class (by the largest fragment's share of the
+// primaries), its document and its fragments.
+struct FormerResult {
+  std::string former_class;
+  std::vector<StoredFragment> fragments;
+  bool settled = true;
+  double threshold = 0.9;
+};
+
+Json former_document(const FormerResult& r) {
+  Json list = Json::array();
+  int total = 0, on_wall = 0;
+  for (const auto& f : r.fragments) {
+    list.push_back({{"size", f.primaries}, {"mass", static_cast<double>(f.primaries)},
+                    {"velocity", {0.0, 0.0, f.normal_speed + 0.001}}, {"normal_velocity", f.normal_speed + 0.001},
+                    {"mean_velocity", {0.0, 0.0, f.normal_speed}}, {"on_wall", f.on_wall}});
+    total += f.primaries;
+    if (f.on_wall) on_wall += f.primaries;
+  }
+  return {{"format", "aerobreak-impact-result"},
+          {"format_version", 1},
+          {"case", {{"classification", {{"largest_fragment_share", r.threshold}}}}},
+          {"setup", {{"wall_normal", {0.0, 0.0, 1.0}}, {"impact_kinetic_energy", 0.5}}},
+          {"run", {{"settled", r.settled}}},
+          {"outcome", {{"class", r.former_class},
+                       {"reason", "the former rule"},
+                       {"thresholds", {{"largest_fragment_share", r.threshold}}},
+                       {"fragment_count", r.fragments.size()},
+                       {"mass_fraction_on_wall", static_cast<double>(on_wall) / total}}},
+          {"contacts", {{"initial", total - 1}}},
+          {"fragments", {{"list", list}}}};
+}
+
+// A version-1 store with one study whose case k holds results[k] (grid point impact_speed = k).
+void write_version_1_store(const std::filesystem::path& file, const std::vector<FormerResult>& results) {
+  SqliteDatabase db(file);
+  db.execute(store_migrations()[0].sql);
+  db.execute("PRAGMA user_version = 1");
+  db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
+             "VALUES (1, 'study', 'former', '{}', 'active', 1, 60, 0)");
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const auto id = static_cast<std::int64_t>(k + 1);
+    const Json document = former_document(results[k]);
+    db.prepare("INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
+               "VALUES (?, ?, '{}', 'done', 1, 60, 0)")
+        .bind_all(id, "case" + std::to_string(k))
+        .run();
+    const Json grid_point = {{"impact_speed", static_cast<int>(k)}};
+    db.prepare("INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
+               "VALUES (1, ?, ?, ?, ?, 0)")
+        .bind_all(id, id, grid_point.dump(), grid_point.dump())
+        .run();
+    db.prepare("INSERT INTO results (case_id, attempt, outcome, fragment_count, mass_fraction_on_wall, document, "
+               "committed_at) VALUES (?, 1, ?, ?, ?, ?, 0)")
+        .bind_all(id, results[k].former_class, results[k].fragments.size(),
+                  document["outcome"]["mass_fraction_on_wall"].get<double>(), document.dump())
+        .run();
+    int rank = 0;
+    for (const auto& f : results[k].fragments)
+      db.prepare("INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity) VALUES (?, ?, ?, ?, ?, ?)")
+          .bind_all(id, rank++, f.primaries, static_cast<double>(f.primaries), f.on_wall ? 1 : 0, f.normal_speed + 0.001)
+          .run();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Migration 2 classifies the results of a version-1 store again by what leaves the wall", "[store]") {
+  testing::TemporaryStoreFile file("migration-2");
+  const std::vector<FormerResult> former{
+      {"break-up", {{60, true, 0.0}, {30, true, 0.0}, {10, true, 0.0}}},  // torn on the wall: now a stick
+      {"stick", {{99, true, 0.0}, {1, false, 0.02}}},                      // a monomer left: now a break-up
+      {"bounce", {{100, false, 0.3}}},                                     // still a bounce
+      {"break-up", {{85, false, 0.1}, {15, false, 0.2}}},                  // still a break-up
+      {"stick", {{100, true, 0.0}}, false},                                // the time limit came first
+      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.8},          // the case's own bounce share
+      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.3},          // a share the rule refuses: 0.9
+  };
+  write_version_1_store(file.path(), former);
+
+  Store store(file.path());
+  CHECK(store.opened_at_version() == 1);
+  CHECK(store.schema_version() == latest_store_version());
+  const auto page = store.results(1, std::nullopt, {});
+  REQUIRE(page.items.size() == former.size());
+  const auto& r = page.items;
+  CHECK(r[0].outcome == "stick");
+  CHECK(r[0].fractured_on_wall == true);
+  CHECK(r[0].retained_mass_fraction == Approx(1.0));
+  CHECK(r[1].outcome == "break-up");
+  CHECK(r[1].retained_mass_fraction == Approx(0.99));
+  CHECK(r[1].reentrained_mass_fraction == Approx(0.01));
+  CHECK(r[1].fractured_on_wall == false);
+  CHECK(r[2].outcome == "bounce");
+  CHECK(r[2].retained_mass_fraction == Approx(0.0));
+  CHECK(r[3].outcome == "break-up");
+  CHECK(r[4].outcome == "undetermined");
+  CHECK(r[5].outcome == "bounce");
+  CHECK(r[6].outcome == "break-up");
+  for (const auto& result : r) {
+    INFO("case " << result.case_id);
+    CHECK_FALSE(result.damage_ratio);          // not recorded by version 1
+    CHECK_FALSE(result.small_strain_exceeded);  // not checked by version 1
+    CHECK_FALSE(result.energy_per_contact);
+    CHECK(result.initial_contacts == 99);
+  }
+
+  // The documents say the same, with the fragments that left and the former class.
+  const auto monomer = store.case_detail(2);
+  REQUIRE(monomer);
+  REQUIRE(monomer->result);
+  const Json& outcome = (*monomer->result)["outcome"];
+  CHECK(outcome["class"] == "break-up");
+  CHECK(outcome["reclassified_from"] == "stick");
+  CHECK_FALSE(outcome.contains("mass_fraction_on_wall"));
+  CHECK(outcome["retained_mass_fraction"].get<double>() == Approx(0.99));
+  CHECK(outcome["damage_ratio"].is_null());
+  REQUIRE(outcome["reentrained_fragments"].size() == 1);
+  CHECK(outcome["reentrained_fragments"][0]["primaries"] == 1);
+  CHECK(outcome["reentrained_fragments"][0]["normal_velocity"].get<double>() == Approx(0.02));  // the window mean
+  CHECK((*store.case_detail(7)->result)["outcome"]["thresholds"]["largest_fragment_share"] == 0.9);
+
+  const auto cells = store.outcomes(1);
+  REQUIRE(cells.size() == former.size());
+  CHECK(cells[0].fractured_on_wall == 1);
+  CHECK(cells[0].small_strain_unchecked == 1);
+  CHECK(cells[0].small_strain_exceeded == 0);
+  CHECK(*cells[1].mean_retained_mass_fraction == Approx(0.99));
+}
+
+TEST_CASE("A migrated store is not migrated again when reopened", "[store]") {
+  testing::TemporaryStoreFile file("migration-2-reopen");
+  write_version_1_store(file.path(), {{"break-up", {{60, true, 0.0}, {40, true, 0.0}}}});
+  std::string document;
+  {
+    Store store(file.path());
+    document = store.case_detail(1)->result->dump();
+  }
+  Store store(file.path());
+  CHECK(store.opened_at_version() == latest_store_version());
+  CHECK(store.case_detail(1)->result->dump() == document);
+  CHECK((*store.case_detail(1)->result)["outcome"]["reclassified_from"] == "break-up");
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,108 @@
+// Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM.
+
+const kAxisLabels = { impact_speed: 'impact speed v₀ (d/τ)', gamma_over_kn: 'γ/k_n', primaries: 'N' };
+const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N' };
+// Axes that get one curve per value (the others are fixed by the slice choosers).
+export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
+
+export const axisLabel = (name) => kAxisLabels[name] || name;
+const shortLabel = (name) => kShortLabels[name] || name;
+export const valueKey = (value) => JSON.stringify(value);
+
+// The axis along x: impact_speed when swept, else the first numeric axis with several values.
+export function defaultXAxis(axes) {
+  const swept = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'));
+  const speed = swept.find((axis) => axis.name === 'impact_speed');
+  return (speed || swept[0] || {}).name || null;
+}
+
+// Axes with several values other than x and the series axes: each fixed to one value.
+export function sliceAxes(axes, xAxis) {
+  return axes.filter((axis) => axis.values.length > 1 && axis.name !== xAxis && !kSeriesAxes.includes(axis.name));
+}
+
+export function inSlice(gridPoint, slice) {
+  return Object.entries(slice).every(([axis, key]) => valueKey(gridPoint[axis]) === key);
+}
+
+function curveLabel(groupValues) {
+  const parts = Object.entries(groupValues).map(([axis, value]) => `${shortLabel(axis)} = ${value}`);
+  return parts.length ? parts.join(', ') : 'all';
+}
+
+// One curve per combination of the series axes, among the grid points in the slice: points
+// {x, y, lo, hi} sorted by x, from yOf(row) = {y, lo, hi} or null (no value there).
+export function curvesAlong(rows, { axes, xAxis, slice, yOf }) {
+  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== xAxis && axis.values.length > 1);
+  const curves = new Map();
+  for (const row of rows) {
+    if (!inSlice(row.grid_point, slice)) continue;
+    const value = yOf(row);
+    if (!value || value.y === null || value.y === undefined) continue;
+    const groupValues = Object.fromEntries(seriesAxes.map((axis) => [axis.name, row.grid_point[axis.name]]));
+    const key = valueKey(groupValues);
+    if (!curves.has(key)) curves.set(key, { key, groupValues, label: curveLabel(groupValues), points: [] });
+    curves.get(key).points.push({ x: row.grid_point[xAxis], ...value });
+  }
+  const sorted = [...curves.values()];
+  for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);
+  return sorted;
+}
+
+// Probability of `outcome` with its 95 % Wilson interval (the server's numbers).
+export const probabilityOf = (outcome) => (row) => {
+  const estimate = row.outcomes[outcome];
+  if (!estimate || estimate.probability === null) return null;
+  return { y: estimate.probability, lo: estimate.ci95[0], hi: estimate.ci95[1] };
+};
+
+// A mean with its 95 % Student interval (the server's numbers).
+export const meanOf = (quantity) => (row) => {
+  const estimate = row[quantity];
+  if (!estimate) return null;
+  return { y: estimate.mean, lo: estimate.ci95 ? estimate.ci95[0] : null, hi: estimate.ci95 ? estimate.ci95[1] : null };
+};
+
+// Where a curve first crosses `level`, interpolated linearly in log x between the two measured
+// points around it; null when it never does.
+export function crossing(points, level = 0.5) {
+  for (let i = 1; i < points.length; i++) {
+    const [a, b] = [points[i - 1], points[i]];
+    if ((a.y - level) * (b.y - level) > 0 || a.y === b.y) continue;
+    if (a.y === level) return a.x;
+    const t = (level - a.y) / (b.y - a.y);
+    return Math.exp(Math.log(a.x) + t * (Math.log(b.x) - Math.log(a.x)));
+  }
+  return null;
+}
+
+// Critical speed against N: one series per value of the series axes other than N, from the
+// crossings of each curve.
+export function criticalSpeedCurves(curves, level = 0.5) {
+  const series = new Map();
+  for (const curve of curves) {
+    if (!('primaries' in curve.groupValues)) continue;
+    const x = crossing(curve.points, level);
+    if (x === null) continue;
+    const { primaries, ...rest } = curve.groupValues;
+    const key = valueKey(rest);
+    if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest), points: [] });
+    series.get(key).points.push({ x: primaries, y: x });
+  }
+  const sorted = [...series.values()];
+  for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);
+  return sorted;
+}
+
+// Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
+// per result.
+export function fragmentCurves(response, xAxis) {
+  return response.grid_points
+    .filter((point) => point.results > 0)
+    .sort((a, b) => a.grid_point[xAxis] - b.grid_point[xAxis])
+    .map((point) => ({
+      key: valueKey(point.grid_point[xAxis]),
+      label: `${shortLabel(xAxis)} = ${point.grid_point[xAxis]} (${point.results} results)`,
+      points: point.sizes.map(([primaries, count]) => ({ x: primaries, y: count / point.results })),
+    }));
+}
