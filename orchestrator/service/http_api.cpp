@@ -160,7 +160,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
     for (const auto& job : store.jobs(limit)) items.push_back(to_json(job));
     send_json(response, 200, {{"items", items}});
   }));
-  register_dashboard_endpoints(server, store, options);
+  register_dashboard_endpoints(server, store, options, checker);
   register_web_endpoints(server, options);
 }
 

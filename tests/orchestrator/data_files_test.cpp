@@ -12,6 +12,14 @@ Json case_detail(const ServiceProcess& service, std::int64_t id) {
   return service.get("/api/cases/" + std::to_string(id));
 }
 
+// The status of a download of the case's file.
+int download_status(const ServiceProcess& service, std::int64_t id) {
+  auto client = service.client();
+  const auto response = client.Get("/api/cases/" + std::to_string(id) + "/data");
+  REQUIRE(response);
+  return response->status;
+}
+
 void flip_a_byte(const std::string& file) {
   std::fstream data(file, std::ios::in | std::ios::out | std::ios::binary);
   REQUIRE(data);
@@ -45,6 +53,7 @@ TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting th
   REQUIRE(damaged.at("data_file_check").at("state") == "ok");
   CHECK(damaged.at("data_file_check").at("size") == std::filesystem::file_size(damaged_file));
   CHECK(damaged.at("data_file_check").at("sha256").get<std::string>().size() == 64);
+  CHECK(download_status(service, damaged_id) == 200);
 
   flip_a_byte(damaged_file);
   std::filesystem::remove(deleted_file);
@@ -52,6 +61,9 @@ TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting th
   CHECK(damaged_check.at("state") == "damaged");
   CHECK_THAT(damaged_check.at("problem").get<std::string>(), Catch::Contains("SHA-256"));
   CHECK(case_detail(service, deleted_id).at("data_file_check").at("state") == "missing");
+  // Read through the download, the damaged file is refused rather than served as the case's.
+  CHECK(download_status(service, damaged_id) == 409);
+  CHECK(download_status(service, deleted_id) == 404);
 
   const auto receipt = submit(service, study_document, 200);
   CHECK(receipt.at("recomputed") == 2);
@@ -62,6 +74,7 @@ TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting th
     CHECK(detail.at("status") == "done");
     CHECK(detail.at("data_file_check").at("state") == "ok");
     CHECK(detail.at("attempt_history").size() == 2);
+    CHECK(download_status(service, id) == 200);
   }
   // Every case done: a resubmission says so.
   const auto again = submit(service, study_document, 200);
