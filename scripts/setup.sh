@@ -14,6 +14,7 @@ packages=(
   nlohmann-json3-dev
   libcpp-httplib-dev
   catch2
+  json-schema-test-suite
   libcli11-dev
   libeigen3-dev
   chromium

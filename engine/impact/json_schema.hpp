@@ -1,4 +1,6 @@
 #pragma once
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -18,15 +20,25 @@ std::string pointer_child(const std::string& pointer, const std::string& token);
 // "POINTER: MESSAGE" per violation, one a line; the document itself is shown as "(document)".
 std::string describe(const std::vector<SchemaViolation>& violations);
 
+// The keywords JsonSchema implements, assertions and annotations alike (see JsonSchema).
+std::vector<std::string> json_schema_keywords();
+
 // A JSON Schema (draft 2020-12) validator for the subset of the standard that the project's
 // schemas (schemas/*.schema.json) use, so that the schema files are the contract and the code
 // enforces exactly what they say. Implemented keywords:
-//   type, enum, const, minimum, maximum, exclusiveMinimum, exclusiveMaximum, minLength, maxLength,
-//   minItems, maxItems, items, required, properties, additionalProperties, allOf, anyOf, oneOf,
-//   not, if/then/else, $ref (to "#/$defs/NAME" of the same document), $defs;
-// annotations (not checked): $schema, $id, $comment, title, description, default, examples,
-// format, deprecated, readOnly, writeOnly. A schema using any other keyword is rejected when the
-// validator is built (std::invalid_argument), so nothing in a schema is silently ignored.
+//   type, enum, const, multipleOf, minimum, maximum, exclusiveMinimum, exclusiveMaximum,
+//   minLength, maxLength (in Unicode code points), minItems, maxItems, items (one schema for every
+//   item), required, properties, additionalProperties, allOf, anyOf, oneOf, not, if/then/else,
+//   $defs, and $ref to any schema of the same document ("#" followed by a JSON pointer, RFC 6901,
+//   percent-decoded as a URI fragment, RFC 3986: "#/$defs/a~1b%25" names $defs member "a/b%");
+//   boolean schemas; annotations (not checked): $schema and $id (at the root only), $comment,
+//   title, description, default, examples, format, deprecated, readOnly, writeOnly.
+// Values are compared as JSON values (const, enum): objects whatever the order of their members,
+// 1 and 1.0 as the same number.
+// The schema itself is checked when the validator is built (std::invalid_argument naming the
+// place): a keyword it does not implement (so that nothing in a schema is silently ignored), a
+// keyword value of the wrong kind (e.g. "minimum": "x"), a $ref that does not lead to a schema of
+// the document, or references that would apply to the same value without end.
 class JsonSchema {
  public:
   explicit JsonSchema(nlohmann::ordered_json schema);
@@ -37,15 +49,26 @@ class JsonSchema {
   // branch an if/then/else or a oneOf selects are applied too.
   std::vector<SchemaViolation> validate_and_complete(nlohmann::ordered_json& document) const;
 
-  const nlohmann::ordered_json& schema() const { return schema_; }
+  const nlohmann::ordered_json& schema() const { return compiled_->schema; }
+
+  // The checked schema and the target of each of its references (copies of a JsonSchema share it).
+  struct Compiled {
+    nlohmann::ordered_json schema;
+    std::map<std::string, const nlohmann::ordered_json*> references;
+  };
 
  private:
-  void check(const nlohmann::ordered_json& schema, nlohmann::ordered_json& value, const std::string& pointer,
-             bool complete, std::vector<SchemaViolation>& out) const;
-  bool matches(const nlohmann::ordered_json& schema, const nlohmann::ordered_json& value) const;
-  const nlohmann::ordered_json& resolve(const std::string& reference) const;
-
-  nlohmann::ordered_json schema_;
+  std::shared_ptr<const Compiled> compiled_;
 };
+
+// Checks a schema (see JsonSchema) and resolves its references; std::invalid_argument otherwise.
+std::shared_ptr<const JsonSchema::Compiled> compile_json_schema(nlohmann::ordered_json schema);
+
+// Equality of JSON values as JSON Schema defines it (const, enum): objects equal whatever the
+// order of their members, numbers by value (1 == 1.0), no equality across types (false != 0).
+bool json_equal(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b);
+
+// The number of Unicode code points of UTF-8 text (minLength and maxLength count these).
+std::size_t code_points(const std::string& utf8);
 
 }  // namespace aerobreak

@@ -15,7 +15,11 @@ std::vector<std::string> worker_job_command(const LauncherConfig& config) {
   if (config.kind == "mpirun") {
     command = {"mpirun", "-np", std::to_string(config.ranks)};
   } else if (config.kind == "srun") {
-    command = {"srun", "--ntasks=" + std::to_string(config.ranks), "--input=0"};
+    // Tasks that srun starts itself find each other through Slurm's PMIx plugin, which Debian's
+    // Open MPI needs (without it every task fails in MPI_Init: "OMPI was not built with SLURM's
+    // PMI support"); tests/slurm/run_slurm_study.sh ran it against a real Slurm. A site whose
+    // Open MPI wants PMI-2 overrides it: --launcher-arg=--mpi=pmi2 (the later option wins).
+    command = {"srun", "--ntasks=" + std::to_string(config.ranks), "--input=0", "--mpi=pmix"};
   } else if (config.kind == "direct") {
     if (config.ranks != 1) throw std::invalid_argument("the direct launcher runs exactly one rank");
   } else {

@@ -9,8 +9,9 @@ namespace aerobreak {
 // reads cases on the launcher's stdin, which must reach rank 0.
 //   mpirun  Open MPI: mpirun -np RANKS [ARGS...] AEROBREAK worker. With one rank it runs on a
 //           laptop; with --hostfile FILE in ARGS it spans machines.
-//   srun    Slurm: srun --ntasks=RANKS --input=0 [ARGS...] AEROBREAK worker, inside an allocation
-//           (--input=0: stdin to task 0 only).
+//   srun    Slurm: srun --ntasks=RANKS --input=0 --mpi=pmix [ARGS...] AEROBREAK worker, inside an
+//           allocation or making one (--input=0: stdin to task 0 only; --mpi=pmix: the ranks find
+//           each other through Slurm's PMIx, as Open MPI needs when srun starts them).
 //   direct  AEROBREAK worker as a single process (an MPI singleton; no launcher needed).
 struct LauncherConfig {
   std::string kind = "mpirun";

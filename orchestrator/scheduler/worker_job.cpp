@@ -32,6 +32,12 @@ void write_all(int fd, const std::string& text) {
   }
 }
 
+// Whether the process has ended, leaving it unreaped (its id stays taken).
+bool launcher_ended(pid_t pid) {
+  siginfo_t info{};
+  return ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+}
+
 // Open MPI refuses to start as root unless told; the orchestrator runs where its user runs it
 // (containers and CI run as root), so it says so for the jobs it starts.
 void allow_mpirun_as_root() {
@@ -167,6 +173,16 @@ std::optional<int> WorkerJob::exit_status() {
 
 void WorkerJob::kill() {
   if (exit_status()) return;
+  // SIGTERM first: the launcher then ends its ranks itself, on other machines too, and srun ends
+  // the job step and gives back the allocation it made. An srun that got SIGKILL leaves that to
+  // Slurm, which with the default InactiveLimit=0 keeps the job and its nodes until the job's time
+  // limit (seen with tests/slurm/run_slurm_study.sh: RUNNING after `aerobreak run` had ended).
+  ::kill(-pid_, SIGTERM);
+  const auto deadline = std::chrono::steady_clock::now() + kTerminationGrace;
+  while (!launcher_ended(pid_) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  // Whatever of the group is left on this machine (or a launcher that ignored SIGTERM) ends now;
+  // the launcher is reaped only after this, so that its id cannot name another process group.
   ::kill(-pid_, SIGKILL);
   int status = 0;
   while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}

@@ -44,8 +44,11 @@ class WorkerJob {
 
   // Exit status once the process has ended (waitpid, non-blocking): the exit code, or 128 + signal.
   std::optional<int> exit_status();
-  // Sends SIGKILL to the job's process group and reaps the launcher.
+  // Ends the job: SIGTERM to its process group, so that the launcher ends its ranks and (srun)
+  // its Slurm job step and allocation; SIGKILL to the group after kTerminationGrace, or once the
+  // launcher has ended, for whatever is left on this machine. Reaps the launcher.
   void kill();
+  static constexpr std::chrono::seconds kTerminationGrace{5};
 
  private:
   void read_output();

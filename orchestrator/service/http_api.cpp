@@ -16,6 +16,7 @@
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/service/summary_endpoints.hpp"
 #include "orchestrator/service/web_endpoints.hpp"
 
 namespace aerobreak {
@@ -104,11 +105,6 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
     json["progress"] = to_json(*store.progress(study.id));
     send_json(response, 200, json);
   }));
-  server.Get(R"(/api/studies/(\d+)/progress)",
-             guarded([&store](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               send_json(response, 200, to_json(*store.progress(study.id)));
-             }));
   server.Get(R"(/api/studies/(\d+)/cases)",
              guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
                const auto study = existing_study(store, path_id(request));
@@ -133,13 +129,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
                const auto page = page_request(request, options);
                send_json(response, 200, page_json(store.results(study.id, outcome, page), page));
              }));
-  server.Get(R"(/api/studies/(\d+)/outcomes)",
-             guarded([&store](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               auto json = outcome_table_json(store.outcomes(study.id));
-               json["study"] = study.id;
-               send_json(response, 200, json);
-             }));
+  register_summary_endpoints(server, store);
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {
                 const auto study = existing_study(store, path_id(request));

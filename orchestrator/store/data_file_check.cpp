@@ -5,7 +5,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "orchestrator/store/file_checksum.hpp"
+#include "orchestrator/study/sha256.hpp"
 
 namespace aerobreak {
 namespace {
@@ -49,7 +49,7 @@ DataFileCheck DataFileChecker::check(const std::string& path, const DataFileDige
   }
   if (sha256.empty()) {
     try {
-      sha256 = file_sha256_hex(path);
+      sha256 = sha256_hex_of_file(path);
     } catch (const std::exception& error) {
       return {DataFileState::damaged, error.what()};
     }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "orchestrator/store/outcome_migration.hpp"
+#include "orchestrator/store/store_summaries.hpp"
 
 namespace aerobreak {
 namespace {
@@ -120,8 +121,42 @@ ALTER TABLE results ADD COLUMN energy_over_rolling REAL;
 ALTER TABLE results ADD COLUMN initial_contacts INTEGER;
 )sql";
 
-// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+// Summaries of each study and of each of its grid points, kept by triggers (store_summaries.hpp):
+// the read endpoints no longer aggregate every case of a study per request. migrate_store fills
+// them and creates the triggers right after this step.
 constexpr std::string_view kVersion3 = R"sql(
+CREATE TABLE study_summaries (
+  study_id           INTEGER PRIMARY KEY REFERENCES studies (id),
+  queued             INTEGER NOT NULL DEFAULT 0,
+  running            INTEGER NOT NULL DEFAULT 0,
+  done               INTEGER NOT NULL DEFAULT 0,
+  failed             INTEGER NOT NULL DEFAULT 0,
+  cancelled          INTEGER NOT NULL DEFAULT 0,
+  first_started_at   REAL,
+  last_finished_at   REAL,
+  finished_here      INTEGER NOT NULL DEFAULT 0,
+  case_state_version INTEGER NOT NULL DEFAULT 0,
+  result_set_version INTEGER NOT NULL DEFAULT 0
+);
+
+CREATE TABLE grid_point_summaries (
+  study_id     INTEGER NOT NULL REFERENCES studies (id),
+  grid_key     TEXT NOT NULL,
+  position     INTEGER NOT NULL,
+  grid_point   TEXT NOT NULL,
+  cases        INTEGER NOT NULL DEFAULT 0,
+  stick        INTEGER NOT NULL DEFAULT 0,
+  bounce       INTEGER NOT NULL DEFAULT 0,
+  break_up     INTEGER NOT NULL DEFAULT 0,
+  undetermined INTEGER NOT NULL DEFAULT 0,
+  failed       INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (study_id, grid_key)
+) WITHOUT ROWID;
+CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
+)sql";
+
+// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+constexpr std::string_view kVersion4 = R"sql(
 ALTER TABLE results ADD COLUMN data_file_size INTEGER;
 ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
 )sql";
@@ -130,7 +165,8 @@ constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
-    Migration{3, "size and SHA-256 of each result's data file", kVersion3},
+    Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
+    Migration{4, "size and SHA-256 of each result's data file", kVersion4},
 };
 
 int user_version(SqliteDatabase& db) {
@@ -145,18 +181,25 @@ std::span<const Migration> store_migrations() { return kMigrations; }
 
 int latest_store_version() { return kMigrations.back().version; }
 
-int migrate_store(SqliteDatabase& db) {
+int migrate_store(SqliteDatabase& db) { return migrate_store(db, kMigrations); }
+
+int migrate_store(SqliteDatabase& db, std::span<const Migration> steps) {
   const int found = user_version(db);
-  if (found > latest_store_version()) {
+  const int latest = steps.empty() ? 0 : steps.back().version;
+  if (found > latest) {
     throw SqliteError("the store has schema version " + std::to_string(found) + ", newer than this aerobreak (" +
-                          std::to_string(latest_store_version()) + "); use a newer aerobreak",
+                          std::to_string(latest) + "); use a newer aerobreak",
                       SQLITE_MISMATCH);
   }
-  for (const Migration& step : kMigrations) {
+  for (const Migration& step : steps) {
     if (step.version <= found) continue;
     SqliteTransaction transaction(db);
+    // Whatever a step changes (outcomes re-classified, a table re-created), the summaries are
+    // recomputed after it in the same transaction; their triggers stay out of its way meanwhile.
+    drop_store_summary_triggers(db);
     db.execute(step.sql);
     if (step.upgrade) step.upgrade(db);
+    if (has_store_summaries(db)) rebuild_store_summaries(db);
     db.execute("PRAGMA user_version = " + std::to_string(step.version));
     transaction.commit();
   }

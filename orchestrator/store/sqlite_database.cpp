@@ -105,6 +105,8 @@ void SqliteStatement::reset() {
   sqlite3_clear_bindings(statement_);
 }
 
+int SqliteStatement::column_count() const { return sqlite3_column_count(statement_); }
+
 bool SqliteStatement::is_null(int column) const { return sqlite3_column_type(statement_, column) == SQLITE_NULL; }
 
 std::int64_t SqliteStatement::integer(int column) const { return sqlite3_column_int64(statement_, column); }

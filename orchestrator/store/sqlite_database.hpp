@@ -79,6 +79,7 @@ class SqliteStatement {
   void run() { while (step()) {} }
   void reset();
 
+  int column_count() const;
   bool is_null(int column) const;
   std::int64_t integer(int column) const;
   double real(int column) const;

@@ -5,6 +5,7 @@
 
 #include "orchestrator/store/migrations.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
+#include "orchestrator/store/store_summaries.hpp"
 
 namespace aerobreak {
 
@@ -403,6 +404,13 @@ bool Store::cancel_study(std::int64_t study_id) {
       .run();
   transaction.commit();
   return true;
+}
+
+void Store::rebuild_summaries() {
+  std::lock_guard lock(write_mutex_);
+  SqliteTransaction transaction(*writer_);
+  rebuild_store_summaries(*writer_);
+  transaction.commit();
 }
 
 }  // namespace aerobreak

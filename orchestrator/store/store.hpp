@@ -77,16 +77,28 @@ class Store {
   // Running cases finish (their results are kept). False when there is no such active study.
   bool cancel_study(std::int64_t study_id);
 
+  // Recomputes the per-study and per-grid-point summaries from the cases and results
+  // (store_summaries.hpp). Never needed in operation (triggers keep them, migrations rebuild them);
+  // for checks and repairs.
+  void rebuild_summaries();
+
   // --- Reader side (any thread) -----------------------------------------------------------------
 
   std::size_t claimable_cases();
   Page<StudyRecord> studies(const PageRequest& page);
   std::optional<StudyRecord> study(std::int64_t study_id);
+  // Progress and outcome table come from the summaries the store keeps as cases change
+  // (store_summaries.hpp): one row per study, one per grid point, whatever the number of cases.
   std::optional<StudyProgress> progress(std::int64_t study_id);
   Page<CaseRecord> cases(std::int64_t study_id, std::optional<CaseStatus> status, const PageRequest& page);
   Page<CaseRecord> cases(std::int64_t study_id, const CaseFilter& filter, const PageRequest& page);
   Page<ResultRecord> results(std::int64_t study_id, std::optional<std::string> outcome, const PageRequest& page);
   std::vector<GridPointOutcomes> outcomes(std::int64_t study_id);
+  // One row read: the versions of a study's case states and of its result set (nullopt: no such
+  // study). A cache of anything computed from a study's results (an outcome table, fitted
+  // correlations) keys on `result_set`; of anything that shows case states (progress, failures) on
+  // `case_states` too. Both change in the transaction that changes what they stand for.
+  std::optional<StudyVersions> study_versions(std::int64_t study_id);
   // Per grid point, in submission order: the outcome counts and the moments of the results'
   // scalar quantities (store_grid_queries.cpp).
   std::vector<GridPointStatistics> grid_statistics(std::int64_t study_id);

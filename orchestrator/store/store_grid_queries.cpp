@@ -1,5 +1,6 @@
-// The store's per-grid-point queries: outcome counts, moments of the results' scalar quantities and
-// fragment-size counts, aggregated by SQLite so that a study of 100,000 cases answers in one pass.
+// The store's per-grid-point queries: outcome counts (from the summaries), moments of the results'
+// scalar quantities and fragment-size counts, aggregated by SQLite so that a study of 100,000 cases
+// answers in one pass.
 #include <array>
 #include <map>
 #include <optional>
@@ -86,6 +87,8 @@ std::vector<GridPointStatistics> Store::grid_statistics(std::int64_t study_id) {
   return cells;
 }
 
+// The outcome table with every column (means and flag counts need the results themselves); the
+// service caches it by the study's versions, so that it is computed once per change of the results.
 std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
   std::vector<GridPointOutcomes> cells;
   for (auto& statistics : grid_statistics(study_id)) cells.push_back(std::move(statistics.outcomes));

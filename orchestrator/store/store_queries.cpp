@@ -32,7 +32,8 @@ StudyRecord study_from(const SqliteStatement& row) {
 
 constexpr std::string_view kStudyColumns =
     "SELECT s.id, s.hash, s.name, s.description, s.status, s.created_at, s.cancelled_at, s.max_attempts, "
-    "s.case_wall_time, (SELECT count(*) FROM study_cases sc WHERE sc.study_id = s.id), s.document FROM studies s ";
+    "s.case_wall_time, (SELECT u.queued + u.running + u.done + u.failed + u.cancelled FROM study_summaries u "
+    "WHERE u.study_id = s.id), s.document FROM studies s ";
 
 constexpr std::string_view kCaseColumns =
     "SELECT c.id, c.hash, c.status, c.attempts, c.failures, c.max_attempts, c.wall_time_limit, c.job_id, c.worker, "
@@ -149,37 +150,28 @@ std::optional<StudyRecord> Store::study(std::int64_t study_id) {
 
 std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
   auto db = read();
-  auto exists = db->prepare("SELECT status FROM studies WHERE id = ?");
-  exists.bind_all(study_id);
-  if (!exists.step()) return std::nullopt;
+  auto statement = db->prepare(
+      "SELECT queued, running, done, failed, cancelled, first_started_at, last_finished_at, finished_here "
+      "FROM study_summaries WHERE study_id = ?");
+  statement.bind_all(study_id);
+  if (!statement.step()) return std::nullopt;
 
   StudyProgress progress;
   progress.study_id = study_id;
+  int column = 0;
   for (const auto status : {CaseStatus::queued, CaseStatus::running, CaseStatus::done, CaseStatus::failed,
-                            CaseStatus::cancelled})
-    progress.by_status[std::string(to_string(status))] = 0;
-  auto statement = db->prepare(
-      "SELECT c.status, count(*), min(c.started_at), max(c.finished_at) FROM study_cases sc "
-      "JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? GROUP BY c.status");
-  statement.bind_all(study_id);
-  while (statement.step()) {
-    const auto n = static_cast<std::size_t>(statement.integer(1));
-    progress.by_status[statement.text(0)] = n;
+                            CaseStatus::cancelled}) {
+    const auto n = static_cast<std::size_t>(statement.integer(column++));
+    progress.by_status[std::string(to_string(status))] = n;
     progress.total += n;
-    if (const auto first = statement.optional_real(2))
-      progress.first_started_at = std::min(progress.first_started_at.value_or(*first), *first);
-    if (const auto last = statement.optional_real(3))
-      progress.last_finished_at = std::max(progress.last_finished_at.value_or(*last), *last);
   }
+  progress.first_started_at = statement.optional_real(5);
+  progress.last_finished_at = statement.optional_real(6);
   const std::size_t remaining = progress.by_status["queued"] + progress.by_status["running"];
   progress.complete = remaining == 0;
-  // The rate counts the cases finished for this study since its first case started; a case
-  // finished for an earlier study costs nothing here and is left out.
-  auto finished_here = db->prepare(
-      "SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id JOIN studies s ON s.id = sc.study_id "
-      "WHERE sc.study_id = ? AND c.status IN ('done', 'failed') AND c.finished_at >= s.created_at");
-  finished_here.bind_all(study_id);
-  const std::size_t finished = count(std::move(finished_here));
+  // The rate counts the cases finished for this study since it was created; a case finished for an
+  // earlier study costs nothing here and is left out.
+  const auto finished = static_cast<std::size_t>(statement.integer(7));
   if (progress.first_started_at && finished > 0) {
     const double end = progress.complete && progress.last_finished_at ? *progress.last_finished_at : unix_seconds();
     const double elapsed = std::max(end - *progress.first_started_at, 1e-3);
@@ -187,6 +179,14 @@ std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
     progress.seconds_left = static_cast<double>(remaining) / progress.cases_per_hour * 3600.0;
   }
   return progress;
+}
+
+std::optional<StudyVersions> Store::study_versions(std::int64_t study_id) {
+  auto db = read();
+  auto statement = db->prepare("SELECT case_state_version, result_set_version FROM study_summaries WHERE study_id = ?");
+  statement.bind_all(study_id);
+  if (!statement.step()) return std::nullopt;
+  return StudyVersions{statement.integer(0), statement.integer(1)};
 }
 
 Page<CaseRecord> Store::cases(std::int64_t study_id, std::optional<CaseStatus> status, const PageRequest& page) {

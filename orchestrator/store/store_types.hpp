@@ -89,6 +89,13 @@ struct StudyProgress {
   bool complete = false;                          // nothing queued or running
 };
 
+// Versions of what a study's read endpoints show (store_summaries.hpp); both only grow within a
+// store, so that a cache keyed on them is never stale.
+struct StudyVersions {
+  std::int64_t case_states = 0;  // +1 whenever one of the study's cases changes status or times
+  std::int64_t result_set = 0;   // +1 whenever a result of one of its cases is stored, changed or removed
+};
+
 struct CaseRecord {
   std::int64_t id = 0;
   std::string hash;

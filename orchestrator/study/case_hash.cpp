@@ -1,7 +1,5 @@
 #include "orchestrator/study/case_hash.hpp"
 
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 #include "orchestrator/study/canonical_json.hpp"
@@ -13,11 +11,11 @@ namespace {
 
 std::string file_digest(const std::string& path, ClusterFileDigests& digests) {
   if (const auto found = digests.find(path); found != digests.end()) return found->second;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read cluster file " + path + " to hash it");
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw std::runtime_error("cannot read cluster file " + path + " to hash it");
-  return digests[path] = sha256_hex(bytes);
+  try {
+    return digests[path] = sha256_hex_of_file(path);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(std::string("cluster file: ") + error.what());
+  }
 }
 
 }  // namespace

@@ -13,13 +13,8 @@ source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d /tmp/aerobreak-bench.XXXXXX)
 trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 
-missing=()
-command -v wrk >/dev/null || missing+=(wrk)
-command -v sqlite3 >/dev/null || missing+=(sqlite3)
-if ((${#missing[@]})); then
-  sudo=$([ "$(id -u)" -eq 0 ] && echo "" || echo sudo)
-  $sudo apt-get update -qq && $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+source "$source_dir/tests/bench/wrk_support.sh"
+install_bench_tools
 
 if [ "${SKIP_DEFAULT:-0}" = 1 ]; then
   "$aerobreak" run "$source_dir/studies/default.study.json" --store "$work/default-2.sqlite" --ranks 2 --port 0 >/dev/null 2>&1
@@ -68,9 +63,5 @@ echo "== read endpoints under wrk (2 threads, 16 connections, 10 s each)"
 for _ in $(seq 100); do [ -s "$work/port" ] && break; sleep 0.1; done
 url="http://127.0.0.1:$(cat "$work/port")"
 for path in /api/health /api/studies/1/progress /api/studies/1/outcomes "/api/studies/1/results?limit=100" /api/cases/1; do
-  out=$(wrk -t2 -c16 -d10s --latency "$url$path")
-  rps=$(awk '/Requests\/sec/ {print $2}' <<<"$out")
-  p99=$(awk '$1 == "99%" {print $2}' <<<"$out")
-  errors=$(awk '/Non-2xx/ {print $NF}' <<<"$out")
-  printf "%-36s %10s requests/s   p99 %8s   non-2xx %s\n" "$path" "$rps" "$p99" "${errors:-0}"
+  DURATION=10 wrk_figures "$path" "$url$path"
 done

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Read endpoints at scale (docs/ORCHESTRATOR.md, "Performance"); prints figures, asserts nothing.
+# Fills a store with one study of 100,000 finished cases (100 grid points x 1,000 replicates, results
+# of about 1 KB each), written by direct SQL in one transaction, then serves it with
+# `aerobreak serve` and measures each read endpoint with wrk on loopback (2 threads, 16
+# connections): requests per second and the 99th percentile latency.
+# Usage: tests/bench/read_endpoints_bench.sh [BUILD_DIR]   (installs wrk and sqlite3 if missing)
+#   CASES=N (default 100000), GRID_POINTS=N (100), DURATION=seconds per endpoint (10), ROUNDS=N (1),
+#   KEEP=1 keeps the filled store (its path is printed)
+set -euo pipefail
+build=${1:-build}
+aerobreak=$(realpath "$build/aerobreak")
+cases=${CASES:-100000}
+grid_points=${GRID_POINTS:-100}
+rounds=${ROUNDS:-1}
+work=$(mktemp -d /tmp/aerobreak-read-bench.XXXXXX)
+server=
+stop_server() {
+  if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; server=; fi
+}
+trap 'stop_server; if [ "${KEEP:-0}" = 1 ]; then echo "kept $work/store.sqlite"; else rm -rf "$work"; fi' EXIT
+
+source "$(dirname "$0")/wrk_support.sh"
+install_bench_tools
+
+store="$work/store.sqlite"
+start_server() {
+  rm -f "$work/port"
+  "$aerobreak" serve --store "$store" --port 0 --port-file "$work/port" --ranks 1 2>>"$work/serve.log" &
+  server=$!
+  for _ in $(seq 300); do [ -s "$work/port" ] && return; sleep 0.1; done
+  echo "serve did not start:" >&2; cat "$work/serve.log" >&2; exit 1
+}
+
+# The store's schema as this aerobreak makes it: serve once on an empty store.
+start_server
+stop_server
+
+echo "== filling the store: $cases finished cases, $grid_points grid points"
+start=$(date +%s.%N)
+sqlite3 "$store" <<SQL
+PRAGMA cache_size = -400000;
+BEGIN;
+INSERT INTO studies (id, hash, name, description, document, status, max_attempts, case_wall_time, created_at)
+  VALUES (1, 'read-endpoints-bench', 'read endpoints bench', '', '{"name": "read endpoints bench"}', 'active', 3, 600,
+          unixepoch() - 7200);
+CREATE TEMP TABLE n AS
+  WITH RECURSIVE k(k) AS (SELECT 0 UNION ALL SELECT k + 1 FROM k WHERE k + 1 < $cases)
+  SELECT k, k % $grid_points AS g, k / $grid_points AS replicate,
+         CASE abs(random()) % 10 WHEN 0 THEN 'bounce' WHEN 1 THEN 'undetermined'
+           WHEN 2 THEN 'break-up' WHEN 3 THEN 'break-up' ELSE 'stick' END AS outcome
+  FROM k;
+INSERT INTO cases (id, hash, document, status, attempts, max_attempts, wall_time_limit, queued_at, started_at, finished_at)
+  SELECT k + 1, printf('%064x', k), '{"bench": ' || k || '}', 'done', 1, 3, 600, unixepoch() - 7200,
+         unixepoch() - 7000 + k * 0.05, unixepoch() - 7000 + k * 0.05 + 0.2
+  FROM n;
+INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate)
+  SELECT 1, k + 1, k, json_object('impact_speed', 0.001 * (g + 1)), json_object('impact_speed', 0.001 * (g + 1)),
+         replicate
+  FROM n;
+INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count,
+                     mass_fraction_on_wall, impact_energy, wall_clock_seconds, data_file, document, committed_at)
+  SELECT k + 1, 1, outcome, 0.1, 0.9, 2, 1.0, 0.001, 0.2, NULL,
+         json_object('outcome', json_object('class', outcome), 'padding', hex(randomblob(450))),
+         unixepoch() - 7000 + k * 0.05 + 0.2
+  FROM n;
+COMMIT;
+SQL
+end=$(date +%s.%N)
+printf "filled in %.1f s (%s MB)\n" "$(echo "$end - $start" | bc -l)" "$(du -m "$store" | cut -f1)"
+
+start_server
+url="http://127.0.0.1:$(cat "$work/port")"
+etag=$(curl -s -D - -o /dev/null "$url/api/studies/1/outcomes" | awk -F': ' 'tolower($1) == "etag" {print $2}' | tr -d '\r')
+
+# Warm-up, not reported: the server's threads open their pooled store connections, the outcome
+# table is made once.
+for path in /api/health /api/studies/1/progress /api/studies/1/outcomes; do
+  wrk -t2 -c16 -d2s "$url$path" >/dev/null
+done
+
+echo "== read endpoints under wrk (2 threads, 16 connections, ${DURATION:-10} s each), $cases results"
+for round in $(seq "$rounds"); do
+  ((rounds > 1)) && echo "-- round $round"
+  for path in /api/health /api/studies/1/progress /api/studies/1/outcomes; do wrk_figures "$path" "$url$path"; done
+  if [ -n "$etag" ]; then
+    wrk_figures "/api/studies/1/outcomes (If-None-Match)" "$url/api/studies/1/outcomes" -H "If-None-Match: $etag"
+  fi
+done

@@ -1,0 +1,76 @@
+// Progress and the outcome table over real HTTP: served from the store's summaries, the outcome
+// table with an ETag that follows the study's results, and 304 for a client that has it.
+#include "tests/orchestrator/service_process.hpp"
+
+namespace aerobreak::testing {
+namespace {
+
+struct Answer {
+  int status = 0;
+  std::string etag;
+  std::string body;
+};
+
+Answer get(const ServiceProcess& service, const std::string& path, const std::string& if_none_match = "") {
+  auto client = service.client();
+  httplib::Headers headers;
+  if (!if_none_match.empty()) headers.emplace("If-None-Match", if_none_match);
+  const auto response = client.Get(path.c_str(), headers);
+  REQUIRE(response);
+  return {response->status, response->get_header_value("ETag"), response->body};
+}
+
+}  // namespace
+
+TEST_CASE("The outcome table's ETag follows the study's results, and If-None-Match gets 304", "[service]") {
+  ScratchDirectory scratch("read-endpoints");
+  ServiceProcess service(scratch.path());
+  const auto study = submit(service, small_study("tagged", {0.005, 0.08}, 2)).at("id").get<std::int64_t>();
+  const std::string path = "/api/studies/" + std::to_string(study) + "/outcomes";
+  const Answer before = get(service, path);
+  REQUIRE(before.status == 200);
+  REQUIRE_FALSE(before.etag.empty());
+
+  REQUIRE(eventually([&] { return study_complete(service, study); }, 120s));
+  const Answer after = get(service, path);
+  REQUIRE(after.status == 200);
+  CHECK(after.etag != before.etag);
+  const auto table = Json::parse(after.body);
+  REQUIRE(table.at("grid_points").size() == 2);
+  for (const auto& point : table.at("grid_points")) CHECK(point.at("finished") == 2);
+  const auto progress = service.get("/api/studies/" + std::to_string(study) + "/progress");
+  CHECK(progress.at("counts").at("done") == 4);
+  CHECK(progress.at("complete") == true);
+
+  for (const std::string& tags : {after.etag, "W/" + after.etag, std::string("*"), "\"other\", " + after.etag}) {
+    INFO("If-None-Match: " << tags);
+    const Answer cached = get(service, path, tags);
+    CHECK(cached.status == 304);
+    CHECK(cached.body.empty());
+    CHECK(cached.etag == after.etag);
+  }
+  const Answer outdated = get(service, path, before.etag);
+  CHECK(outdated.status == 200);
+  CHECK(outdated.body == after.body);
+
+  // Another study, even one sharing finished cases, changes nothing of this one.
+  const auto other = submit(service, small_study("sharing", {0.08, 0.3}, 2)).at("id").get<std::int64_t>();
+  REQUIRE(eventually([&] { return study_complete(service, other); }, 120s));
+  CHECK(get(service, path, after.etag).status == 304);
+  const auto shared = Json::parse(get(service, "/api/studies/" + std::to_string(other) + "/outcomes").body);
+  CHECK(shared.at("grid_points")[0].at("finished") == 2);
+  CHECK(service.kill(SIGTERM) == 0);
+}
+
+TEST_CASE("Progress and outcomes of a study that does not exist are 404 with a JSON body", "[service]") {
+  ScratchDirectory scratch("read-endpoints-404");
+  ServiceProcess service(scratch.path());
+  for (const char* path : {"/api/studies/999/progress", "/api/studies/999/outcomes"}) {
+    INFO(path);
+    const Answer answer = get(service, path);
+    CHECK(answer.status == 404);
+    CHECK(Json::parse(answer.body).at("error") == "no study 999");
+  }
+}
+
+}  // namespace aerobreak::testing
