@@ -144,6 +144,13 @@ inline Json small_study(const std::string& name, Json speeds, int replicates, in
           {"execution", {{"max_attempts", 3}, {"case_wall_time", 600}}}};
 }
 
+// Cases of ~0.3-1 s each on one core: slow enough to kill something, or fill a disk, mid-study.
+inline Json slow_study(const std::string& name, int cases) {
+  Json speeds = Json::array();
+  for (int i = 0; i < cases; ++i) speeds.push_back(0.004 + 0.001 * i);
+  return small_study(name, speeds, 1, 128, 40000.0);
+}
+
 inline Json submit(const ServiceProcess& service, const Json& study, int expected_status = 201) {
   auto client = service.client();
   const auto response = client.Post("/api/studies", study.dump(), "application/json");

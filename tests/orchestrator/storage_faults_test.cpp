@@ -14,13 +14,6 @@
 namespace aerobreak::testing {
 namespace {
 
-// Cases of ~0.3-1 s each: a study still running when the disk fills.
-Json slow_study(const std::string& name, int cases) {
-  Json speeds = Json::array();
-  for (int i = 0; i < cases; ++i) speeds.push_back(0.004 + 0.001 * i);
-  return small_study(name, speeds, 1, 128, 40000.0);
-}
-
 // A tmpfs of `size` mounted at `directory` for the test's lifetime (needs root, as CI has).
 class SmallFileSystem {
  public:
