@@ -126,9 +126,10 @@ int run(RunOptions options) {
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
+  const std::string recomputed =
+      receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "";
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done" << (receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "")
-            << "), store " << store.file().string() << "\n"
+            << " already done" << recomputed << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
             << " in a browser (API: " << study_url << ")\n";

@@ -109,11 +109,14 @@ nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<Dat
   json["data_file_check"] = nullptr;
   if (data_file_check) {
     const auto& digest = detail.data_file_digest;
+    const auto text_or_null = [](const std::string& text) {
+      return text.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(text);
+    };
     json["data_file_check"] = {
         {"state", std::string(to_string(data_file_check->state))},
-        {"problem", data_file_check->problem.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(data_file_check->problem)},
+        {"problem", text_or_null(data_file_check->problem)},
         {"size", digest.size >= 0 ? nlohmann::ordered_json(digest.size) : nlohmann::ordered_json(nullptr)},
-        {"sha256", digest.sha256.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(digest.sha256)}};
+        {"sha256", text_or_null(digest.sha256)}};
   }
   json["result"] = detail.result ? *detail.result : nlohmann::ordered_json(nullptr);
   return json;

@@ -38,6 +38,11 @@ void submit_study(const httplib::Request& request, httplib::Response& response, 
   }
 }
 
+nlohmann::ordered_json storage_fault_json(const std::optional<StorageFaultStatus>& fault) {
+  if (!fault) return nullptr;
+  return {{"error", fault->error}, {"since", fault->since}, {"waiting_writes", fault->waiting_writes}};
+}
+
 nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
   nlohmann::ordered_json json{{"status", "ok"},
                               {"version", std::string(version())},
@@ -62,10 +67,7 @@ nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
                        {"consecutive_launch_failures", status.consecutive_launch_failures},
                        {"last_error", status.last_error.empty() ? nlohmann::ordered_json(nullptr)
                                                                 : nlohmann::ordered_json(status.last_error)},
-                       {"storage_fault", status.storage_fault ? nlohmann::ordered_json{{"error", status.storage_fault->error},
-                                                                                       {"since", status.storage_fault->since},
-                                                                                       {"waiting_writes", status.storage_fault->waiting_writes}}
-                                                              : nlohmann::ordered_json(nullptr)}};
+                       {"storage_fault", storage_fault_json(status.storage_fault)}};
   if (status.consecutive_launch_failures > 0 || status.storage_fault) json["status"] = "degraded";
   return json;
 }
