@@ -155,11 +155,23 @@ CREATE TABLE grid_point_summaries (
 CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
 )sql";
 
+// Indexes for the dashboard's per-grid-point reads (docs/PERFORMANCE.md, "Dashboard"): a study's
+// cases by grid point (with study_cases' key, case_id), so that one grid point's cases are a range
+// and the cases come grouped by grid point; and the results' summed columns beside their case id,
+// so that aggregating them reads this index instead of the table, whose rows hold the result
+// document (14 kB on average in real stores) with the outcome columns of version 2 after it.
+constexpr std::string_view kVersion4 = R"sql(
+CREATE INDEX study_cases_by_grid_key ON study_cases (study_id, grid_key);
+CREATE INDEX results_statistics ON results (case_id, outcome, retained_mass_fraction, restitution, fragment_count,
+  largest_fragment_share, damage_ratio, energy_per_contact, fractured_on_wall, small_strain_exceeded);
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
     Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
+    Migration{4, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion4},
 };
 
 int user_version(SqliteDatabase& db) {

@@ -108,6 +108,9 @@ struct CaseRecord {
   std::optional<double> restitution;
   std::optional<double> retained_mass_fraction;
   std::optional<std::int64_t> fragment_count;
+  std::optional<double> damage_ratio;
+  std::optional<bool> fractured_on_wall;
+  std::optional<bool> small_strain_exceeded;
 };
 
 // Which of a study's cases to list: each condition that is set must hold.
