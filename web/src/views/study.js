@@ -3,7 +3,7 @@
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
-import { axisLabel, defaultXAxis, sliceAxes, valueKey } from '../series.js';
+import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
 import { loadCorrelations, tableFormats } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
@@ -62,9 +62,11 @@ function header(study, { onCancel }) {
   };
 }
 
-function controls(state, axes, onChange) {
+function controls(state, grid, onChange) {
+  const { axes } = grid;
   const xAxis = state.get('x', defaultXAxis(axes));
-  const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'));
+  const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
+    .concat(derivedXChoices(grid).map((name) => ({ name })));
   const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${axisLabel(axis.name)} `,
     select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]), state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
@@ -109,7 +111,7 @@ export async function showStudy(view, parameters, { showNotice }) {
   let top = header(study, { onCancel });
   const plots = createPlots({ state, correlations });
   const controlsHolder = el('div');
-  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid.axes, (changes) => {
+  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, (changes) => {
     state.set(changes);
     drawControls();
     plots.draw(current.grid);

@@ -5,8 +5,10 @@ import { el, formatNumber, replaceChildren, select } from '../dom.js';
 import { assignColors, plotCurves } from '../charts.js';
 import { fittedCriticalCurves, fittedCurves } from '../correlations.js';
 import {
-  axisLabel, criticalSpeedCurves, curvesAlong, defaultXAxis, fragmentCurves, meanOf, probabilityOf, sliceAxes, valueKey,
+  alongAxis, axisLabel, criticalSpeedCurves, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves, meanOf, probabilityOf,
+  sliceAxes, valueKey,
 } from '../series.js';
+import { createFlags } from './study_flags.js';
 
 function panel(id, title, note) {
   const chart = el('div', { class: 'chart', id: `plot-${id}` });
@@ -38,13 +40,19 @@ function correlationsTable(correlations) {
 }
 
 export function createPlots({ state, correlations }) {
-  const probability = panel('probability', 'Outcome probability', 'Bands: 95 % Wilson intervals of each grid point.');
+  const probability = panel('probability', 'Outcome probability', 'Bands: 95 % Wilson intervals of each grid point. Red ' +
+    'rings: grid points with results outside the small-strain range. Along the energy per contact, each point is a grid ' +
+    'point at its mean E_kin / (N_c E_break).');
   const critical = panel('critical', 'Critical speed against N',
     'Points: where the measured probability crosses 0.5 (interpolated in log speed between grid points).');
   const retained = panel('retained', 'Retained mass fraction', 'Mean of the results, band: 95 % Student interval.');
   const restitution = panel('restitution', 'Restitution (largest fragment, normal)', 'Mean of the results, band: 95 % Student interval.');
+  const damage = panel('damage', 'Damage ratio', 'Initial contacts broken by the end over the initial contacts: mean of the ' +
+    'results, band: 95 % Student interval.');
+  const flags = createFlags();
   const fragments = panel('fragments', 'Fragment-size distribution', 'Fragments of each size per result, one series per grid value.');
-  const node = el('div', {}, el('div', { class: 'grid' }, probability.node, critical.node, retained.node, restitution.node, fragments.node),
+  const node = el('div', {}, el('div', { class: 'grid' }, probability.node, critical.node, retained.node, damage.node, restitution.node,
+    fragments.node, flags.node),
     correlationsTable(correlations));
   let fragmentRequest = 0;
 
@@ -71,16 +79,21 @@ export function createPlots({ state, correlations }) {
     const xLabel = axisLabel(xAxis);
     const measured = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(outcome) });
     assignColors(measured);
-    plotCurves(probability.chart, [...measured, ...fittedCurves(correlations, outcome, measured)],
-      { xLabel, yLabel: `P(${outcome})`, yRange: [0, 1] });
+    const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
+    plotCurves(probability.chart, [...measured, ...fittedCurves(correlations, outcome, measured),
+      ...(flagged.points.length ? [flagged] : [])], { xLabel, yLabel: `P(${outcome})`, yRange: [0, 1] });
 
-    const hasN = grid.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) && xAxis !== 'primaries';
+    const hasN = grid.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) && alongAxis(xAxis) !== 'primaries';
     critical.node.hidden = !hasN;
     if (hasN) plotCurves(critical.chart, [...criticalSpeedCurves(measured), ...fittedCriticalCurves(correlations, outcome)],
       { xLabel: 'N (primaries)', yLabel: `critical ${xLabel} for ${outcome}`, pointsOnly: true, yLog: true });
 
     plotCurves(retained.chart, curvesAlong(grid.grid_points, { ...along, yOf: meanOf('retained_mass_fraction') }),
       { xLabel, yLabel: 'retained mass fraction', yRange: [0, 1] });
+    plotCurves(damage.chart, curvesAlong(grid.grid_points, { ...along, yOf: meanOf('damage_ratio') }),
+      { xLabel, yLabel: 'damage ratio', yRange: [0, 1] });
+    const shownAxes = grid.axes.filter((axis) => axis.values.length > 1 && !(axis.name in slice)).map((axis) => axis.name);
+    flags.draw(grid, { slice, shownAxes });
     plotCurves(restitution.chart, curvesAlong(grid.grid_points, { ...along, yOf: meanOf('restitution') }),
       { xLabel, yLabel: 'normal restitution' });
     return drawFragments(grid.study, measured, xAxis, slice).catch((error) => {
