@@ -109,6 +109,11 @@ class Store {
   // Fragments of the results at the given grid points, counted per grid point and size (grid
   // points without a result are left out).
   std::vector<GridPointFragments> fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys);
+  // Per grid point, in submission order: the document of its first case.
+  std::vector<GridPointCase> grid_point_cases(std::int64_t study_id);
+  // Per grid point with a determined result, in submission order: the mass and count of the
+  // fragments its determined results left, by wall contact and size (store_grid_queries.cpp).
+  std::vector<GridPointFragmentMasses> fragment_masses(std::int64_t study_id);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
   std::vector<JobRecord> jobs(std::size_t limit);
 

@@ -140,3 +140,50 @@ std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, con
 }
 
 }  // namespace aerobreak
+
+namespace aerobreak {
+
+std::vector<GridPointCase> Store::grid_point_cases(std::int64_t study_id) {
+  auto db = read();
+  // SQLite takes the bare columns of a min() aggregate from the row that holds the minimum.
+  auto statement = db->prepare(
+      "SELECT sc.grid_key, sc.grid_point, c.document, min(sc.position) FROM study_cases sc JOIN cases c "
+      "ON c.id = sc.case_id WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  statement.bind_all(study_id);
+  std::vector<GridPointCase> points;
+  while (statement.step())
+    points.push_back({statement.text(0), nlohmann::ordered_json::parse(statement.text(1)),
+                      nlohmann::ordered_json::parse(statement.text(2))});
+  return points;
+}
+
+std::vector<GridPointFragmentMasses> Store::fragment_masses(std::int64_t study_id) {
+  auto db = read();
+  const std::string determined =
+      "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id "
+      "WHERE sc.study_id = ? AND r.outcome <> 'undetermined' ";
+  auto results = db->prepare("SELECT sc.grid_key, count(*), sum(r.outcome = 'break-up') " + determined +
+                             "GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  results.bind_all(study_id);
+  std::vector<GridPointFragmentMasses> points;
+  std::map<std::string, std::size_t> index;
+  while (results.step()) {
+    index[results.text(0)] = points.size();
+    points.push_back({results.text(0), static_cast<std::size_t>(results.integer(1)),
+                      static_cast<std::size_t>(results.integer(2)), {}});
+  }
+  auto classes = db->prepare(
+      "SELECT sc.grid_key, f.on_wall, f.primaries, count(*), total(f.mass) FROM study_cases sc "
+      "JOIN results r ON r.case_id = sc.case_id JOIN fragments f ON f.case_id = r.case_id "
+      "WHERE sc.study_id = ? AND r.outcome <> 'undetermined' GROUP BY 1, 2, 3 ORDER BY 1, 2, 3");
+  classes.bind_all(study_id);
+  while (classes.step()) {
+    const auto found = index.find(classes.text(0));
+    if (found == index.end()) continue;
+    points[found->second].classes.push_back({classes.integer(1) != 0, classes.integer(2),
+                                             static_cast<std::size_t>(classes.integer(3)), classes.real(4)});
+  }
+  return points;
+}
+
+}  // namespace aerobreak

@@ -217,6 +217,30 @@ struct GridPointFragments {
   std::vector<std::pair<std::int64_t, std::size_t>> sizes;  // (primaries, fragments), by size
 };
 
+// The fragments that the determined results (stick, bounce, break-up) of one grid point left, in
+// classes of (on the wall or not, size): what the lookup tables' fragment moments and sectional
+// matrices are computed from (docs/EXPORT.md).
+struct FragmentClass {
+  bool on_wall = false;
+  std::int64_t primaries = 0;
+  std::size_t fragments = 0;  // fragments of this class, over all the grid point's results
+  double mass = 0.0;          // their mass in all
+};
+struct GridPointFragmentMasses {
+  std::string grid_key;
+  std::size_t results = 0;    // determined results
+  std::size_t break_ups = 0;
+  std::vector<FragmentClass> classes;  // by on_wall, then size
+};
+
+// One grid point of a study with the document of its first case (every replicate shares the
+// physics but for the seeds).
+struct GridPointCase {
+  std::string grid_key;
+  nlohmann::ordered_json grid_point;
+  nlohmann::ordered_json document;
+};
+
 struct JobRecord {
   std::int64_t id = 0;
   std::string command;

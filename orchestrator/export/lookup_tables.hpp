@@ -1,0 +1,33 @@
+#pragma once
+#include <cstdint>
+
+#include "orchestrator/export/export_request.hpp"
+#include "orchestrator/export/lookup_table.hpp"
+#include "orchestrator/export/study_export_data.hpp"
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak {
+
+// Table (a): one row per grid point of the study, inputs and outcome statistics (reduced units).
+LookupTable grid_table(const StudyExportData& data);
+
+// Table (c): the sectional fragment matrix for geometric sections of mass ratio `section_ratio`
+// (reduced units): one row per impact condition and source section, the mass fractions that end
+// on the wall and in each section (a column of the matrix; they sum to 1).
+LookupTable sections_table(const StudyExportData& data, double section_ratio);
+
+// The rows of a material's gamma/k_n (docs/EXPORT.md "Units"): those at the study's value within
+// a relative 1e-3, or interpolated linearly in ln(gamma/k_n) between the two bracketing values when
+// `interpolate`; ExportError 422 naming surface_energy otherwise.
+// `material` gives nu for lambda (eq 19) of interpolated rows.
+LookupTable rows_for_gamma(const LookupTable& table, const Material& material, double gamma_over_kn, bool interpolate);
+
+// Adds after each column in d/tau its value in m/s, after each in d its value in m, with the
+// scaling of each row.
+void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scalings);
+
+// What the export of `request` from study `study_id` tabulates (kinds grid and sections), units
+// applied and metadata filled in. ExportError on a request the study cannot serve.
+LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request);
+
+}  // namespace aerobreak
