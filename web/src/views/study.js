@@ -4,9 +4,10 @@
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
 import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
-import { loadCorrelations, tableFormats } from '../correlations.js';
+import { Correlations, loadCorrelationSummary, tableFormats } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
+import { tablesPanel } from './study_tables.js';
 
 const kRefreshMs = 3000;
 const kOutcomes = ['break-up', 'stick', 'bounce', 'undetermined'];
@@ -78,14 +79,17 @@ function controls(state, grid, onChange) {
     slices);
 }
 
-async function optionalPanels(studyId) {
-  const [correlations, formats] = await Promise.all([
-    loadCorrelations(studyId).catch(() => null), tableFormats(studyId).catch(() => [])]);
-  const tables = formats.length === 0 ? null : el('section', { class: 'panel', id: 'tables-panel' },
-    el('h2', {}, 'Lookup tables'),
-    el('p', {}, formats.map((format) => [el('a', { href: `/api/studies/${studyId}/tables?format=${format}`, download: true,
-      dataset: { format } }, format.toUpperCase()), ' '])));
-  return { correlations, tables };
+// The parts other services add (correlations, lookup tables), asked for once the page is drawn:
+// fitting a large study the first time takes seconds, and the page does not wait for it.
+function loadOptionalParts(id, { plots, tablesHolder, redraw, stopped }) {
+  loadCorrelationSummary(id).then((summary) => {
+    if (!summary || stopped()) return;
+    plots.setCorrelations(new Correlations(id, summary));
+    redraw();
+  }).catch(() => {});
+  tableFormats(id).then((formats) => {
+    if (!stopped()) replaceChildren(tablesHolder, tablesPanel(id, formats));
+  }).catch(() => {});
 }
 
 export async function showStudy(view, parameters, { showNotice }) {
@@ -94,8 +98,7 @@ export async function showStudy(view, parameters, { showNotice }) {
   const caseTable = createCaseTable({ state, studyId: id });
   const firstCases = caseTable.fetchPage();
   firstCases.catch(() => {});
-  const [study, grid, { correlations, tables }] = await Promise.all([
-    getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`), optionalPanels(id)]);
+  const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
   let current = { study, grid };
   let timer = null;
   let stopped = false;
@@ -109,7 +112,8 @@ export async function showStudy(view, parameters, { showNotice }) {
     }
   };
   let top = header(study, { onCancel });
-  const plots = createPlots({ state, correlations });
+  const plots = createPlots({ state });
+  const tablesHolder = el('div');
   const controlsHolder = el('div');
   const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, (changes) => {
     state.set(changes);
@@ -119,10 +123,11 @@ export async function showStudy(view, parameters, { showNotice }) {
   const headerHolder = el('div', {}, top.node);
   replaceChildren(view, headerHolder,
     el('h2', {}, 'Axes'), axesTable(grid.axes),
-    el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tables,
+    el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tablesHolder,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
+  loadOptionalParts(id, { plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
