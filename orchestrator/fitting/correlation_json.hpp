@@ -14,7 +14,8 @@ namespace aerobreak {
 inline constexpr const char* kGridPointsName = "grid-points";
 
 // Everything at a glance: provenance, the number of grid points and one line per fit (name, kind,
-// status, group, n and its headline numbers: a group's critical values, exponents, tau).
+// status, group, n, validity box and its headline numbers: a logistic fit's coefficients and a
+// group's critical values, exponents), and the names of the fragment-size fits.
 nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set);
 
 // The per-grid-point aggregates (outcome probabilities with Wilson intervals, means with their

@@ -83,6 +83,7 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit) {
   line["response"] = std::string(to_string(fit.response));
   line["dose"] = fit.dose;
   line["method"] = fit.method;
+  line["coefficients"] = std::vector<double>(fit.common.coefficients.data(), fit.common.coefficients.data() + fit.common.coefficients.size());
   // A pooled model's critical values (one set per group's covariates) are in its full document only.
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
   for (const auto& value : fit.critical)

@@ -37,6 +37,13 @@ nlohmann::ordered_json fragments_json(const FragmentStatistics& fragments) {
           {"moments", moments}};
 }
 
+// Per input: {"min", "max"} over the rows the fit used.
+nlohmann::ordered_json validity_json(const std::vector<InputRange>& box) {
+  nlohmann::ordered_json validity = nlohmann::ordered_json::object();
+  for (const auto& range : box) validity[range.input] = {{"min", range.min}, {"max", range.max}};
+  return validity;
+}
+
 }  // namespace
 
 nlohmann::ordered_json grid_point_json(const GridPointSummary& point) {
@@ -75,8 +82,6 @@ nlohmann::ordered_json common_json(const FitCommon& common) {
   for (const auto& g : common.goodness_of_fit)
     goodness.push_back({{"statistic", g.statistic}, {"value", number_or_null(g.value)},
                         {"degrees_of_freedom", number_or_null(g.degrees_of_freedom)}, {"p_value", number_or_null(g.p_value)}});
-  nlohmann::ordered_json validity = nlohmann::ordered_json::object();
-  for (const auto& range : common.validity) validity[range.input] = {{"min", range.min}, {"max", range.max}};
   const double share = common.cases ? static_cast<double>(common.small_strain_cases) / static_cast<double>(common.cases) : 0.0;
   return {{"name", common.name},
           {"kind", common.kind},
@@ -91,7 +96,7 @@ nlohmann::ordered_json common_json(const FitCommon& common) {
           {"cases", common.cases},
           {"groups", common.groups},
           {"small_strain", {{"cases", common.small_strain_cases}, {"share", share}}},
-          {"validity", validity}};
+          {"validity", validity_json(common.validity)}};
 }
 
 nlohmann::ordered_json summary_common(const FitCommon& common) {
@@ -99,6 +104,7 @@ nlohmann::ordered_json summary_common(const FitCommon& common) {
   if (!common.detail.empty()) line["detail"] = common.detail;
   line["group"] = common.group;
   line["cases"] = common.cases;
+  line["validity"] = validity_json(common.validity);
   return line;
 }
 

@@ -4,7 +4,8 @@
 // their profile-likelihood intervals; a table of them and the scaling exponents of v50. The summary
 // (GET /api/studies/ID/correlations) names every fit with its group and critical values; a fit's
 // curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (no
-// such service) or 409 (no results yet) hides these parts.
+// such service, or no results yet) hides these parts; so does a 409, which older services gave for
+// a study without results.
 import { ApiError, getJson } from './api.js';
 import { valueKey } from './series.js';
 
