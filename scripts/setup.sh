@@ -17,6 +17,7 @@ packages=(
   json-schema-test-suite
   libcli11-dev
   libeigen3-dev
+  gfortran
   chromium
 )
 # Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a

@@ -84,7 +84,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
                            *request.gamma_over_kn, request.interpolate_gamma);
   const auto scalings = row_scalings(table, data, request);
   if (scalings) add_si_columns(table, *scalings);
-  auto sections = table.metadata.value("sections", nlohmann::ordered_json());
+  const auto sections = table.metadata.is_object() ? table.metadata["sections"] : nlohmann::ordered_json();
   table.metadata = {{"table", table.kind},
                     {"provenance", provenance(data)},
                     {"units", scalings ? "reduced and SI" : "reduced"},
