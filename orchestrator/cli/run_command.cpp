@@ -12,8 +12,10 @@
 
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
+#include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
 
@@ -113,6 +115,21 @@ void print_tables(Store& store, std::int64_t study_id) {
   }
 }
 
+// The critical speeds of the study's fits (computed and stored now, so that the service serves them
+// from the store afterwards).
+void print_critical_speeds(Store& store, std::int64_t study_id) {
+  const auto study = store.study(study_id);
+  try {
+    CorrelationCache cache(store);
+    const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
+    std::cout << "\nCritical speeds: logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
+                 "intervals (docs/CORRELATIONS.md)\n\n"
+              << format_critical_table(nlohmann::ordered_json::parse(set.summary));
+  } catch (const CorrelationRequestError& error) {
+    std::cout << "\nNo critical speeds: " << error.what() << "\n";
+  }
+}
+
 int run(RunOptions options) {
   ShutdownSignals signals;
   Study study;
@@ -161,6 +178,7 @@ int run(RunOptions options) {
 
   std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n"
             << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
+  print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "

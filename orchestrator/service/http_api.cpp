@@ -7,6 +7,7 @@
 
 #include "engine/core/version.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/correlation_endpoints.hpp"
 #include "orchestrator/service/dashboard_endpoints.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/service/openapi_text.hpp"
@@ -158,6 +159,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
              }));
   register_summary_endpoints(server, store);
   register_table_endpoints(server, store);
+  register_correlation_endpoints(server, store);
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {
                 const auto study = existing_study(store, path_id(request));

@@ -155,11 +155,40 @@ CREATE TABLE grid_point_summaries (
 CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
 )sql";
 
+// Correlations (docs/CORRELATIONS.md). correlation_sets holds one set of fits per study and request
+// (the pooled models' covariates): its summary and, in correlation_fits, each fit's document;
+// result_set_hash identifies the results it was fitted to, result_set_version the study's
+// result-set version (study_summaries, migration 3) at which that hash was last found current.
+constexpr std::string_view kVersion4 = R"sql(
+CREATE TABLE correlation_sets (
+  id                 INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies (id),
+  request            TEXT NOT NULL,
+  result_set_version INTEGER NOT NULL,
+  result_set_hash    TEXT NOT NULL,
+  aerobreak_version  TEXT NOT NULL,
+  computed_at        REAL NOT NULL,
+  fit_seconds        REAL NOT NULL,
+  summary            TEXT NOT NULL,
+  UNIQUE (study_id, request)
+);
+
+CREATE TABLE correlation_fits (
+  set_id   INTEGER NOT NULL REFERENCES correlation_sets (id) ON DELETE CASCADE,
+  name     TEXT NOT NULL,
+  kind     TEXT NOT NULL,
+  status   TEXT NOT NULL,
+  document TEXT NOT NULL,
+  PRIMARY KEY (set_id, name)
+) WITHOUT ROWID;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
     Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
+    Migration{4, "stored correlation sets and fits", kVersion4},
 };
 
 int user_version(SqliteDatabase& db) {

@@ -65,6 +65,16 @@ class Store {
   // Jobs without an end (their orchestrator died): ended now, with a note.
   std::size_t close_orphaned_jobs();
 
+  // Stores a study's set of fits for one request (its key: the request as canonical text),
+  // replacing the one before, in one short transaction. The fitting itself happens before, outside
+  // the write lock.
+  void save_correlations(std::int64_t study_id, const std::string& request_key, const StoredCorrelations& set,
+                         const std::vector<StoredFit>& fits);
+  // A set whose result-set hash is still the study's: marks it current at `version` without
+  // refitting. False when there is no such set.
+  bool confirm_correlations(std::int64_t study_id, const std::string& request_key, const std::string& result_set_hash,
+                            std::int64_t version);
+
   // Cancels an active study: its queued cases that no other active study wants become cancelled.
   // Running cases finish (their results are kept). False when there is no such active study.
   bool cancel_study(std::int64_t study_id);
@@ -106,6 +116,13 @@ class Store {
   std::vector<GridPointFragmentMasses> fragment_masses(std::int64_t study_id);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
   std::vector<JobRecord> jobs(std::size_t limit);
+
+  // Everything the statistics need about a study's results, read in one read transaction (the rows
+  // and the version agree). The one place that maps store columns to CaseOutcome fields.
+  StudyOutcomes study_outcomes(std::int64_t study_id);
+  std::optional<StoredCorrelations> stored_correlations(std::int64_t study_id, const std::string& request_key);
+  std::optional<std::string> stored_fit(std::int64_t set_id, const std::string& name);
+  std::vector<std::string> stored_fit_names(std::int64_t set_id);
 
  private:
   class ReadConnection;

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "orchestrator/fitting/case_outcome.hpp"
+
 namespace aerobreak {
 
 // A case's life: queued -> running -> done | failed, back to queued when an attempt is lost or
@@ -245,6 +247,33 @@ struct JobRecord {
   std::optional<double> ended_at;
   std::optional<std::int64_t> exit_status;
   std::optional<std::string> note;
+};
+
+// A study's finished cases as the statistics read them (Store::study_outcomes), with the version
+// of its result set they were read at and the identity of every result (case hash, attempt, commit
+// time, and every number the statistics read of it), from which the result-set hash is computed.
+struct StudyOutcomes {
+  CaseOutcomeTable table;
+  std::int64_t result_set_version = 0;
+  std::string identity;
+};
+
+// A stored set of fits (correlation_sets): its summary document and what it was fitted to.
+struct StoredCorrelations {
+  std::int64_t set_id = 0;
+  std::int64_t result_set_version = 0;
+  std::string result_set_hash;
+  std::string aerobreak_version;
+  double computed_at = 0.0;
+  double fit_seconds = 0.0;
+  std::string summary;  // JSON text
+};
+
+struct StoredFit {
+  std::string name;
+  std::string kind;
+  std::string status;
+  std::string document;  // JSON text
 };
 
 template <typename Record>

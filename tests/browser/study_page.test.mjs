@@ -33,7 +33,7 @@ function chartContents(page, id) {
     const chart = document.getElementById(chartId);
     const u = chart.uplot;
     return {
-      curves: chart.curves.map((curve) => ({ label: curve.label, points: curve.points.map((p) => [p.x, p.y]) })),
+      curves: chart.curves.map((curve) => ({ label: curve.label, dashed: Boolean(curve.dashed), points: curve.points.map((p) => [p.x, p.y]) })),
       seriesLabels: u ? u.series.slice(1).map((s) => s.label) : [],
       nonNull: u ? u.data.slice(1).map((column) => column.filter((v) => v !== null).length) : [],
       legend: chart.querySelectorAll('.legend li').length,
@@ -57,6 +57,13 @@ function probabilities(outcome) {
   return Object.values(curves).map((points) => points.sort((a, b) => a[0] - b[0]));
 }
 
+// The per-group logistic fits of P in log impact speed that the page draws (docs/CORRELATIONS.md).
+async function speedFits(outcome) {
+  const summary = await service.get(`/api/studies/${studyId}/correlations`);
+  return summary.fits.filter((fit) => fit.kind === 'logistic' && fit.dose === 'impact_speed' &&
+    (!outcome || fit.response === outcome) && Object.keys(fit.group).length > 0 && fit.coefficients.length === 2);
+}
+
 const sortedPoints = (curves) => curves.map((c) => c.points).sort((a, b) => JSON.stringify(a).localeCompare(JSON.stringify(b)));
 
 test('the plots hold one curve per N and gamma/k_n with a point per speed, and the server numbers', async () => {
@@ -64,12 +71,29 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
   await withScreenshot(page, 'study-plots', async () => {
     await openStudy(page);
     const probability = await chartContents(page, 'plot-probability');
-    assert.equal(probability.curves.length, 4);
-    assert.equal(probability.legend, 4);
-    // Each curve: its probability and the two bounds of its band, 3 values each.
-    assert.equal(probability.seriesLabels.length, 12);
-    assert.deepEqual(probability.nonNull, Array(12).fill(3));
-    assert.deepEqual(sortedPoints(probability.curves), sortedPoints(probabilities('break-up').map((points) => ({ points }))));
+    const fits = await speedFits('break-up');
+    assert.ok(fits.length >= 1, 'break-up is fitted in at least one group');
+    assert.equal(probability.curves.length, 4 + fits.length);
+    assert.equal(probability.legend, 4 + fits.length);
+    // Each measured curve: its probability and the two bounds of its band, 3 values each; each
+    // fitted curve (dashed): 25 points over its fit's validity box.
+    assert.equal(probability.seriesLabels.length, 12 + fits.length);
+    assert.deepEqual(probability.nonNull, [...Array(12).fill(3), ...Array(fits.length).fill(25)]);
+    const measured = probability.curves.filter((curve) => !curve.dashed);
+    assert.deepEqual(sortedPoints(measured), sortedPoints(probabilities('break-up').map((points) => ({ points }))));
+    // The fitted curves are the fits' logistic(b0 + b1 ln v), from the slowest speed to the fastest.
+    const logistic = (eta) => 1 / (1 + Math.exp(-eta));
+    const ends = (points) => [points[0], points[points.length - 1]];
+    const drawn = probability.curves.filter((curve) => curve.dashed).map((curve) => ends(curve.points));
+    const expected = fits.map((fit) => ends([fit.validity.impact_speed.min, fit.validity.impact_speed.max]
+      .map((v) => [v, logistic(fit.coefficients[0] + fit.coefficients[1] * Math.log(v))])));
+    const byValue = (a, b) => a[0][1] - b[0][1] || a[1][1] - b[1][1];
+    drawn.sort(byValue);
+    expected.sort(byValue);
+    drawn.forEach((pair, i) => pair.forEach((point, k) => {
+      assert.ok(Math.abs(point[0] / expected[i][k][0] - 1) < 1e-12, 'speed');
+      assert.ok(Math.abs(point[1] - expected[i][k][1]) < 1e-12, 'probability');
+    }));
 
     for (const id of ['plot-retained', 'plot-restitution']) {
       const chart = await chartContents(page, id);
@@ -83,9 +107,15 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     const crossing = probabilities('break-up').filter((points) =>
       points.some(([, p], i) => i > 0 && (points[i - 1][1] - 0.5) * (p - 0.5) <= 0 && points[i - 1][1] !== p));
     const critical = await chartContents(page, 'plot-critical');
-    assert.equal(critical.curves.flatMap((c) => c.points).length, crossing.length);
+    const measuredCritical = critical.curves.filter((curve) => !curve.label.startsWith('fitted'));
+    assert.equal(measuredCritical.flatMap((c) => c.points).length, crossing.length);
     assert.ok(crossing.length >= 1, 'break-up takes over somewhere between 0.005 and 0.3 d/tau');
-    for (const [n, speed] of critical.curves.flatMap((c) => c.points)) {
+    // Fitted critical speeds: a point per fit and level with an estimate, at the fit's N.
+    const fittedCritical = critical.curves.filter((curve) => curve.label.startsWith('fitted')).flatMap((c) => c.points);
+    const estimates = fits.flatMap((fit) => fit.critical.filter((value) => typeof value.estimate === 'number')
+      .map((value) => [fit.group.primaries, value.estimate]));
+    assert.deepEqual(fittedCritical.sort(), estimates.sort());
+    for (const [n, speed] of measuredCritical.flatMap((c) => c.points)) {
       assert.ok([8, 16].includes(n));
       assert.ok(speed > kSpeeds[0] && speed < kSpeeds[2]);
     }
@@ -112,7 +142,9 @@ test('a plot choice is a permalink: the URL reproduces it', async () => {
     await again.locator('#case-table table').waitFor();
     assert.equal(await again.inputValue('#choose-outcome'), 'stick');
     const probability = await chartContents(again, 'plot-probability');
-    assert.deepEqual(sortedPoints(probability.curves), sortedPoints(probabilities('stick').map((points) => ({ points }))));
+    const measured = probability.curves.filter((curve) => !curve.dashed);
+    assert.deepEqual(sortedPoints(measured), sortedPoints(probabilities('stick').map((points) => ({ points }))));
+    assert.equal(probability.curves.length - measured.length, (await speedFits('stick')).length);
   });
 });
 
@@ -150,7 +182,9 @@ test("a case's page shows its fragments and attempts and downloads its H5MD file
   const page = await openPage(browser, service);
   await withScreenshot(page, 'case-page', async () => {
     await openStudy(page);
-    assert.equal(await page.locator('#tables-panel, #panel-correlations').count(), 0);
+    // The export service is absent (404): no tables panel; the correlations list every speed fit.
+    assert.equal(await page.locator('#tables-panel').count(), 0);
+    assert.equal(await page.locator('#panel-correlations tbody tr').count(), (await speedFits()).length);
     const caseId = Number(await page.locator('#case-table tbody tr').last().locator('a').textContent());
     await page.locator('#case-table tbody tr').last().locator('a').click();
     await page.locator('#case-title').waitFor();

@@ -6,11 +6,32 @@ import { getOptionalJson } from './api.js';
 import { valueKey } from './series.js';
 
 const kTableFormats = ['csv', 'json'];
+const kCurvePoints = 25;
+const kLevels = { 0.1: 'v10', 0.5: 'v50', 0.9: 'v90' };
 
+const logistic = (eta) => 1 / (1 + Math.exp(-eta));
+
+// A per-group fit of P in log impact speed from the correlations summary (docs/CORRELATIONS.md):
+// its curve P(v) = logistic(b0 + b1 ln v) over its validity box, and its critical speeds.
+function speedFitItem(fit) {
+  const [b0, b1] = fit.coefficients;
+  const { min, max } = fit.validity.impact_speed;
+  const curve = Array.from({ length: kCurvePoints }, (_, i) => {
+    const speed = min * (max / min) ** (i / (kCurvePoints - 1));
+    return [speed, logistic(b0 + b1 * Math.log(speed))];
+  });
+  const criticalSpeeds = Object.fromEntries(fit.critical.filter((value) => kLevels[value.level])
+    .map((value) => [kLevels[value.level], { value: value.estimate, ci95: value.ci95 }]));
+  return { name: fit.name, outcome: fit.response, group: fit.group, status: fit.status, curve, critical_speeds: criticalSpeeds };
+}
+
+// The study's fitted speed curves, one item per group and outcome; null without the service.
 export async function loadCorrelations(studyId) {
   const body = await getOptionalJson(`/api/studies/${studyId}/correlations`);
   if (!body) return null;
-  return Array.isArray(body.items) ? body.items : Array.isArray(body) ? body : [];
+  return (body.fits || []).filter((fit) => fit.kind === 'logistic' && fit.dose === 'impact_speed' &&
+    Object.keys(fit.group || {}).length > 0 && (fit.coefficients || []).length === 2 && fit.validity?.impact_speed)
+    .map(speedFitItem);
 }
 
 // The fitted probability curves for `outcome`, keyed like the measured curves (series.js).
