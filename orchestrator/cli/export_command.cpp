@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/export/table_formats.hpp"
+#include "orchestrator/service/study_tables.hpp"
 
 namespace aerobreak {
 namespace {
@@ -61,7 +61,9 @@ int run_export(const ExportOptions& options) {
   try {
     const std::int64_t study = options.study > 0 ? options.study : only_study(store);
     const auto request = parse_export_request({options.parameters.begin(), options.parameters.end()});
-    const auto rendered = render_table(study_lookup_table(store, study, request), request, study);
+    const auto record = store.study(study);
+    if (!record) throw ExportError(404, "study", "no study " + std::to_string(study) + " in " + options.store);
+    const auto rendered = render_table(export_lookup_table(store, *record, request), request, study);
     if (options.output == "-") {
       std::cout << rendered.content;
       return 0;

@@ -5,7 +5,7 @@
 import { getOptionalJson } from './api.js';
 import { valueKey } from './series.js';
 
-const kTableFormats = ['csv', 'json'];
+const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor'];
 const kCurvePoints = 25;
 const kLevels = { 0.1: 'v10', 0.5: 'v50', 0.9: 'v90' };
 
