@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
@@ -101,6 +102,19 @@ void print_failures(Store& store, std::int64_t study_id) {
               << record.error.value_or("(no error text)") << "\n";
 }
 
+// The study's lookup tables for system codes (docs/EXPORT.md), next to the store.
+void print_tables(Store& store, std::int64_t study_id) {
+  auto directory = store.file();
+  directory.replace_extension(".tables");
+  try {
+    const auto files = write_default_tables(store, study_id, directory);
+    std::cout << "\nLookup tables for system codes (docs/EXPORT.md) in " << directory.string() << "/:\n";
+    for (const auto& file : files) std::cout << "  " << file.filename().string() << "\n";
+  } catch (const std::exception& error) {
+    std::cout << "\nNo lookup tables: " << error.what() << "\n";
+  }
+}
+
 // The critical speeds of the study's fits (computed and stored now, so that the service serves them
 // from the store afterwards).
 void print_critical_speeds(Store& store, std::int64_t study_id) {
@@ -166,6 +180,7 @@ int run(RunOptions options) {
             << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
+  print_tables(store, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();

@@ -31,11 +31,12 @@ std::vector<ConditionRows> condition_rows(const LookupTable& table, const TableC
   for (std::size_t row = 0; row < table.rows(); ++row) {
     if (std::isnan(quantity.values[row])) continue;
     std::vector<double> key;
-    for (const auto* column : keys) key.push_back(column->values[row]);
+    for (const auto* column : keys) key.push_back(key_value(column->values[row]));
     const auto [slot, inserted] = index.emplace(key, conditions.size());
     if (inserted) {
       ConditionRows condition;
-      for (const auto* column : keys) condition.key.emplace_back(column->name, column->values[row]);
+      for (const auto* column : keys)
+        if (!std::isnan(column->values[row])) condition.key.emplace_back(column->name, column->values[row]);
       conditions.push_back(std::move(condition));
     }
     conditions[slot->second].rows.push_back(row);

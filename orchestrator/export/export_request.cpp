@@ -86,7 +86,8 @@ void apply(ExportRequest& request, const std::string& name, const std::string& v
     if (value != "table2d" && value != "csv" && value != "dict")
       throw ExportError(400, name, "parameter 'layout' must be table2d, csv or dict");
     request.layout = value;
-  } else if (name == "speeds") request.speeds = positive_list(name, value);
+  } else if (name == "gamma_over_kn") request.gamma_over_kn = positive(name, value);
+  else if (name == "speeds") request.speeds = positive_list(name, value);
   else if (name == "sizes") request.sizes = positive_list(name, value);
   else if (name == "strict") request.strict = flag(name, value);
   else throw ExportError(400, name, "unknown parameter '" + name + "'");

@@ -38,7 +38,6 @@ std::string hdf5_image(const LookupTable& table) {
   auto access = checked_handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list", name);
   check_status(H5Pset_fapl_core(access.get(), 1 << 16, 0), "core driver", name);
   auto file = checked_handle(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose, "create", name);
-  write_string_attribute(file.get(), "table", table.kind);
   for (const auto& [key, value] : metadata_lines(table.metadata)) write_string_attribute(file.get(), key, value);
   write_columns(file.get(), table);
   check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flush", name);

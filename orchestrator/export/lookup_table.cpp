@@ -40,6 +40,8 @@ std::vector<std::pair<std::string, std::string>> metadata_lines(const nlohmann::
   return lines;
 }
 
+double key_value(double value) { return std::isnan(value) ? -std::numeric_limits<double>::infinity() : value; }
+
 std::string number_text(double value) {
   if (std::isnan(value)) return "NaN";
   char text[32];

@@ -44,6 +44,9 @@ struct LookupTable {
 // the header block of the text formats.
 std::vector<std::pair<std::string, std::string>> metadata_lines(const nlohmann::ordered_json& metadata);
 
+// A value as a key of an ordered map: NaN (which compares false with everything) as -infinity.
+double key_value(double value);
+
 // A value as text with 10 significant digits (%.9e), "NaN" when missing: the precision of every
 // text format.
 std::string number_text(double value);

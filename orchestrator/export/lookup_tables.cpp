@@ -70,13 +70,20 @@ std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& tabl
   return std::vector<PhysicalScaling>(table.rows(), first);
 }
 
+// d/tau in the study's speed unit: a physical study's speeds (and its fits' doses) are in m/s.
+double study_speed_unit(const StudyExportData& data) {
+  if (data.inputs.empty() || !data.inputs.front().scaling) return 1.0;
+  return data.inputs.front().scaling->speed_unit();
+}
+
 }  // namespace
 
-LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request) {
-  if (request.kind == TableKind::fit)
-    throw ExportError(400, "kind", "kind=fit needs the fitted correlations, which this build does not have yet");
+LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
+  if (request.kind == TableKind::fit && !fits) throw ExportError(500, "kind", "kind=fit without the study's fits");
   const auto data = read_study_export_data(store, study_id);
-  LookupTable table = request.kind == TableKind::grid ? grid_table(data) : sections_table(data, request.section_ratio);
+  LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
+                      : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
+                                                            : fit_table(*fits, request, study_speed_unit(data));
   if (request.material)
     table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material), request.interpolate_gamma);
   else if (request.gamma_over_kn)
@@ -84,7 +91,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
                            *request.gamma_over_kn, request.interpolate_gamma);
   const auto scalings = row_scalings(table, data, request);
   if (scalings) add_si_columns(table, *scalings);
-  auto sections = table.metadata.value("sections", nlohmann::ordered_json());
+  const auto sections = table.metadata.is_object() ? table.metadata["sections"] : nlohmann::ordered_json();
   table.metadata = {{"table", table.kind},
                     {"provenance", provenance(data)},
                     {"units", scalings ? "reduced and SI" : "reduced"},

@@ -116,15 +116,17 @@ void add_matrix_columns(LookupTable& table, const std::vector<SourceCell>& cells
   }
 }
 
-nlohmann::ordered_json section_list(int sections, double ratio) {
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+// Each section's bounds: [primaries from, below, d_ve from, below, d_mob from, below] (in d).
+nlohmann::ordered_json section_bounds(int sections, double ratio) {
+  nlohmann::ordered_json bounds{{"fields", "primaries_from primaries_below d_ve_from d_ve_below d_mob_from d_mob_below"}};
   for (int k = 1; k <= sections; ++k) {
     const double lower = std::pow(ratio, k - 1), upper = std::pow(ratio, k);
-    list.push_back({{"section", k}, {"primaries_from", lower}, {"primaries_below", upper},
-                    {"d_ve_from", volume_equivalent_diameter(lower)}, {"d_ve_below", volume_equivalent_diameter(upper)},
-                    {"d_mob_from", mobility_equivalent_diameter(lower)}, {"d_mob_below", mobility_equivalent_diameter(upper)}});
+    char name[32];
+    std::snprintf(name, sizeof name, "section_%02d", k);
+    bounds[name] = {lower, upper, volume_equivalent_diameter(lower), volume_equivalent_diameter(upper),
+                    mobility_equivalent_diameter(lower), mobility_equivalent_diameter(upper)};
   }
-  return list;
+  return bounds;
 }
 
 }  // namespace
@@ -136,7 +138,7 @@ LookupTable sections_table(const StudyExportData& data, double section_ratio) {
   const int sections = section_count(data, section_ratio);
   add_condition_columns(table, cells, data, section_ratio);
   add_matrix_columns(table, cells, sections);
-  table.metadata["sections"] = {{"ratio", section_ratio}, {"count", sections}, {"list", section_list(sections, section_ratio)}};
+  table.metadata["sections"] = {{"ratio", section_ratio}, {"count", sections}, {"bounds", section_bounds(sections, section_ratio)}};
   return table;
 }
 

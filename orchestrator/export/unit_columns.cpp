@@ -19,7 +19,7 @@ std::vector<double> condition(const LookupTable& table, std::size_t row) {
   std::vector<double> key;
   for (const auto& column : table.columns)
     if ((column.role == ColumnRole::input || column.role == ColumnRole::speed) && column.name != "gamma_over_kn")
-      key.push_back(column.values[row]);
+      key.push_back(key_value(column.values[row]));
   return key;
 }
 

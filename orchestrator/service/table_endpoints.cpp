@@ -1,8 +1,8 @@
 #include "orchestrator/service/table_endpoints.hpp"
 
-#include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/service/http_support.hpp"
+#include "orchestrator/service/study_tables.hpp"
 
 namespace aerobreak {
 namespace {
@@ -22,7 +22,7 @@ void send_table(const httplib::Request& request, httplib::Response& response, St
   const auto study = existing_study(store, path_id(request));
   try {
     const auto export_request = parse_export_request(query_parameters(request));
-    const auto table = study_lookup_table(store, study.id, export_request);
+    const auto table = export_lookup_table(store, study, export_request);
     auto rendered = render_table(table, export_request, study.id);
     response.set_header("Content-Disposition", "attachment; filename=\"" + rendered.file_name + "\"");
     response.set_content(std::move(rendered.content), rendered.content_type);

@@ -91,7 +91,7 @@ export class Correlations {
 
 // The lookup-table formats of the export service (docs/WEB.md), offered when it answers HEAD for
 // CSV; [] when it has no such endpoint.
-const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor', 'openfoam'];
+const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor'];
 
 export async function tableFormats(studyId) {
   const response = await fetch(`/api/studies/${studyId}/tables?format=${kTableFormats[0]}`, { method: 'HEAD' });

@@ -3,7 +3,7 @@
 import { el, replaceChildren, select } from '../dom.js';
 
 const kKinds = [['grid', 'grid: per grid point'], ['fit', 'fit: from the fitted curves'], ['sections', 'sections: per fragment size section']];
-const kFormatLabels = { csv: 'CSV', dat: '.dat', json: 'JSON', hdf5: 'HDF5', melcor: 'MELCOR', openfoam: 'OpenFOAM' };
+const kFormatLabels = { csv: 'CSV', dat: '.dat', json: 'JSON', hdf5: 'HDF5', melcor: 'MELCOR' };
 
 export function tablesPanel(studyId, formats) {
   if (formats.length === 0) return null;
@@ -14,5 +14,5 @@ export function tablesPanel(studyId, formats) {
   drawLinks('grid');
   return el('section', { class: 'panel', id: 'tables-panel' }, el('h2', {}, 'Lookup tables'),
     el('div', { class: 'controls' }, el('label', {}, 'Table ', select(kKinds, 'grid', drawLinks, { id: 'choose-table-kind' }))),
-    links, el('p', { class: 'note' }, 'Tables for system codes (MELCOR, ASTEC, OpenFOAM), made by the service from the stored results.'));
+    links, el('p', { class: 'note' }, 'Tables for system codes, made by the service from the stored results; every column, unit and format: docs/EXPORT.md.'));
 }
