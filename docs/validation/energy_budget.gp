@@ -7,6 +7,10 @@ stats file skip 1 using ($1 == 0 ? $3 : NaN) nooutput
 E0 = STATS_max
 stats file skip 1 using 2 nooutput
 t_end = STATS_max
+stats file skip 1 every ::1::1 using 1 nooutput
+every = int(STATS_max)
+stats file skip 1 every ::1::1 using ($2 / $1) nooutput
+dt = STATS_max
 
 set multiplot
 set lmargin 11; set rmargin 3
@@ -31,7 +35,7 @@ unset title
 set size 1, 0.3; set origin 0, 0
 set tmargin 0.5; set bmargin 3.5
 set format x "%g"
-set xlabel "time  t / τ    (τ = (m/k_n)^{1/2}; one point per 100 steps, Δt = contact period / 50)"
+set xlabel sprintf("time  t / τ    (τ = (m/k_n)^{1/2}; automatic Δt = %.4f τ, one point per %d steps)", dt, every)
 set ylabel "balance error × 10^3" offset 1,0
 set yrange [*:*]  # stats honours the current range
 stats file skip 1 using (1e3 * $12 / E0) nooutput

@@ -56,11 +56,14 @@ struct ContactModel {
 
   // Energy a contact takes with it when it lets go at `overlap`: what its springs stored at the
   // last evaluation, plus the elastic work over the final step, trapezoidal as velocity Verlet
-  // applies it with the force falling to zero; and the last damping force's work over its final
-  // half step.
-  void release(const ContactState& s, double overlap, double approach_rate, double dt, DissipationTally& tally) const {
+  // applies it with the force falling to zero, plus the work of `timing_force`, the normal force
+  // that times the jump to the crossing of the break overlap (dem/event_timing.hpp), over its two
+  // half kicks (taken as the final step's travel each); and the last damping force's work over
+  // its final half step.
+  void release(const ContactState& s, double overlap, double approach_rate, double dt, double timing_force,
+               DissipationTally& tally) const {
     const NormalResponse last = normal.respond(s.overlap, s.constants);
-    tally.breaking += stored_energy(s, s.constants, last) + 0.5 * last.force * (overlap - s.overlap);
+    tally.breaking += stored_energy(s, s.constants, last) + (0.5 * last.force + timing_force) * (overlap - s.overlap);
     tally.damping += 0.5 * s.damping_force * approach_rate * dt;
   }
 

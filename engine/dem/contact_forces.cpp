@@ -13,6 +13,7 @@
 #include "engine/contact/tangential_mindlin.hpp"
 #include "engine/contact/twisting_resistance.hpp"
 #include "engine/dem/contact_block.hpp"
+#include "engine/dem/event_timing.hpp"
 
 namespace aerobreak {
 namespace {
@@ -29,9 +30,9 @@ class ContactForcesFor final : public ContactForces {
   double stored_energy(const ContactState& contact) const override {
     return model_.stored_energy(contact, contact.constants);
   }
-  void release(const ContactState& contact, double overlap, double approach_rate, double dt,
+  void release(const ContactState& contact, double overlap, double approach_rate, double dt, double timing_force,
                DissipationTally& tally) const override {
-    model_.release(contact, overlap, approach_rate, dt, tally);
+    model_.release(contact, overlap, approach_rate, dt, timing_force, tally);
   }
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
@@ -49,7 +50,7 @@ class ContactForcesFor final : public ContactForces {
     const Vec3 into_wall = -wall.normal;
     // Carried on from the ledger's sums, not started afresh: ranges add up as one pass would.
     DissipationTally tally = ledger.tally;
-    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals};
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals, ledger.drifted};
     double deepest = ledger.events.deepest_overlap_ratio;
     for (auto i = static_cast<std::uint32_t>(begin); i < end; ++i) {
       const double overlap = p.radius[i] - wall.gap(p.position[i]);
@@ -65,9 +66,13 @@ class ContactForcesFor final : public ContactForces {
         slot = ledger.pool.open(state);
         ++ledger.events.made;
         hand_over(local, -overlap, state.constants.radius, +1.0);
+        // The overlap grew by dt times the approach rate in the drift that made the contact.
+        if (ledger.drifted)
+          p.force[i] -=
+              formation_timing(state.constants, overlap - dt * dot(p.velocity[i], into_wall), overlap, dt) * into_wall;
       }
       if (overlap < -ledger.pool.break_overlap(slot)) {
-        close(slot, overlap, dot(p.velocity[i], into_wall), dt, local);
+        p.force[i] -= close(slot, overlap, dot(p.velocity[i], into_wall), dt, local) * into_wall;
         continue;
       }
       ContactState state = ledger.pool.state(slot);
@@ -155,7 +160,7 @@ class ContactForcesFor final : public ContactForces {
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
     ContactPool& pool = pass.ledger.pool;
-    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals};
+    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted};
     const std::size_t n = pairs.particles();
     for (std::uint32_t i = c.row; i < end; ++i) {
       if (i - c.reported >= completion_run) report_before(i, p, dt, pass, block, c);
@@ -173,12 +178,15 @@ class ContactForcesFor final : public ContactForces {
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
           slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
+          if (local.drifted) time_pair_formation(p, i, j, separation, slot, dt, local);
         }
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
         const Vec3 normal = separation * (1.0 / distance);
         if (overlap < -pool.break_overlap(slot)) {
-          close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
+          const double timing = close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
+          p.force[i] -= timing * normal;
+          p.force[j] += timing * normal;
           continue;
         }
         block.add(slot, i, j,
@@ -194,7 +202,7 @@ class ContactForcesFor final : public ContactForces {
   // Evaluates the block and reports the particles before `row` complete.
   void report_before(std::size_t row, Particles& p, double dt, const Pass& pass, ContactBlock& block,
                      Cursor& c) const {
-    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals};
+    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted};
     finish_block(block, p, dt, local);
     pass.completed.complete(c.reported, row);
     c.reported = row;
@@ -328,14 +336,46 @@ class ContactForcesFor final : public ContactForces {
   }
 
   // The energy still stored in a contact when it lets go is lost to the system (for JKR, the
-  // work of the loading/unloading hysteresis).
-  void close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) const {
+  // work of the loading/unloading hysteresis). Returns the normal force that times the jump of
+  // the normal force to zero to the crossing of the break overlap (event_timing.hpp).
+  double close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) const {
     const ContactState state = ledger.pool.state(slot);
-    model_.release(state, overlap, approach_rate, dt, ledger.tally);
+    const double timing = ledger.drifted ? release_timing(state, overlap) : 0.0;
+    model_.release(state, overlap, approach_rate, dt, timing, ledger.tally);
     hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
     slot = -1;
     ++ledger.events.broken;
+    return timing;
+  }
+
+  // Timing of the jump from no force to F(0) where the overlap crossed 0, between the overlaps
+  // `before` and `after` of the drift that made the contact, with its second-order part.
+  double formation_timing(const ContactConstants& constants, double before, double after, double dt) const {
+    const double jump = model_.normal.respond(0.0, constants).force;
+    const double s = crossing_fraction(before, after, 0.0);
+    return jump_timing_force(jump, s) + formation_lag_force(jump, s, after - before, constants.mass, dt);
+  }
+
+  // Timing of the jump from F(-delta_b) to no force where the overlap crossed -delta_b, between
+  // the contact's last evaluated overlap and `overlap`.
+  double release_timing(const ContactState& state, double overlap) const {
+    const double threshold = -state.constants.break_overlap;
+    const double jump = -model_.normal.respond(threshold, state.constants).force;
+    return jump_timing_force(jump, crossing_fraction(state.overlap, overlap, threshold));
+  }
+
+  // A pair contact just made: its overlap a step before follows from the separation before the
+  // drift, x_j - x_i - dt (v_j - v_i).
+  void time_pair_formation(Particles& p, std::uint32_t i, std::uint32_t j, const Vec3& separation, std::int32_t slot,
+                           double dt, ContactLedger& ledger) const {
+    const double touching = p.radius[i] + p.radius[j];
+    const double before = touching - norm(separation - dt * (p.velocity[j] - p.velocity[i]));
+    const double after = touching - norm(separation);
+    const Vec3 normal = separation * (1.0 / norm(separation));
+    const double timing = formation_timing(ledger.pool.state(slot).constants, before, after, dt);
+    p.force[i] -= timing * normal;
+    p.force[j] += timing * normal;
   }
 
   // A pair entering contact leaves the van der Waals sum (sign +1); one leaving re-enters it (-1).

@@ -28,6 +28,10 @@ struct ContactLedger {
   DissipationTally& tally;
   ContactEvents& events;
   const VanDerWaals* van_der_waals = nullptr;  // set when the long-range law is on for these contacts
+  // The positions have just drifted by a step (false at a run's first evaluation): a contact that
+  // forms or lets go crossed its threshold during that drift, and its force jump is timed to the
+  // crossing (event_timing.hpp).
+  bool drifted = true;
 };
 
 // Told by the pair loop which particles have received all their pair forces of the pass. The list
@@ -82,9 +86,10 @@ class ContactForces {
   virtual NormalResponse normal_response(double overlap, const ContactConstants& constants) const = 0;
   // Elastic energy the springs of a live contact store (ContactModel::stored_energy).
   virtual double stored_energy(const ContactState& contact) const = 0;
-  // Books the energy a contact takes with it when it lets go at `overlap` (ContactModel::release).
+  // Books the energy a contact takes with it when it lets go at `overlap` (ContactModel::release);
+  // `timing_force` is the normal force that timed its last jump (event_timing.hpp), 0 if none.
   virtual void release(const ContactState& contact, double overlap, double approach_rate, double dt,
-                       DissipationTally& tally) const = 0;
+                       double timing_force, DissipationTally& tally) const = 0;
 };
 
 // `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).

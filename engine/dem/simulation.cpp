@@ -83,7 +83,8 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
     dt_ = settings_.time_step;
     estimate_.time_step = dt_;
   } else if (particles_.size() > 0) {
-    estimate_ = recommend_time_step(particles_, materials_, walls_, spec_, speed_scale(), settings_.steps_per_period);
+    estimate_ = recommend_time_step(particles_, materials_, walls_, spec_, speed_scale(),
+                                    {settings_.steps_per_period, settings_.steps_per_break_overlap});
     dt_ = estimate_.time_step;
   } else {
     throw std::invalid_argument("simulation: no particles and no time step");
@@ -221,7 +222,7 @@ class Simulation::ForcePass final : public ParticleCompletion {
       const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
       s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
                                          s.materials_, s.dt_, begin, end,
-                                         {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range});
+                                         {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range, step_ > 0});
     }
     if (!finish_) return;
     add_body_forces(s.particles_, s.settings_.body, step_, s.dt_, begin, end, body_work_);
@@ -293,7 +294,8 @@ Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap,
   const bool long_range_pass = spec_.van_der_waals;
   ForcePass pass(*this, !long_range_pass, integrate, steps_);
   const VanDerWaals* long_range = long_range_pass ? &spec_.hamaker : nullptr;
-  add_pair_forces(formation_gap, {{{pair_pool_, tally_, pair_events_, long_range}, pass}});
+  // The first evaluation of a run (step 0) follows no drift: its contacts crossed nothing.
+  add_pair_forces(formation_gap, {{{pair_pool_, tally_, pair_events_, long_range, steps_ > 0}, pass}});
   pass.book(tally_, external_work_);
   if (!long_range_pass) return pass.drift();
   if (settings_.periodic)
@@ -434,7 +436,7 @@ void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
     const double distance = norm(separation);
     const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
     const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
-    pair_forces_->release(c, -gap, approach, dt_, tally_);
+    pair_forces_->release(c, -gap, approach, dt_, 0.0, tally_);
     if (spec_.van_der_waals) tally_.van_der_waals_handover -= spec_.hamaker.at_gap(gap, c.constants.radius).energy;
     pair_pool_.close(slot);
     ++pair_events_.broken;

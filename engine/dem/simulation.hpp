@@ -21,7 +21,8 @@ namespace aerobreak {
 
 struct SimulationSettings {
   double time_step = 0.0;          // 0: automatic, from recommend_time_step
-  double steps_per_period = 50.0;  // safety factor of the automatic step
+  double steps_per_period = 50.0;  // safety factors of the automatic step (TimeStepFactors)
+  double steps_per_break_overlap = 10.0;
   double speed_scale = 0.0;        // largest speed the automatic step must resolve; 0: from the initial state
   double skin = 0.0;               // Verlet skin; 0: automatic, from the speed scale and time step
   bool brute_force_neighbors = false;

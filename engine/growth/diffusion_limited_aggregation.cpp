@@ -139,6 +139,9 @@ DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& 
   SimulationSettings settings;
   settings.periodic = box;
   settings.steps_per_period = p.steps_per_period;
+  // Like steps_per_period's halving: collisions at thermal speeds (bond energy 100 kT) must be
+  // caught, not their adhesion loss resolved to 1 % (docs/MODEL.md 9.2).
+  settings.steps_per_break_overlap = 0.0;
   // A Langevin stream apart from the placement's: counter-based on (seed, step, particle).
   settings.body.langevin = {result.conditions.temperature, result.conditions.drag_per_diameter,
                             seed ^ 0x6a09e667f3bcc909ULL};

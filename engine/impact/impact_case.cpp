@@ -1,9 +1,11 @@
 #include "engine/impact/impact_case.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "engine/impact/schema_text.hpp"
+#include "engine/io/cluster_library.hpp"
 
 namespace aerobreak {
 namespace {
@@ -51,6 +53,57 @@ ContactModelSpec model_from(const Json& m) {
     spec.hamaker.cutoff = m["van_der_waals"]["cutoff"].get<double>();
   }
   return spec;
+}
+
+// A cluster library (HDF5) holds named clusters: the case names one, or the library holds one.
+void check_library_choice(const std::filesystem::path& path, const std::string& name,
+                          std::vector<SchemaViolation>& violations) {
+  const std::vector<std::string> names = list_clusters(path);
+  std::string listed;
+  for (std::size_t k = 0; k < names.size() && k < 10; ++k) listed += (k == 0 ? "" : ", ") + names[k];
+  if (names.size() > 10) listed += ", ...";
+  if (name.empty() && names.size() != 1)
+    violations.push_back({"/cluster/file/name", "must name the cluster to take: " + path.string() + " holds " +
+                                                    std::to_string(names.size()) + " (" + listed + ")"});
+  else if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end())
+    violations.push_back({"/cluster/file/name", "no cluster '" + name + "' in " + path.string() + " (" + listed + ")"});
+}
+
+ClusterSource file_source(const Json& file, const std::filesystem::path& base_directory,
+                          std::vector<SchemaViolation>& violations) {
+  ClusterSource source;
+  source.kind = ClusterSource::Kind::file;
+  std::filesystem::path path = file["path"].get<std::string>();
+  if (path.is_relative() && !base_directory.empty()) path = base_directory / path;
+  source.file = path;
+  source.library_name = file.value("name", std::string());
+  source.default_radius = file["default_radius"].get<double>();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    violations.push_back({"/cluster/file/path", "no such file: " + path.string()});
+  else if (is_hdf5_file(path))
+    check_library_choice(path, source.library_name, violations);
+  else if (!source.library_name.empty())
+    violations.push_back({"/cluster/file/name", "names a cluster of a library, and " + path.string() +
+                                                    " is not one (an HDF5 file written by aerobreak cluster)"});
+  return source;
+}
+
+// The case's cluster: a generator of the registry (its object rewritten as the completed, named
+// form, so that an alias gives the same document) or a file.
+ClusterSource cluster_source(Json& cluster, const std::filesystem::path& base_directory,
+                             std::vector<SchemaViolation>& violations) {
+  ClusterSource source;
+  if (cluster.contains("generator")) {
+    std::vector<GeneratorViolation> wrong;
+    source.generator = read_generator_request(cluster["generator"], wrong);
+    for (const GeneratorViolation& v : wrong) violations.push_back({"/cluster/generator/" + v.field, v.message});
+    if (wrong.empty()) cluster["generator"] = generator_document(source.generator);
+  } else {
+    source = file_source(cluster["file"], base_directory, violations);
+  }
+  source.relax = cluster["relax"].get<bool>();
+  return source;
 }
 
 }  // namespace
@@ -131,22 +184,7 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   if (c.model.damping == DampingLaw::tsuji && !(c.model.restitution < 1.0))
     violation("/model/damping/restitution", "must be < 1 for Tsuji damping (1 is no damping: use \"law\": \"none\")");
 
-  const Json& cl = d["cluster"];
-  c.cluster.relax = cl["relax"].get<bool>();
-  if (cl.contains("generator")) {
-    c.cluster.kind = ClusterSource::Kind::ballistic;
-    c.cluster.primaries = cl["generator"]["primaries"].get<std::size_t>();
-    c.cluster.seed = cl["generator"]["seed"].get<std::uint64_t>();
-    c.cluster.geometric_standard_deviation = cl["generator"]["geometric_standard_deviation"].get<double>();
-  } else {
-    c.cluster.kind = ClusterSource::Kind::file;
-    std::filesystem::path path = cl["file"]["path"].get<std::string>();
-    if (path.is_relative() && !base_directory.empty()) path = base_directory / path;
-    c.cluster.file = path;
-    c.cluster.default_radius = cl["file"]["default_radius"].get<double>();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) violation("/cluster/file/path", "no such file: " + path.string());
-  }
+  c.cluster = cluster_source(c.document["cluster"], base_directory, violations);
 
   const Json& im = d["impact"];
   c.angle_degrees = im["angle"].get<double>();
@@ -167,6 +205,7 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   c.snapshot_interval = run.value("snapshot_interval", 0.0);
   c.time_step = run.value("time_step", 0.0);
   c.steps_per_period = run["steps_per_period"].get<double>();
+  c.steps_per_break_overlap = run["steps_per_break_overlap"].get<double>();
   c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);
   c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
   c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);

@@ -10,6 +10,7 @@
 #include "engine/contact/model_spec.hpp"
 #include "engine/core/material.hpp"
 #include "engine/core/units.hpp"
+#include "engine/impact/cluster_generators.hpp"
 #include "engine/impact/json_schema.hpp"
 #include "engine/impact/outcome.hpp"
 
@@ -17,13 +18,12 @@ namespace aerobreak {
 
 // Where the cluster of a case comes from.
 struct ClusterSource {
-  enum class Kind { ballistic, file };
-  Kind kind = Kind::ballistic;
-  std::size_t primaries = 0;                  // ballistic
-  std::uint64_t seed = 0;                     // ballistic
-  double geometric_standard_deviation = 1.0;  // ballistic
-  std::filesystem::path file;                 // file (resolved against the case file's directory)
-  double default_radius = 0.5;                // file
+  enum class Kind { generated, file };
+  Kind kind = Kind::generated;
+  GeneratorRequest generator;   // generated (cluster_generators.hpp)
+  std::filesystem::path file;   // file (resolved against the case file's directory)
+  std::string library_name;     // file: the cluster of a library (HDF5); empty: its only one
+  double default_radius = 0.5;  // file (XYZ)
   bool relax = true;
 };
 
@@ -59,6 +59,7 @@ struct ImpactCase {
   double snapshot_interval = 0.0;  // tau; 0: first and last frames only
   double time_step = 0.0;          // tau; 0: automatic
   double steps_per_period = 50.0;
+  double steps_per_break_overlap = 10.0;
   SettleCriteria settle;
 };
 

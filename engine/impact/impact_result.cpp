@@ -140,7 +140,7 @@ Json contact_energies_json(const ContactEnergies& e) {
 Json setup_json(const ImpactResult& r) {
   const ImpactCase& c = r.impact_case;
   const auto& rot = r.orientation;
-  return {{"cluster_source", c.cluster.kind == ClusterSource::Kind::ballistic ? "ballistic" : "file"},
+  return {{"cluster_source", c.cluster.kind == ClusterSource::Kind::generated ? c.cluster.generator.method : "file"},
           {"relaxation", {{"performed", r.relaxation.performed},
                           {"converged", r.relaxation.converged},
                           {"steps", r.relaxation.steps},
@@ -162,11 +162,16 @@ Json run_json(const ImpactResult& r) {
   const TimeStepEstimate& est = r.time_step_estimate;
   return {{"time_step", number(r.time_step)},
           {"time_step_source", c.time_step > 0.0 ? "fixed" : "automatic"},
-          {"time_step_estimate", {{"period", number(est.period)},
+          {"time_step_estimate", {{"limit", c.time_step > 0.0 ? Json(nullptr) : Json(time_step_limit_name(est.limit))},
+                                  {"period", number(est.period)},
                                   {"stiffness", number(est.stiffness)},
                                   {"mass", number(est.mass)},
                                   {"overlap", number(est.overlap)},
-                                  {"steps_per_period", number(est.steps_per_period)}}},
+                                  {"steps_per_period", number(est.steps_per_period)},
+                                  {"crossing_time", number(est.crossing_time)},
+                                  {"break_overlap", number(est.break_overlap)},
+                                  {"approach_speed", number(est.approach_speed)},
+                                  {"steps_per_break_overlap", number(est.steps_per_break_overlap)}}},
           {"steps", r.steps},
           {"simulated_time", number(r.simulated_time)},
           {"simulated_time_s", c.physical ? number(c.physical->physical_time(r.simulated_time)) : Json(nullptr)},

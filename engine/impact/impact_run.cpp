@@ -8,13 +8,13 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "engine/cluster/ballistic_aggregation.hpp"
 #include "engine/cluster/cluster_analysis.hpp"
 #include "engine/cluster/random_stream.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/settle.hpp"
+#include "engine/io/cluster_library.hpp"
 #include "engine/io/xyz.hpp"
 
 namespace aerobreak {
@@ -116,6 +116,14 @@ void tell(const std::function<void(const std::string&)>& log, const std::string&
   if (log) log(line);
 }
 
+// A case's cluster file: a cluster library (HDF5, told by its signature), the named cluster or its
+// only one, or an XYZ file.
+Cluster read_case_cluster(const ClusterSource& source) {
+  if (!is_hdf5_file(source.file)) return read_xyz_cluster(source.file, source.default_radius);
+  const std::string name = source.library_name.empty() ? list_clusters(source.file).at(0) : source.library_name;
+  return read_cluster(source.file, name).cluster;
+}
+
 }  // namespace
 
 Rotation impact_orientation(const ImpactCase& c) { return RandomStream(c.orientation_seed).rotation(); }
@@ -129,14 +137,13 @@ Vec3 impact_velocity(const ImpactCase& c) {
 Particles prepare_cluster(const ImpactCase& c, RelaxationSummary& relaxation,
                           const std::function<void(const std::string&)>& log) {
   Cluster cluster;
-  if (c.cluster.kind == ClusterSource::Kind::ballistic) {
+  if (c.cluster.kind == ClusterSource::Kind::generated) {
     const auto start = Clock::now();
-    cluster = ballistic_cluster_cluster_aggregation({c.cluster.primaries, 1.0, c.cluster.geometric_standard_deviation},
-                                                   c.cluster.seed);
-    tell(log, "built a ballistic cluster of " + std::to_string(cluster.size()) + " primaries in " +
-                  std::to_string(seconds_since(start)) + " s");
+    cluster = generate_cluster(c.cluster.generator);
+    tell(log, "built a " + c.cluster.generator.method + " cluster of " + std::to_string(cluster.size()) +
+                  " primaries in " + std::to_string(seconds_since(start)) + " s");
   } else {
-    cluster = read_xyz_cluster(c.cluster.file, c.cluster.default_radius);
+    cluster = read_case_cluster(c.cluster);
     tell(log, "read " + std::to_string(cluster.size()) + " primaries from " + c.cluster.file.string());
   }
   if (cluster.size() == 0) throw std::invalid_argument("impact: the cluster has no primaries");
@@ -180,6 +187,7 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
   SimulationSettings settings;
   settings.time_step = c.time_step;
   settings.steps_per_period = c.steps_per_period;
+  settings.steps_per_break_overlap = c.steps_per_break_overlap;
   settings.speed_scale = c.speed;
   settings.initial_bond_gap = kBondGap;
   prepared.simulation =

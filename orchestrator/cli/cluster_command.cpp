@@ -18,13 +18,12 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/cluster/ballistic_aggregation.hpp"
 #include "engine/cluster/cluster_analysis.hpp"
 #include "engine/cluster/fractal_scaling_fit.hpp"
-#include "engine/cluster/tunable_aggregation.hpp"
 #include "engine/core/units.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
+#include "engine/impact/cluster_generators.hpp"
 #include "engine/io/cluster_library.hpp"
 #include "engine/io/xyz.hpp"
 
@@ -114,7 +113,7 @@ std::string joined(const std::vector<std::string>& names, std::size_t shown = 10
 // ---- generate --------------------------------------------------------------------------------
 
 struct GenerateOptions {
-  std::string generator = "bcca";
+  std::string generator = "ballistic";
   std::int64_t primaries = 0;
   std::int64_t count = 1;
   std::uint64_t seed = 1;
@@ -122,79 +121,81 @@ struct GenerateOptions {
   double geometric_standard_deviation = 1.0;
   double fractal_dimension = kNotGiven;
   double prefactor = kNotGiven;
+  bool sintering = true;
+  bool sintering_given = false;
   bool relax = true;
   double gamma_over_kn = 0.001;
   double poisson_ratio = 0.3;
-  std::string library;
+  std::string output;  // a library if it ends in .h5 or .hdf5, an XYZ file otherwise
   std::string name_prefix;
   std::string xyz;
   bool overwrite = false;
+
+  bool to_library() const;
+  std::string xyz_file() const { return xyz.empty() ? output : xyz; }
 };
 
-struct GeneratedCluster {
-  Cluster cluster;
-  double prefactor = kNotGiven;  // k_f, where the generator imposes one
-};
+bool GenerateOptions::to_library() const { return xyz.empty() && names_library(output); }
 
-// A cluster generator the command offers. One that imposes a fractal law takes --df and --kf.
-struct Generator {
-  std::string_view name;
-  bool takes_fractal_law;
-  GeneratedCluster (*generate)(const GenerateOptions& options, std::uint64_t seed);
-};
-
-GeneratedCluster generate_bcca(const GenerateOptions& o, std::uint64_t seed) {
-  const BallisticAggregationParameters parameters{static_cast<std::size_t>(o.primaries), o.diameter,
-                                                  o.geometric_standard_deviation};
-  return {ballistic_cluster_cluster_aggregation(parameters, seed), kNotGiven};
+// The registry's request (engine/impact/cluster_generators.hpp) for cluster `seed`.
+GeneratorRequest request_for(const GenerateOptions& o, std::uint64_t seed) {
+  GeneratorRequest r;
+  const ClusterGenerator* generator = find_cluster_generator(o.generator);
+  r.method = generator ? std::string(generator->name) : o.generator;
+  r.primaries = static_cast<std::size_t>(std::max<std::int64_t>(o.primaries, 0));
+  r.seed = seed;
+  r.geometric_mean_diameter = o.diameter;
+  r.geometric_standard_deviation = o.geometric_standard_deviation;
+  r.fractal_dimension = o.fractal_dimension;
+  r.prefactor = o.prefactor;
+  r.sintering = o.sintering;
+  return r;
 }
 
-// FracVAL-type tunable aggregation; k_f and D_f in FracVAL's solid-sphere Rg convention.
-GeneratedCluster generate_tunable(const GenerateOptions& o, std::uint64_t seed) {
-  TunableAggregationParameters parameters;
-  parameters.primary_count = static_cast<std::size_t>(o.primaries);
-  parameters.fractal_dimension = o.fractal_dimension;
-  parameters.prefactor = o.prefactor;
-  parameters.geometric_mean_diameter = o.diameter;
-  parameters.geometric_standard_deviation = o.geometric_standard_deviation;
-  return {tunable_cluster_aggregation(parameters, seed), o.prefactor};
+// The generator-specific fields given on the command line, as the registry names them.
+std::vector<std::string> given_fields(const GenerateOptions& o) {
+  std::vector<std::string> given;
+  if (!std::isnan(o.fractal_dimension)) given.emplace_back("fractal_dimension");
+  if (!std::isnan(o.prefactor)) given.emplace_back("prefactor");
+  if (o.sintering_given) given.emplace_back("sintering");
+  return given;
 }
 
-constexpr std::array kGenerators{
-    Generator{"bcca", false, generate_bcca},
-    Generator{"tunable", true, generate_tunable},
-};
-
-const Generator& find_generator(const std::string& name) {
-  for (const Generator& generator : kGenerators)
-    if (generator.name == name) return generator;
-  std::vector<std::string> available;
-  for (const Generator& generator : kGenerators) available.emplace_back(generator.name);
-  throw std::runtime_error("unknown generator '" + name + "' (available: " + joined(available) + ")");
+// The option that sets a field of the registry's request.
+std::string option_of(const std::string& field) {
+  static const std::array<std::pair<std::string_view, std::string_view>, 7> options{{
+      {"method", "--generator"}, {"primaries", "--primaries"}, {"geometric_mean_diameter", "--diameter"},
+      {"geometric_standard_deviation", "--gsd"}, {"fractal_dimension", "--df"}, {"prefactor", "--kf"},
+      {"sintering", "--sintering"},
+  }};
+  for (const auto& [name, option] : options)
+    if (name == field) return std::string(option);
+  return field;
 }
 
-const Generator& validated_generator(const GenerateOptions& o) {
-  const Generator& generator = find_generator(o.generator);
+void check_generation(const GenerateOptions& o) {
   if (o.primaries < 1) throw std::runtime_error("--primaries must be at least 1, got " + std::to_string(o.primaries));
+  const std::vector<GeneratorViolation> wrong = check_generator_request(request_for(o, 0), given_fields(o));
+  if (!wrong.empty()) {
+    const GeneratorViolation& first = wrong.front();
+    const bool own = first.field == "method";
+    throw std::runtime_error(own ? first.message : option_of(first.field) + " " + first.message);
+  }
+}
+
+void check_output(const GenerateOptions& o) {
   if (o.count < 1) throw std::runtime_error("--count must be at least 1, got " + std::to_string(o.count));
-  if (!(o.diameter > 0.0) || !std::isfinite(o.diameter)) throw std::runtime_error("--diameter must be positive");
-  if (!(o.geometric_standard_deviation >= 1.0) || !std::isfinite(o.geometric_standard_deviation))
-    throw std::runtime_error("--gsd must be at least 1 (1 is monodisperse)");
-  const bool law_given = !std::isnan(o.fractal_dimension) || !std::isnan(o.prefactor);
-  if (generator.takes_fractal_law && (std::isnan(o.fractal_dimension) || std::isnan(o.prefactor)))
-    throw std::runtime_error("--generator " + o.generator + " needs --df and --kf");
-  if (!generator.takes_fractal_law && law_given)
-    throw std::runtime_error("--df and --kf do not apply to --generator " + o.generator +
-                             " (its fractal dimension is not chosen)");
   if (o.relax && (!(o.gamma_over_kn > 0.0) || !std::isfinite(o.gamma_over_kn)))
     throw std::runtime_error("--gamma-over-kn must be positive");
   if (o.relax && !(o.poisson_ratio >= 0.0 && o.poisson_ratio < 0.5))
     throw std::runtime_error("--poisson must lie in [0, 0.5)");
-  if (o.library.empty() == o.xyz.empty()) throw std::runtime_error("give either --output FILE.h5 or --xyz FILE.xyz");
-  if (!o.xyz.empty() && o.count != 1)
+  if (o.output.empty() == o.xyz.empty())
+    throw std::runtime_error("give either --output FILE (.h5 or .hdf5: a cluster library; otherwise XYZ) or --xyz FILE");
+  if (!o.to_library() && o.count != 1)
     throw std::runtime_error("an XYZ file holds one cluster; use --output FILE.h5 for --count " +
                              std::to_string(o.count));
-  return generator;
+  if (!o.to_library() && (!o.name_prefix.empty() || o.overwrite))
+    throw std::runtime_error("--name and --overwrite apply to a cluster library (--output FILE.h5)");
 }
 
 // Seed of cluster `index` (0, 1, ...) of a generation with base seed `base`: output index + 1 of a
@@ -208,10 +209,11 @@ std::uint64_t derived_seed(std::uint64_t base, std::uint64_t index) {
 }
 
 // Names "<prefix>-<index>", the index zero-padded to the width of the largest one, so that they
-// sort in generation order. The default prefix is "<generator>-N<primaries>-seed<seed>".
+// sort in generation order. The default prefix is "<generator>-N<primaries>-seed<seed>", with the
+// generator's registered name.
 std::vector<std::string> cluster_names(const GenerateOptions& o) {
-  const std::string prefix = o.name_prefix.empty() ? o.generator + "-N" + std::to_string(o.primaries) + "-seed" +
-                                                         std::to_string(o.seed)
+  const std::string prefix = o.name_prefix.empty() ? request_for(o, 0).method + "-N" + std::to_string(o.primaries) +
+                                                         "-seed" + std::to_string(o.seed)
                                                    : o.name_prefix;
   const std::size_t width = std::to_string(o.count - 1).size();
   std::vector<std::string> names;
@@ -224,11 +226,11 @@ std::vector<std::string> cluster_names(const GenerateOptions& o) {
 
 // Fails before any work when a name to be written is already in the library.
 void require_free_names(const GenerateOptions& o, const std::vector<std::string>& names) {
-  if (o.overwrite || !std::filesystem::exists(o.library)) return;
-  const std::vector<std::string> stored = list_clusters(o.library);
+  if (o.overwrite || !std::filesystem::exists(o.output)) return;
+  const std::vector<std::string> stored = list_clusters(o.output);
   for (const std::string& name : names)
     if (std::find(stored.begin(), stored.end(), name) != stored.end())
-      throw std::runtime_error(o.library + " already holds a cluster '" + name +
+      throw std::runtime_error(o.output + " already holds a cluster '" + name +
                                "' (choose another --name or --seed, or give --overwrite)");
 }
 
@@ -251,20 +253,17 @@ void require_intact(const RelaxationResult& relaxation, const std::string& name,
                              " contacts (the cluster came apart); not stored");
 }
 
-json generation_parameters(const GenerateOptions& o, const Generator& generator, std::size_t index,
+// What the library records of a generation: the registry's request (as a case would name it),
+// the diameter, the seed derivation and the relaxation.
+json generation_parameters(const GenerateOptions& o, const GeneratorRequest& request, std::size_t index,
                            const std::optional<RelaxationResult>& relaxation) {
-  json parameters = {{"generator", o.generator},
-                     {"primaries", o.primaries},
-                     {"geometric_mean_diameter", o.diameter},
-                     {"geometric_standard_deviation", o.geometric_standard_deviation},
-                     {"base_seed", o.seed},
-                     {"index", index},
-                     {"seed_derivation", "splitmix64 output index+1 from base_seed"}};
-  if (generator.takes_fractal_law) {
-    parameters["fractal_dimension"] = o.fractal_dimension;
-    parameters["prefactor"] = o.prefactor;
-    parameters["gyration_convention"] = "solid_spheres";
-  }
+  json parameters = generator_document(request);
+  parameters.erase("seed");
+  parameters["geometric_mean_diameter"] = o.diameter;
+  parameters["base_seed"] = o.seed;
+  parameters["index"] = index;
+  parameters["seed_derivation"] = "splitmix64 output index+1 from base_seed";
+  if (generator_takes(request.method, "fractal_dimension")) parameters["gyration_convention"] = "solid_spheres";
   parameters["relaxation"] = nullptr;
   if (relaxation)
     parameters["relaxation"] = {{"normal_law", "jkr"},
@@ -285,51 +284,51 @@ void report_progress(std::size_t done, std::size_t total, const std::string& nam
 }
 
 // Generates, relaxes and writes cluster `index` of the run.
-void generate_one(const GenerateOptions& o, const Generator& generator, std::size_t index, const std::string& name,
-                  std::size_t total) {
+void generate_one(const GenerateOptions& o, std::size_t index, const std::string& name, std::size_t total) {
   const auto started = std::chrono::steady_clock::now();
-  const std::uint64_t seed = derived_seed(o.seed, index);
-  GeneratedCluster made = generator.generate(o, seed);
+  const GeneratorRequest request = request_for(o, derived_seed(o.seed, index));
+  Cluster cluster = generate_cluster(request);
   std::optional<RelaxationResult> relaxation;
   if (o.relax) {
-    relaxation = relax_generated(made.cluster, o);
-    require_intact(*relaxation, name, seed);
-    made.cluster = cluster_from_particles(relaxation->particles);
+    relaxation = relax_generated(cluster, o);
+    require_intact(*relaxation, name, request.seed);
+    cluster = cluster_from_particles(relaxation->particles);
   }
-  if (o.library.empty()) {
-    write_xyz_cluster(std::filesystem::path(o.xyz), made.cluster);
+  if (!o.to_library()) {
+    write_xyz_cluster(std::filesystem::path(o.xyz_file()), cluster);
   } else {
-    const ClusterOrigin origin{std::string(generator.name),
-                               generation_parameters(o, generator, index, relaxation).dump(), seed, made.prefactor,
-                               o.relax};
-    store_cluster(o.library, name, made.cluster, origin,
-                  o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
+    // k_f where the generator imposes one.
+    const double prefactor = generator_takes(request.method, "prefactor") ? request.prefactor : kNotGiven;
+    const ClusterOrigin origin{request.method, generation_parameters(o, request, index, relaxation).dump(),
+                               request.seed, prefactor, o.relax};
+    store_cluster(o.output, name, cluster, origin, o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
   }
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started;
-  report_progress(index + 1, total, name, made.cluster, relaxation, elapsed.count());
+  report_progress(index + 1, total, name, cluster, relaxation, elapsed.count());
 }
 
 void generate_clusters(const GenerateOptions& o) {
-  const Generator& generator = validated_generator(o);
+  check_generation(o);
+  check_output(o);
   const std::vector<std::string> names = cluster_names(o);
-  if (!o.library.empty()) require_free_names(o, names);
+  if (o.to_library()) require_free_names(o, names);
   const auto started = std::chrono::steady_clock::now();
 
   for (std::size_t i = 0; i < names.size(); ++i) {
     try {
-      generate_one(o, generator, i, names[i], names.size());
+      generate_one(o, i, names[i], names.size());
     } catch (const std::exception& error) {
       if (i == 0) throw;
       throw std::runtime_error(std::string(error.what()) + " (the " + std::to_string(i) +
-                               " clusters before it are stored in " + o.library + ")");
+                               " clusters before it are stored in " + o.output + ")");
     }
   }
 
   const std::chrono::duration<double> total = std::chrono::steady_clock::now() - started;
-  if (o.library.empty())
-    std::cout << "wrote " << names.front() << " to " << o.xyz;
+  if (!o.to_library())
+    std::cout << "wrote " << names.front() << " to " << o.xyz_file();
   else
-    std::cout << "stored " << names.size() << (names.size() == 1 ? " cluster" : " clusters") << " in " << o.library
+    std::cout << "stored " << names.size() << (names.size() == 1 ? " cluster" : " clusters") << " in " << o.output
               << " (" << names.front() << (names.size() > 1 ? " .. " + names.back() : "") << ")";
   std::cout << " in " << format_number(total.count(), 3) << " s\n";
 }
@@ -338,38 +337,47 @@ void add_generate(CLI::App& cluster) {
   auto o = std::make_shared<GenerateOptions>();
   auto* generate = cluster.add_subcommand("generate", "Generate relaxed clusters into a library or an XYZ file");
   generate->footer(
-      "Each cluster is relaxed to mechanical equilibrium (JKR contacts at their equilibrium overlap) before it\n"
+      "Generators (the registry impact cases and studies use, docs/IMPACT.md): " + cluster_generator_names() +
+      ".\nEach cluster is relaxed to mechanical equilibrium (JKR contacts at their equilibrium overlap) before it\n"
       "is stored; one whose relaxation does not converge or breaks contacts stops the run with an error.\n"
       "Cluster i (0, 1, ...) uses seed splitmix64(S, i): output i+1 of a SplitMix64 generator seeded with\n"
-      "--seed S; the library records that seed with the cluster. Clusters are named PREFIX-i. Progress goes\n"
-      "to stderr, one line per cluster.");
+      "--seed S; the library records that seed with the cluster. Clusters are named PREFIX-i. Either output is\n"
+      "a case's cluster file (/cluster/file/path; a library of several clusters with /cluster/file/name).\n"
+      "Progress goes to stderr, one line per cluster.");
   generate
       ->add_option("--generator", o->generator,
-                   "Generator: bcca (ballistic cluster-cluster aggregation) or tunable (FracVAL-type, hits --df\n"
-                   "and --kf)")
+                   "Generator: ballistic (BCCA; alias bcca), dlca (grown by the engine; --no-sintering for\n"
+                   "unsintered) or tunable (FracVAL-type, hits --df and --kf)")
       ->capture_default_str();
   generate->add_option("--primaries,-N", o->primaries, "Primaries per cluster")->required();
   generate->add_option("--count", o->count, "Number of clusters")->capture_default_str();
   generate->add_option("--seed", o->seed, "Base seed S")->capture_default_str();
   generate->add_option("--diameter", o->diameter, "Geometric mean primary diameter, d")->capture_default_str();
   generate->add_option("--gsd", o->geometric_standard_deviation,
-                       "Geometric standard deviation of lognormal diameters (1: monodisperse)")
+                       "Geometric standard deviation of lognormal diameters (1: monodisperse; ballistic, tunable)")
       ->capture_default_str();
   generate->add_option("--df", o->fractal_dimension, "Fractal dimension D_f of the tunable generator (1.5 to 2.8)");
   generate->add_option("--kf", o->prefactor,
                        "Fractal prefactor k_f of the tunable generator (FracVAL's Rg of solid spheres)");
+  auto* sintering = generate->add_flag("--sintering,!--no-sintering", o->sintering,
+                                       "dlca: grow with (default) or without rolling and twisting resistance");
   generate->add_flag("--relax,!--no-relax", o->relax,
                      "Relax each cluster to JKR equilibrium before storing it (default; an unconverged or broken\n"
                      "relaxation is an error)");
   generate->add_option("--gamma-over-kn", o->gamma_over_kn, "Surface energy over normal stiffness for relaxing")
       ->capture_default_str();
   generate->add_option("--poisson", o->poisson_ratio, "Poisson ratio for relaxing")->capture_default_str();
-  auto* output = generate->add_option("--output,-o", o->library, "Cluster library (HDF5) to add the clusters to");
-  auto* name = generate->add_option("--name", o->name_prefix, "Name prefix (default GENERATOR-N<primaries>-seed<S>)");
-  auto* overwrite = generate->add_flag("--overwrite", o->overwrite, "Replace clusters of the same name");
-  auto* xyz = generate->add_option("--xyz", o->xyz, "Write the (single) cluster to this XYZ file instead");
-  xyz->excludes(output)->excludes(name)->excludes(overwrite);
-  generate->callback([o] { run_reporting_errors("generate", [&] { generate_clusters(*o); }); });
+  auto* output = generate->add_option("--output,-o", o->output,
+                                      "Output: a cluster library (HDF5) to add the clusters to if it ends in .h5 or\n"
+                                      ".hdf5, else an XYZ file (one cluster)");
+  generate->add_option("--name", o->name_prefix, "Name prefix in a library (default GENERATOR-N<primaries>-seed<S>)");
+  generate->add_flag("--overwrite", o->overwrite, "Replace clusters of the same name in a library");
+  auto* xyz = generate->add_option("--xyz", o->xyz, "Write the (single) cluster to this XYZ file (as --output FILE.xyz)");
+  xyz->excludes(output);
+  generate->callback([o, sintering] {
+    o->sintering_given = sintering->count() > 0;
+    run_reporting_errors("generate", [&] { generate_clusters(*o); });
+  });
 }
 
 // ---- analyze ---------------------------------------------------------------------------------

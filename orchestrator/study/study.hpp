@@ -85,8 +85,11 @@ Study load_study(const std::filesystem::path& path, const StudyLimits& limits = 
 std::string case_hash(const nlohmann::ordered_json& completed_case_document);
 
 // The seed of stream `stream` ("cluster", "orientation") for replicate `replicate` of a study
-// seeded `study_seed`: the first 8 bytes of sha256("aerobreak-seed-v1|<seed>|<stream>|<r>"),
-// big-endian, masked to 53 bits so that JSON readers in double precision keep it exact.
-std::uint64_t replicate_seed(std::uint64_t study_seed, const std::string& stream, int replicate);
+// seeded `study_seed`, for the sample `sample_key` identifies (what builds the cluster: the
+// generator's completed request without its seed, or the cluster file; docs/ORCHESTRATOR.md):
+// the first 8 bytes of sha256("aerobreak-seed-v2|<seed>|<stream>|<r>|<sample_key>"), big-endian,
+// masked to 53 bits so that JSON readers in double precision keep it exact.
+std::uint64_t replicate_seed(std::uint64_t study_seed, const std::string& stream, int replicate,
+                             const std::string& sample_key);
 
 }  // namespace aerobreak

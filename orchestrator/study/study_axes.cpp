@@ -24,10 +24,14 @@ struct AxisAlias {
 };
 
 // The axes a study names most often, by their short names (schemas/study.schema.json lists them).
-constexpr std::array<AxisAlias, 3> kAliases{{
+constexpr std::array<AxisAlias, 7> kAliases{{
     {"impact_speed", "/impact/speed", false},
     {"gamma_over_kn", "/material/gamma_over_kn", false},
     {"primaries", "/cluster/generator/primaries", true},
+    {"generator", "/cluster/generator/method", false},
+    {"fractal_dimension", "/cluster/generator/fractal_dimension", false},
+    {"prefactor", "/cluster/generator/prefactor", false},
+    {"geometric_standard_deviation", "/cluster/generator/geometric_standard_deviation", false},
 }};
 
 constexpr std::size_t kMaxAxes = 8;

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "engine/impact/cluster_generators.hpp"
 #include "engine/impact/impact_case.hpp"
 #include "orchestrator/study/canonical_json.hpp"
 #include "orchestrator/study/case_hash.hpp"
@@ -61,7 +62,70 @@ std::string study_pointer(const Study& study, const std::string& case_pointer) {
   return "/base" + case_pointer;
 }
 
-// The base with the replicate's seeds and the grid point's values set, named after both, labels
+const auto kGenerator = Json::json_pointer("/cluster/generator");
+
+bool swept(const Study& study, const std::string& pointer) {
+  for (const auto& axis : study.axes)
+    if (covers(axis.pointer, pointer)) return true;
+  return false;
+}
+
+// The base may hold the parameters of several generators (a generator axis picks one per grid
+// point): each case keeps those its generator takes. One that an axis sets stays, and the case's
+// validation refuses it for a generator that does not take it.
+void keep_own_generator_fields(const Study& study, Json& document) {
+  if (!document.contains(kGenerator) || !document[kGenerator].is_object()) return;
+  Json& generator = document[kGenerator];
+  const Json method = generator.value("method", Json("ballistic"));
+  if (!method.is_string() || !find_cluster_generator(method.get<std::string>())) return;
+  std::vector<std::string> foreign;
+  for (const auto& [field, value] : generator.items())
+    if (!generator_takes(method.get<std::string>(), field) && !swept(study, "/cluster/generator/" + field))
+      foreign.push_back(field);
+  for (const std::string& field : foreign) generator.erase(field);
+}
+
+// What identifies the sample (cluster and orientation) of a replicate: the generator's request
+// without its seed (completed, an alias resolved), or the cluster file. Every grid point that
+// builds the same cluster then meets it in the same orientation, whatever its speed, gamma/k_n or
+// model (common random numbers), and one that builds another cluster (another N, generator, D_f,
+// k_f, sigma_g) draws an independent cluster and orientation. A file enters by its path (and the
+// library cluster it names).
+std::string sample_key(const Json& document) {
+  if (document.contains(kGenerator) && document[kGenerator].is_object()) {
+    try {
+      std::vector<GeneratorViolation> reported_later;  // by the case's validation
+      Json request = generator_document(read_generator_request(document[kGenerator], reported_later));
+      request.erase("seed");
+      std::string key = "generator ";
+      key += canonical_dump(request);
+      return key;
+    } catch (const nlohmann::json::exception&) {
+      return "invalid generator";  // wrong types: the case's validation says which
+    }
+  }
+  const auto path = Json::json_pointer("/cluster/file/path"), name = Json::json_pointer("/cluster/file/name");
+  if (!document.contains(path)) return "no cluster";
+  std::string key = "file ";
+  key += document[path].dump();
+  if (document.contains(name)) {
+    key += ' ';
+    key += document[name].dump();
+  }
+  return key;
+}
+
+// The replicate's seeds, derived from the study seed, the replicate and the sample key; a seed an
+// axis sets stays as the axis set it.
+void set_replicate_seeds(const Study& study, int replicate, Json& document) {
+  const std::string key = sample_key(document);
+  if (document.contains(kGenerator) && document[kGenerator].is_object() && !swept(study, "/cluster/generator/seed"))
+    document[kGenerator]["seed"] = replicate_seed(study.seed, "cluster", replicate, key);
+  if ((!document.contains("impact") || document["impact"].is_object()) && !swept(study, "/impact/orientation_seed"))
+    document["impact"]["orientation_seed"] = replicate_seed(study.seed, "orientation", replicate, key);
+}
+
+// The base with the grid point's values and the replicate's seeds set, named after both, labels
 // of the base dropped. Returns null when an axis cannot be set (the base has a value in the way).
 Json case_document(const Study& study, const Json& grid_point, int replicate, const std::string& where,
                    CaseViolations& violations) {
@@ -69,16 +133,6 @@ Json case_document(const Study& study, const Json& grid_point, int replicate, co
   document.erase("name");
   document.erase("description");
   document.erase("$schema");
-  // Seeds first, so that an axis setting one wins. They depend on the replicate only, not on the
-  // grid point: replicate r impacts the same cluster (for a given N) in the same orientation at
-  // every speed and gamma/k_n (common random numbers), so that the differences between grid points
-  // are not sampling noise.
-  const auto generator = Json::json_pointer("/cluster/generator");
-  if (document.contains(generator) && document[generator].is_object())
-    document[generator]["seed"] = replicate_seed(study.seed, "cluster", replicate);
-  if (!document.contains("impact") || document["impact"].is_object())
-    document["impact"]["orientation_seed"] = replicate_seed(study.seed, "orientation", replicate);
-
   for (const auto& axis : study.axes) {
     try {
       document[Json::json_pointer(axis.pointer)] = grid_point[axis.name];
@@ -87,6 +141,8 @@ Json case_document(const Study& study, const Json& grid_point, int replicate, co
       return nullptr;
     }
   }
+  keep_own_generator_fields(study, document);
+  set_replicate_seeds(study, replicate, document);
 
   Json named{{"name", study.name + " | " + grid_label(grid_point) + " | replicate " + std::to_string(replicate)}};
   for (auto& [key, value] : document.items()) named[key] = std::move(value);

@@ -58,7 +58,7 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
   const CommandOutput generated = run_aerobreak(std::string(kSmallLibrary) + " --output " + library);
   INFO(generated.text);
   REQUIRE(generated.exit_code == 0);
-  CHECK(generated.text.find("[3/3] bcca-N32-seed5-2: N = 32, Rg = ") != std::string::npos);
+  CHECK(generated.text.find("[3/3] ballistic-N32-seed5-2: N = 32, Rg = ") != std::string::npos);
   CHECK(generated.text.find("stored 3 clusters in " + library) != std::string::npos);
 
   const CommandOutput table = run_aerobreak_stdout("cluster analyze " + library);
@@ -69,7 +69,7 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
   CHECK(rows[0].rfind("name", 0) == 0);
   CHECK(rows[0].find("porosity") != std::string::npos);
   for (int i = 1; i <= 3; ++i) {
-    CHECK(rows[i].rfind("bcca-N32-seed5-" + std::to_string(i - 1), 0) == 0);
+    CHECK(rows[i].rfind("ballistic-N32-seed5-" + std::to_string(i - 1), 0) == 0);
     CHECK(rows[i].size() == rows[0].size());
   }
 
@@ -81,7 +81,7 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
     CHECK(cluster.at("primary_count") == 32);
     CHECK(cluster.at("component_count") == 1);
     CHECK(cluster.at("relaxed") == true);
-    CHECK(cluster.at("generator") == "bcca");
+    CHECK(cluster.at("generator") == "ballistic");
     for (const char* key : {"name", "radius_of_gyration", "maximum_extent", "contact_count",
                             "mean_coordination_number", "filling_factor", "porosity", "mass_radius_dimension"})
       CHECK(cluster.contains(key));
@@ -89,7 +89,7 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
   }
   CHECK(parsed.at("ensemble_fit").is_null());
 
-  const CommandOutput one = run_aerobreak_stdout("cluster analyze --json --name bcca-N32-seed5-1 " + library);
+  const CommandOutput one = run_aerobreak_stdout("cluster analyze --json --name ballistic-N32-seed5-1 " + library);
   REQUIRE(one.exit_code == 0);
   CHECK(nlohmann::json::parse(one.text).at("clusters").size() == 1);
 }
@@ -116,7 +116,7 @@ TEST_CASE("cluster generate stores relaxed BCCA clusters of lognormal primaries 
   }
 
   const std::string xyz = dir.file("first.xyz");
-  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name bcca-N64-seed3-0").exit_code == 0);
+  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name ballistic-N64-seed3-0").exit_code == 0);
   std::vector<double> radii;
   for (const std::string& line : lines_of(file_bytes(xyz))) {
     if (line[0] == '#') continue;
@@ -167,7 +167,7 @@ TEST_CASE("cluster generate --generator tunable records the prefactor it imposed
   const CommandOutput incomplete =
       run_aerobreak("cluster generate --generator tunable --df 1.8 --primaries 32 --output " + library);
   CHECK(incomplete.exit_code != 0);
-  CHECK(incomplete.text.find("needs --df and --kf") != std::string::npos);
+  CHECK(incomplete.text.find("--kf is required by the tunable generator") != std::string::npos);
 }
 
 TEST_CASE("cluster convert turns a library entry into XYZ and back without change") {
@@ -176,7 +176,7 @@ TEST_CASE("cluster convert turns a library entry into XYZ and back without chang
   REQUIRE(run_aerobreak(std::string(kSmallLibrary) + " --output " + library).exit_code == 0);
 
   const std::string xyz = dir.file("one.xyz");
-  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name bcca-N32-seed5-1").exit_code == 0);
+  REQUIRE(run_aerobreak("cluster convert " + library + " " + xyz + " --name ballistic-N32-seed5-1").exit_code == 0);
   const std::string back = dir.file("back.h5");
   REQUIRE(run_aerobreak("cluster convert " + xyz + " " + back).exit_code == 0);
   const std::string again = dir.file("again.xyz");
@@ -184,7 +184,7 @@ TEST_CASE("cluster convert turns a library entry into XYZ and back without chang
   CHECK(file_bytes(again) == file_bytes(xyz));
 
   const nlohmann::json original =
-      nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json --name bcca-N32-seed5-1 " + library).text);
+      nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json --name ballistic-N32-seed5-1 " + library).text);
   const nlohmann::json converted = nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json " + xyz).text);
   CHECK(converted.at("clusters")[0].at("radius_of_gyration") == original.at("clusters")[0].at("radius_of_gyration"));
   CHECK(converted.at("clusters")[0].at("name") == "one");
@@ -212,9 +212,14 @@ TEST_CASE("cluster commands reject bad input with a message and a non-zero exit"
   };
   fails_with("cluster generate --generator dla --primaries 8 --output " + library, "unknown generator 'dla'");
   fails_with("cluster generate --primaries 0 --output " + library, "--primaries must be at least 1");
-  fails_with("cluster generate --primaries 8", "give either --output FILE.h5 or --xyz FILE.xyz");
+  fails_with("cluster generate --primaries 8", "give either --output FILE");
   fails_with("cluster generate --primaries 8 --count 2 --xyz " + dir.file("x.xyz"), "holds one cluster");
-  fails_with("cluster generate --primaries 8 --df 1.8 --kf 1.3 --output " + library, "do not apply");
+  fails_with("cluster generate --primaries 8 --df 1.8 --kf 1.3 --output " + library,
+             "--df applies to the tunable generator only, not to ballistic");
+  fails_with("cluster generate --primaries 8 --no-sintering --output " + library,
+             "--sintering applies to the dlca generator only");
+  fails_with("cluster generate --generator dlca --gsd 1.3 --primaries 8 --output " + library,
+             "--gsd must be 1: the dlca generator grows monodisperse primaries");
   fails_with("cluster analyze " + dir.file("missing.h5"), "no such file: " + dir.file("missing.h5"));
 
   std::ofstream(dir.file("bad.xyz")) << "0 0 0 0.5\n1 0 0 0.5\n1 x 0 0.5\n";
@@ -226,4 +231,56 @@ TEST_CASE("cluster commands reject bad input with a message and a non-zero exit"
   fails_with("cluster analyze --name nope " + library, "'nope'");
   fails_with("cluster convert " + library + " " + dir.file("out.xyz"), "needs --name");
   CHECK_FALSE(std::filesystem::exists(dir.file("out.xyz")));
+}
+
+namespace {
+
+// Runs `aerobreak impact` on a small case whose cluster is `file` (relative to the case's
+// directory), optionally the library cluster `name`; returns the result document, or null.
+nlohmann::json impact_with_cluster_file(const aerobreak::testing::ScratchDirectory& dir, const std::string& file,
+                                        const std::string& name, CommandOutput& out) {
+  nlohmann::json cluster_file{{"path", file}};
+  if (!name.empty()) cluster_file["name"] = name;
+  const nlohmann::json impact_case{{"cluster", {{"file", cluster_file}}},
+                                   {"material", {{"gamma_over_kn", 0.01}}},
+                                   {"impact", {{"speed", 0.05}}},
+                                   {"run", {{"time_limit", 300}}}};
+  const std::string case_file = dir.write("case.json", impact_case.dump()).string();
+  const std::string result_file = dir.file("result.json");
+  std::filesystem::remove(result_file);
+  out = run_aerobreak("impact -q " + case_file + " -o " + result_file);
+  if (out.exit_code != 0) return nullptr;
+  return nlohmann::json::parse(file_bytes(result_file));
+}
+
+}  // namespace
+
+TEST_CASE("what cluster generate writes is a case's cluster file: a library or an XYZ file") {
+  const aerobreak::testing::ScratchDirectory dir("cluster_cli");
+  CommandOutput out;
+  int made = 0;
+  for (const char* generator : {"ballistic", "bcca", "dlca", "tunable --df 1.8 --kf 1.3"}) {
+    INFO(generator);
+    const std::string library = "library" + std::to_string(made++) + ".h5";
+    REQUIRE(run_aerobreak("cluster generate --generator " + std::string(generator) + " --primaries 8 --output " +
+                          dir.file(library))
+                .exit_code == 0);
+    const nlohmann::json result = impact_with_cluster_file(dir, library, "", out);
+    INFO(out.text);
+    REQUIRE_FALSE(result.is_null());
+    CHECK(result["compaction"]["before"]["primaries"] == 8);
+    CHECK(result["setup"]["cluster_source"] == "file");
+  }
+
+  REQUIRE(run_aerobreak("cluster generate --primaries 8 --output " + dir.file("one.xyz")).exit_code == 0);
+  CHECK(impact_with_cluster_file(dir, "one.xyz", "", out)["compaction"]["before"]["primaries"] == 8);
+
+  // A library of several clusters: the case names one.
+  REQUIRE(run_aerobreak("cluster generate --primaries 8 --count 2 --output " + dir.file("two.h5")).exit_code == 0);
+  CHECK(impact_with_cluster_file(dir, "two.h5", "", out).is_null());
+  CHECK(out.text.find("/cluster/file/name: must name the cluster to take") != std::string::npos);
+  CHECK(impact_with_cluster_file(dir, "two.h5", "ballistic-N8-seed1-1", out)["compaction"]["before"]["primaries"] == 8);
+  CHECK(impact_with_cluster_file(dir, "two.h5", "nope", out).is_null());
+  CHECK(impact_with_cluster_file(dir, "one.xyz", "ballistic-N8-seed1-0", out).is_null());
+  CHECK(out.text.find("/cluster/file/name: names a cluster of a library") != std::string::npos);
 }

@@ -55,7 +55,7 @@ TEST_CASE("a minimal case loads and the schema's defaults are completed") {
   CHECK(c.thresholds.bounce_share == 0.9);
   CHECK(c.angle_degrees == 0.0);
   CHECK(c.gap == 0.01);
-  CHECK(c.cluster.primaries == 8);
+  CHECK(c.cluster.generator.primaries == 8);
   CHECK(c.cluster.relax);
   CHECK(c.material.surface_energy == 0.01);
   CHECK_THAT(normal_stiffness(c.material, 1.0), WithinRel(1.0, 1e-14));  // reduced units: k_n = 1
@@ -76,8 +76,8 @@ TEST_CASE("the study cases of figure 4 are valid cases") {
     const double constant = std::pow(3.0 * std::numbers::pi, 5.0 / 3.0) / (4.0 * std::cbrt(6.0));
     CHECK_THAT(adhesion_energy_ratio(c.material, 1.0, c.speed), WithinRel(constant * 0.01 * 200.0, 1e-9));
   }
-  CHECK(load_impact_case(testing::source_path("studies/figure4_impact.case.json")).cluster.primaries == 4096);
-  CHECK(load_impact_case(testing::source_path("studies/figure4_impact_n256.case.json")).cluster.primaries == 256);
+  CHECK(load_impact_case(testing::source_path("studies/figure4_impact.case.json")).cluster.generator.primaries == 4096);
+  CHECK(load_impact_case(testing::source_path("studies/figure4_impact_n256.case.json")).cluster.generator.primaries == 256);
 }
 
 TEST_CASE("invalid cases are rejected with errors that name the field") {

@@ -18,14 +18,16 @@ TEST_CASE("the default study and its cases keep the hashes stored before the cha
   // studies/default.study.json. Should a schema change (a new default) alter these, every stored
   // case would be run again: that is a decision to take knowingly, not a value to update. The
   // study's own hash covers its description, which the outcome classes by what leaves the wall
-  // (store migration 2) rewrote; its cases' hashes did not change.
+  // (store migration 2) rewrote. Its cases' hashes changed once, knowingly, with the v2 replicate
+  // seeds (keyed by the cluster request too, docs/ORCHESTRATOR.md): a store made before runs the
+  // default study's cases again.
   const Study study = load_study(testing::source_path("studies/default.study.json"));
   REQUIRE(study.cases.size() == 640);
   CHECK(study.hash == "826cc24071a9ff9bee1764529dfbbf86d84b3d282851727de8f8d7680129f97b");
-  CHECK(study.cases[0].hash == "479b9d26b9ca113a58da5781d2d6b0a57eef8851943808bab5175be294019368");
-  CHECK(study.cases[1].hash == "f1dc8897b7a91b82525fbcca38b6ddd398bba8bb6fd03932908104a0d16a3ba9");
-  CHECK(study.cases[319].hash == "4e3d7561fd03d8887bfd3575668a053ea1147ce8cc7a083e7e19f98974a19098");
-  CHECK(study.cases[639].hash == "9c0442ce9dcf4d0f1d40cb9a37d889f3486f9458490308d8e4770a970474c962");
+  CHECK(study.cases[0].hash == "4c6d7b91dfe9f6d02d9776c24cc5a50904361ecdee0d98c5c03b4c3cb2151a89");
+  CHECK(study.cases[1].hash == "64ca70e2dbb2032923a3a55e93a9cbf11de4971796b36d25917b6d0fe41182a2");
+  CHECK(study.cases[319].hash == "ab695cfc4ddc901ce19de2f22e1ae51b7c3dd0f072c18627e294c37a43fe36af");
+  CHECK(study.cases[639].hash == "58e9348a128da8576632421803e35c261fb09d8814e698844136bddb21b675f1");
 }
 
 TEST_CASE("a completed case document keeps its stored hash, whatever the schema's defaults become") {
@@ -51,8 +53,13 @@ TEST_CASE("a case made from a cluster file keeps its stored hash (the file enter
   CHECK(case_hash(document) == "97c08a9586a86e82aafcdf0d971625fd78def7693ab4ab4f3a586a0a7061e070");
 }
 
-TEST_CASE("replicate seeds keep their stored values") {
-  CHECK(replicate_seed(2026, "cluster", 0) == 8945730363485681u);
-  CHECK(replicate_seed(2026, "cluster", 1) == 1160652145291885u);
-  CHECK(replicate_seed(2026, "cluster", 19) == 5105082309617888u);
+TEST_CASE("replicate seeds (v2) are the documented digest") {
+  // Expected values from Python's hashlib, an implementation independent of aerobreak's:
+  //   python3 -c "import hashlib; k='{\"method\":\"ballistic\",\"primaries\":32}'
+  //   d=hashlib.sha256(f'aerobreak-seed-v2|2026|cluster|1|{k}'.encode()).digest()
+  //   print(int.from_bytes(d[:8], 'big') & ((1 << 53) - 1))"   (and replicates 0 with key '', 19)
+  const std::string key = R"({"method":"ballistic","primaries":32})";
+  CHECK(replicate_seed(2026, "cluster", 0, "") == 547130842142006u);
+  CHECK(replicate_seed(2026, "cluster", 1, key) == 7413063362078492u);
+  CHECK(replicate_seed(2026, "cluster", 19, key) == 4863044663831704u);
 }

@@ -1,11 +1,14 @@
 // Study::cases: every combination of one value per axis (first axis slowest, replicates fastest),
-// ranges with exact end points, replicate seeds derived from the study seed and the replicate only.
+// ranges with exact end points, replicate seeds derived from the study seed, the replicate and what
+// builds the cluster.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
 
+#include "engine/impact/cluster_generators.hpp"
 #include "orchestrator/study/sha256.hpp"
 #include "study_support.hpp"
 
@@ -18,10 +21,17 @@ namespace {
 Json ptr(const Json& document, const std::string& pointer) { return document.at(Json::json_pointer(pointer)); }
 
 // The replicate seed computed here from its definition, independently of replicate_seed().
-std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream, int replicate) {
-  const std::string hex = sha256_hex("aerobreak-seed-v1|" + std::to_string(study_seed) + "|" + stream + "|" +
-                                     std::to_string(replicate));
+std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream, int replicate, const std::string& key) {
+  const std::string hex = sha256_hex("aerobreak-seed-v2|" + std::to_string(study_seed) + "|" + stream + "|" +
+                                     std::to_string(replicate) + "|" + key);
   return std::stoull(hex.substr(0, 16), nullptr, 16) & ((std::uint64_t{1} << 53) - 1);
+}
+
+// The sample key of a ballistic cluster of `primaries` (docs/ORCHESTRATOR.md): its completed
+// generator without the seed, keys sorted.
+std::string ballistic_key(int primaries) {
+  return R"(generator {"geometric_standard_deviation":1,"method":"ballistic","primaries":)" + std::to_string(primaries) +
+         "}";
 }
 
 Json grid_study() {
@@ -119,24 +129,27 @@ TEST_CASE("values inside a range are the decimal numbers a user would type") {
   CHECK(study.axes[1].values[1].dump() == "0.00948683298050514");
 }
 
-TEST_CASE("replicate r gets seeds derived from the study seed and r, the same at every grid point") {
+TEST_CASE("replicate r gets seeds derived from the study seed, r and the cluster, the same along speed and gamma") {
   const auto cases = parse_study(grid_study()).cases;
   std::set<std::uint64_t> cluster_seeds, orientation_seeds;
   for (const auto& c : cases) {
     const auto cluster = ptr(c.document, "/cluster/generator/seed").get<std::uint64_t>();
     const auto orientation = ptr(c.document, "/impact/orientation_seed").get<std::uint64_t>();
-    CHECK(cluster == expected_seed(2026, "cluster", c.replicate));
-    CHECK(orientation == expected_seed(2026, "orientation", c.replicate));
-    CHECK(cluster == replicate_seed(2026, "cluster", c.replicate));
+    const std::string key = ballistic_key(ptr(c.document, "/cluster/generator/primaries").get<int>());
+    CHECK(cluster == expected_seed(2026, "cluster", c.replicate, key));
+    CHECK(orientation == expected_seed(2026, "orientation", c.replicate, key));
+    CHECK(cluster == replicate_seed(2026, "cluster", c.replicate, key));
     CHECK(cluster < (std::uint64_t{1} << 53));
     cluster_seeds.insert(cluster);
     orientation_seeds.insert(orientation);
   }
-  // Two replicates: two seeds per stream over all twelve grid points.
-  CHECK(cluster_seeds.size() == 2);
-  CHECK(orientation_seeds.size() == 2);
-  CHECK(replicate_seed(2026, "cluster", 0) != replicate_seed(2027, "cluster", 0));
-  CHECK(replicate_seed(2026, "cluster", 0) != replicate_seed(2026, "orientation", 0));
+  // Two replicates of two sizes: four seeds per stream over all 24 cases, each shared by the six
+  // (speed, gamma/k_n) grid points of its size.
+  CHECK(cluster_seeds.size() == 4);
+  CHECK(orientation_seeds.size() == 4);
+  CHECK(replicate_seed(2026, "cluster", 0, "k") != replicate_seed(2027, "cluster", 0, "k"));
+  CHECK(replicate_seed(2026, "cluster", 0, "k") != replicate_seed(2026, "orientation", 0, "k"));
+  CHECK(replicate_seed(2026, "cluster", 0, "k") != replicate_seed(2026, "cluster", 0, "l"));
 }
 
 TEST_CASE("the seeds of replicate r do not depend on how many replicates the study has") {
@@ -156,7 +169,7 @@ TEST_CASE("an axis setting a seed wins over the derived one") {
   CHECK(ptr(cases[0].document, "/impact/orientation_seed") == 5);
   CHECK(ptr(cases[1].document, "/impact/orientation_seed") == 5);  // replicate 1, same swept seed
   CHECK(ptr(cases[2].document, "/impact/orientation_seed") == 6);
-  CHECK(ptr(cases[1].document, "/cluster/generator/seed") == replicate_seed(2026, "cluster", 1));
+  CHECK(ptr(cases[1].document, "/cluster/generator/seed") == replicate_seed(2026, "cluster", 1, ballistic_key(8)));
 }
 
 TEST_CASE("a cluster read from a file gets no generator seed, only an orientation seed") {
@@ -167,5 +180,121 @@ TEST_CASE("a cluster read from a file gets no generator seed, only an orientatio
   const auto cases = parse_study(s).cases;
   REQUIRE(cases.size() == 12);
   CHECK_FALSE(cases[0].document["cluster"].contains("generator"));
-  CHECK(ptr(cases[1].document, "/impact/orientation_seed") == replicate_seed(2026, "orientation", 1));
+  CHECK(ptr(cases[1].document, "/impact/orientation_seed") ==
+        replicate_seed(2026, "orientation", 1, "file " + cases[1].document["cluster"]["file"]["path"].dump()));
+}
+
+namespace {
+
+Json generator_study() {
+  Json s = minimal_study();
+  s["base"]["cluster"]["generator"] = {{"fractal_dimension", 1.8}, {"prefactor", 1.3}, {"sintering", false}};
+  s["base"]["material"]["gamma_over_kn"] = 0.01;
+  s["axes"] = Json::parse(R"({
+    "generator": {"values": ["ballistic", "dlca", "tunable"]},
+    "impact_speed": {"values": [0.01, 0.02]},
+    "primaries": {"values": [8]}
+  })");
+  s["replicates"] = {{"count", 2}, {"seed", 2026}};
+  return s;
+}
+
+Cluster cluster_of(const StudyCase& c) {
+  std::vector<GeneratorViolation> violations;
+  const GeneratorRequest request = read_generator_request(c.document["cluster"]["generator"], violations);
+  REQUIRE(violations.empty());
+  return generate_cluster(request);
+}
+
+// Whether `small`, moved as a whole, lies on primaries of `large`: a sub-cluster of it.
+bool sub_cluster(const Cluster& small, const Cluster& large) {
+  for (const Vec3& anchor : large.position) {
+    const Vec3 shift = anchor - small.position[0];
+    bool all = true;
+    for (std::size_t k = 0; k < small.size() && all; ++k)
+      all = std::any_of(large.position.begin(), large.position.end(),
+                        [&](const Vec3& x) { return norm(small.position[k] + shift - x) < 1e-9; });
+    if (all) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("a generator axis gives each case its generator's fields from the base and its own cluster") {
+  const auto cases = parse_study(generator_study()).cases;
+  REQUIRE(cases.size() == 12);
+  for (const auto& c : cases) {
+    const Json& generator = c.document["cluster"]["generator"];
+    const std::string method = c.grid_point["generator"];
+    INFO(method);
+    CHECK(generator["method"] == method);
+    CHECK(generator.contains("fractal_dimension") == (method == "tunable"));
+    CHECK(generator.contains("prefactor") == (method == "tunable"));
+    CHECK(generator.contains("sintering") == (method == "dlca"));
+  }
+  // Replicate 0 at speed 0.01: one seed per generator (each builds another cluster); the same
+  // seeds at speed 0.02.
+  std::set<std::uint64_t> seeds;
+  for (std::size_t k : {0, 4, 8}) seeds.insert(ptr(cases[k].document, "/cluster/generator/seed").get<std::uint64_t>());
+  CHECK(seeds.size() == 3);
+  for (std::size_t k : {0, 4, 8}) {
+    CHECK(cases[k].document["cluster"] == cases[k + 2].document["cluster"]);
+    CHECK(cases[k].document["impact"]["orientation_seed"] == cases[k + 2].document["impact"]["orientation_seed"]);
+  }
+}
+
+TEST_CASE("fractal dimension and prefactor axes sweep the tunable generator; another generator refuses them") {
+  Json s = minimal_study();
+  s["base"]["cluster"]["generator"] = {{"method", "tunable"}};
+  s["axes"] = Json::parse(R"({
+    "fractal_dimension": {"values": [1.6, 1.8, 2.0]},
+    "prefactor": {"values": [1.2, 1.4]},
+    "primaries": {"values": [16]}
+  })");
+  const auto cases = parse_study(s).cases;
+  REQUIRE(cases.size() == 6);
+  std::set<std::uint64_t> seeds;
+  for (const auto& c : cases) {
+    CHECK(ptr(c.document, "/cluster/generator/fractal_dimension") == c.grid_point["fractal_dimension"]);
+    CHECK(ptr(c.document, "/cluster/generator/prefactor") == c.grid_point["prefactor"]);
+    seeds.insert(ptr(c.document, "/cluster/generator/seed").get<std::uint64_t>());
+  }
+  CHECK(seeds.size() == 6);
+
+  s["axes"]["generator"] = {{"values", {"ballistic", "tunable"}}};
+  const auto violations = testing::violations_of(s);
+  CHECK_THAT(testing::message_at(violations, "/axes/fractal_dimension"),
+             Catch::Matchers::Contains("applies to the tunable generator only, not to ballistic"));
+  // An alias of the same generator is the same physics.
+  s = generator_study();
+  s["axes"]["generator"] = {{"values", {"ballistic", "bcca"}}};
+  CHECK_THAT(testing::message_at(testing::violations_of(s), "/axes"), Catch::Matchers::Contains("the same physics"));
+}
+
+TEST_CASE("the N = 32 cluster of a replicate is no sub-cluster of its N = 128 one; two speeds share the cluster") {
+  Json s = minimal_study();
+  s["axes"] = Json::parse(R"({"primaries": {"values": [32, 128]}, "impact_speed": {"values": [0.01, 0.02]}})");
+  s["base"]["material"]["gamma_over_kn"] = 0.01;
+  s["replicates"] = {{"count", 2}, {"seed", 2026}};
+  const auto cases = parse_study(s).cases;
+  REQUIRE(cases.size() == 8);  // N slowest, then speed, replicates fastest
+  for (int r : {0, 1}) {
+    INFO("replicate " << r);
+    const StudyCase& small = cases[r];
+    const StudyCase& small_faster = cases[2 + r];
+    const StudyCase& large = cases[4 + r];
+    CHECK(small_faster.grid_point["impact_speed"] == 0.02);
+    CHECK(small.document["cluster"] == small_faster.document["cluster"]);
+    CHECK(small.document["impact"]["orientation_seed"] == small_faster.document["impact"]["orientation_seed"]);
+    CHECK(small.document["impact"]["orientation_seed"] != large.document["impact"]["orientation_seed"]);
+    const Cluster small_cluster = cluster_of(small);
+    CHECK_FALSE(sub_cluster(small_cluster, cluster_of(large)));
+    // What a seed shared by both sizes gave (the depth-first ballistic generator builds the first
+    // 32 primaries of a 128 exactly as the 32 alone): the check above can fail.
+    GeneratorRequest shared;
+    shared.primaries = 128;
+    shared.seed = ptr(small.document, "/cluster/generator/seed").get<std::uint64_t>();
+    CHECK(sub_cluster(small_cluster, generate_cluster(shared)));
+  }
 }
