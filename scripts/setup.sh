@@ -17,6 +17,7 @@ packages=(
   json-schema-test-suite
   libcli11-dev
   libeigen3-dev
+  libboost-dev
   gfortran
   chromium
 )

@@ -1,5 +1,9 @@
 // The correlation endpoints over real HTTP: `aerobreak serve` on a store that holds a finished
 // study (committed through the store, no engine), and the CLI client against it.
+#include <fstream>
+#include <set>
+
+#include "engine/impact/json_schema.hpp"
 #include "orchestrator/store/store.hpp"
 #include "tests/orchestrator/service_process.hpp"
 #include "tests/store/correlation_study.hpp"
@@ -24,6 +28,12 @@ const Json* fit_named(const Json& summary, const std::string& name) {
   for (const auto& fit : summary.at("fits"))
     if (fit.at("name") == name) return &fit;
   return nullptr;
+}
+
+JsonSchema correlation_schema() {
+  std::ifstream file(std::string(AEROBREAK_SOURCE_DIR) + "/schemas/correlation.schema.json");
+  REQUIRE(file);
+  return JsonSchema(Json::parse(file));
 }
 
 // A store with study 1 finished (10 replicates) and study 2 submitted and cancelled (no results).
@@ -73,6 +83,21 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   for (const auto& point : curve) CHECK(point.at("ci95")[0].get<double>() <= point.at("value").get<double>());
   CHECK(fit.at("validity").at("impact_speed").at("max") == 0.3);
 
+  // ETags: a client holding the current document gets 304 without a body; each document has its own.
+  auto client = service.client();
+  const auto tagged = client.Get("/api/studies/1/correlations");
+  REQUIRE(tagged);
+  const std::string etag = tagged->get_header_value("ETag");
+  CHECK(etag.size() == 34);
+  const auto unchanged = client.Get("/api/studies/1/correlations", httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(unchanged);
+  CHECK(unchanged->status == 304);
+  CHECK(unchanged->body.empty());
+  const auto other = client.Get("/api/studies/1/correlations/break-up.speed.g1", httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(other);
+  CHECK(other->status == 200);
+  CHECK(other->get_header_value("ETag") != etag);
+
   const Answer unknown = get(service, "/api/studies/1/correlations/break-up.speed.g9");
   CHECK(unknown.status == 404);
   CHECK(unknown.body.at("error").get<std::string>().find("no fit 'break-up.speed.g9'") != std::string::npos);
@@ -92,6 +117,41 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   CHECK(printed.exit_code == 0);
   CHECK(printed.text.find("v50 [95% CI]") != std::string::npos);
   CHECK(printed.text.find("break-up.speed.pooled") != std::string::npos);
+  CHECK(service.kill(SIGTERM) == 0);
+}
+
+TEST_CASE("Every served correlation document is valid against schemas/correlation.schema.json", "[service][correlations]") {
+  ScratchDirectory directory("correlation_schema");
+  prepare_store(directory.path() / "store.sqlite");
+  ServiceProcess service(directory.path());
+  const JsonSchema schema = correlation_schema();
+
+  const auto check = [&schema](const Json& document, const std::string& name) {
+    INFO(name << ":\n" << describe(schema.validate(document)));
+    CHECK(schema.validate(document).empty());
+  };
+  const Json summary = service.get("/api/studies/1/correlations");
+  check(summary, "summary");
+  std::vector<std::string> names{"grid-points"};
+  for (const auto& fit : summary.at("fits")) names.push_back(fit.at("name"));
+  for (const auto& name : summary.at("fragment_sizes")) names.push_back(name);
+  std::set<std::string> kinds;
+  for (const auto& name : names) {
+    const Json document = service.get("/api/studies/1/correlations/" + name);
+    kinds.insert(document.at("kind").get<std::string>());
+    check(document, name);
+  }
+  // Every kind of document was among them, a fit with covariates too.
+  CHECK(kinds == std::set<std::string>{"grid-points", "logistic", "multinomial", "scaling", "retained-fraction", "fragment-sizes"});
+  check(service.get("/api/studies/1/correlations/break-up.energy.pooled?covariates=N"), "pooled energy fit");
+
+  // The schema is a contract, not a formality: a document that breaks it is refused.
+  Json broken = service.get("/api/studies/1/correlations/break-up.speed.g1");
+  broken["status"] = "fine";
+  CHECK_FALSE(schema.validate(broken).empty());
+  broken = summary;
+  broken["fits"][0].erase("validity");
+  CHECK_FALSE(schema.validate(broken).empty());
   CHECK(service.kill(SIGTERM) == 0);
 }
 

@@ -32,9 +32,12 @@ inline StudySubmission correlation_study_submission(const std::string& hash, int
   return study;
 }
 
-// A result document of the shared outcome interface (and the fields stores from before it read):
-// break-up leaves `pieces` fragments of size 1 and 3 off the wall, bounce one fragment of N.
-inline nlohmann::ordered_json correlation_result(const std::string& outcome, int primaries, double retained) {
+// A result document of the shared outcome interface (schemas/result.schema.json): break-up leaves
+// four fragments of sizes 1 and 3 off the wall, bounce one fragment of N; the energy per contact
+// grows as the speed squared (5 at 0.05, with a +-10 % spread between replicates), and results from
+// 0.2 on are flagged outside the small-strain range.
+inline nlohmann::ordered_json correlation_result(const std::string& outcome, int primaries, double retained, double speed,
+                                                 double spread) {
   nlohmann::ordered_json fragments = nlohmann::ordered_json::array();
   const auto fragment = [&fragments](int size, bool on_wall) {
     fragments.push_back({{"size", size}, {"mass", double(size)}, {"on_wall", on_wall}, {"normal_velocity", 0.01},
@@ -46,12 +49,15 @@ inline nlohmann::ordered_json correlation_result(const std::string& outcome, int
     for (int k = 0; k < 4; ++k) fragment(k % 2 ? 3 : 1, false);
   return {{"outcome",
            {{"class", outcome},
+            {"fractured_on_wall", false},
             {"fragment_count", fragments.size()},
             {"restitution", {{"normal", outcome == "bounce" ? 0.3 : 0.0}, {"tangential", nullptr}}},
             {"retained_mass_fraction", retained},
-            {"mass_fraction_on_wall", retained},
+            {"reentrained_mass_fraction", 1.0 - retained},
             {"damage_ratio", outcome == "stick" ? 0.02 : 0.2}}},
-          {"dimensionless", {{"energy_per_contact", 0.1}}},
+          {"validity", {{"small_strain", speed < 0.2}}},
+          {"dimensionless", {{"energy_per_contact", 5.0 * std::pow(speed / 0.05, 2.0) * (1.0 + spread)},
+                             {"initial_contacts", primaries - 1}}},
           {"setup", {{"impact_kinetic_energy", 0.002}}},
           {"fragments", {{"list", fragments}}}};
 }
@@ -69,7 +75,9 @@ inline std::int64_t finished_correlation_study(Store& store, const std::string& 
     const double u = static_cast<double>(engine() >> 11) * 0x1.0p-53;
     const std::string outcome = u < p ? "break-up" : (u < p + 0.05 ? "bounce" : "stick");
     const double retained = outcome == "stick" ? 1.0 : outcome == "bounce" ? 0.0 : 1.0 - p * 0.8;
-    store.commit_result(claimed->case_id, claimed->attempt, correlation_result(outcome, primaries, retained), "", 0.1);
+    const double spread = 0.2 * (static_cast<double>(engine() >> 11) * 0x1.0p-53 - 0.5);
+    store.commit_result(claimed->case_id, claimed->attempt, correlation_result(outcome, primaries, retained, speed, spread), "",
+                        0.1);
   }
   store.end_job(job, 0, "done");
   return receipt.study_id;
