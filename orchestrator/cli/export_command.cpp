@@ -82,13 +82,24 @@ int run_export(const ExportOptions& options) {
 
 std::vector<std::filesystem::path> write_default_tables(Store& store, std::int64_t study_id,
                                                         const std::filesystem::path& directory) {
+  const auto study = store.study(study_id);
+  if (!study) throw ExportError(404, "study", "no study " + std::to_string(study_id));
+  const std::map<TableKind, std::vector<TableFormat>> formats{
+      {TableKind::grid, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}},
+      {TableKind::sections, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5}},
+      {TableKind::fit, {TableFormat::csv, TableFormat::dat}}};
   std::vector<std::filesystem::path> written;
-  for (const auto kind : {TableKind::grid, TableKind::sections}) {
+  for (const auto& [kind, kind_formats] : formats) {
     ExportRequest request;
     request.kind = kind;
-    const auto table = study_lookup_table(store, study_id, request);
-    for (const auto format : {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}) {
-      if (kind == TableKind::sections && format == TableFormat::melcor) continue;
+    LookupTable table;
+    try {
+      table = export_lookup_table(store, *study, request);
+    } catch (const ExportError& error) {
+      if (kind == TableKind::fit) continue;  // a study without a fit in impact speed has no table (b)
+      throw;
+    }
+    for (const auto format : kind_formats) {
       request.format = format;
       const auto rendered = render_table(table, request, study_id);
       written.push_back(directory / rendered.file_name);

@@ -9,6 +9,7 @@
 
 #include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
 
 namespace aerobreak {
 namespace {

@@ -76,6 +76,17 @@ double study_speed_unit(const StudyExportData& data) {
   return data.inputs.front().scaling->speed_unit();
 }
 
+// A fit table of a study that does not sweep gamma/k_n has no such group axis: its one value, so
+// that a material can be checked against it.
+void add_constant_gamma(LookupTable& table, const StudyExportData& data) {
+  if (table.find("gamma_over_kn") || data.inputs.empty()) return;
+  const double gamma = data.inputs.front().gamma_over_kn;
+  for (const auto& inputs : data.inputs)
+    if (inputs.gamma_over_kn != gamma) return;
+  table.add("gamma_over_kn", "1", "adhesion-to-stiffness ratio gamma/k_n (the study's one value)", ColumnRole::input)
+      .values.assign(table.rows(), gamma);
+}
+
 }  // namespace
 
 LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
@@ -84,6 +95,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
                       : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
                                                             : fit_table(*fits, request, study_speed_unit(data));
+  add_constant_gamma(table, data);
   if (request.material)
     table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material), request.interpolate_gamma);
   else if (request.gamma_over_kn)

@@ -2,12 +2,15 @@
 #include <cstdint>
 
 #include "orchestrator/export/export_request.hpp"
-#include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/export/lookup_table.hpp"
 #include "orchestrator/export/study_export_data.hpp"
 #include "orchestrator/store/store.hpp"
 
 namespace aerobreak {
+
+// The fitted correlations of a study (orchestrator/fitting/correlation_set.hpp, which brings Eigen:
+// not included here, so that this header can follow cpp-httplib's, whose <resolv.h> defines _res).
+struct CorrelationSet;
 
 // Table (a): one row per grid point of the study, inputs and outcome statistics (reduced units).
 LookupTable grid_table(const StudyExportData& data);

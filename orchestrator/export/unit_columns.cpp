@@ -68,6 +68,7 @@ LookupTable interpolated_rows(const LookupTable& table, double target, const std
 
 LookupTable rows_for_gamma(const LookupTable& table, const Material& material, double target, bool interpolate) {
   const auto* gamma_column = table.find("gamma_over_kn");
+  if (!gamma_column) throw ExportError(422, "surface_energy", "this table has no gamma/k_n to check a material against");
   std::set<double> distinct(gamma_column->values.begin(), gamma_column->values.end());
   const std::vector<double> gammas(distinct.begin(), distinct.end());
   char range[160];

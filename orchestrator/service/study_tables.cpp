@@ -1,5 +1,6 @@
 #include "orchestrator/service/study_tables.hpp"
 
+#include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/service/correlation_cache.hpp"
 
 namespace aerobreak {

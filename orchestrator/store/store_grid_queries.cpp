@@ -139,10 +139,6 @@ std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, con
   return points;
 }
 
-}  // namespace aerobreak
-
-namespace aerobreak {
-
 std::vector<GridPointCase> Store::grid_point_cases(std::int64_t study_id) {
   auto db = read();
   // SQLite takes the bare columns of a min() aggregate from the row that holds the minimum.

@@ -137,7 +137,7 @@ TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by h
   CHECK(table.metadata.at("units") == "reduced and SI");
 }
 
-TEST_CASE("A material outside the study's gamma/k_n range is refused; between two values only when interpolated", "[export]") {
+TEST_CASE("A material outside the study's gamma/k_n range is refused, and one between two values is taken only when interpolated", "[export]") {
   ExportFixture fixture;
   ExportRequest request;
   for (const double outside : {0.02, 0.0005}) {
