@@ -81,7 +81,10 @@ function controls(state, grid, onChange) {
 
 // The parts other services add (correlations, lookup tables), asked for once the page is drawn:
 // fitting a large study the first time takes seconds, and the page does not wait for it.
-function loadOptionalParts(id, { plots, tablesHolder, redraw, stopped }) {
+// A study without results has nothing to fit or tabulate (the services answer 404 or 409): neither
+// is asked then.
+function loadOptionalParts(id, { hasResults, plots, tablesHolder, redraw, stopped }) {
+  if (!hasResults) return;
   loadCorrelationSummary(id).then((summary) => {
     if (!summary || stopped()) return;
     plots.setCorrelations(new Correlations(id, summary));
@@ -127,7 +130,7 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
-  loadOptionalParts(id, { plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
+  loadOptionalParts(id, { hasResults: study.progress.counts.done > 0, plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
