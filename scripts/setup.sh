@@ -17,6 +17,8 @@ packages=(
   json-schema-test-suite
   libcli11-dev
   libeigen3-dev
+  libboost-dev
+  gfortran
   chromium
 )
 # Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a

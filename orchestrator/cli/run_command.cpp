@@ -10,9 +10,12 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
+#include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
 
@@ -99,6 +102,34 @@ void print_failures(Store& store, std::int64_t study_id) {
               << record.error.value_or("(no error text)") << "\n";
 }
 
+// The study's lookup tables for system codes (docs/EXPORT.md), next to the store.
+void print_tables(Store& store, std::int64_t study_id) {
+  auto directory = store.file();
+  directory.replace_extension(".tables");
+  try {
+    const auto files = write_default_tables(store, study_id, directory);
+    std::cout << "\nLookup tables for system codes (docs/EXPORT.md) in " << directory.string() << "/:\n";
+    for (const auto& file : files) std::cout << "  " << file.filename().string() << "\n";
+  } catch (const std::exception& error) {
+    std::cout << "\nNo lookup tables: " << error.what() << "\n";
+  }
+}
+
+// The critical speeds of the study's fits (computed and stored now, so that the service serves them
+// from the store afterwards).
+void print_critical_speeds(Store& store, std::int64_t study_id) {
+  const auto study = store.study(study_id);
+  try {
+    CorrelationCache cache(store);
+    const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
+    std::cout << "\nCritical speeds: logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
+                 "intervals (docs/CORRELATIONS.md)\n\n"
+              << format_critical_table(nlohmann::ordered_json::parse(set.summary));
+  } catch (const CorrelationRequestError& error) {
+    std::cout << "\nNo critical speeds: " << error.what() << "\n";
+  }
+}
+
 int run(RunOptions options) {
   ShutdownSignals signals;
   Study study;
@@ -154,7 +185,9 @@ int run(RunOptions options) {
 
   std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n"
             << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
+  print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
+  print_tables(store, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();

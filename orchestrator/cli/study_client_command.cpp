@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 
 namespace aerobreak {
@@ -20,6 +21,9 @@ struct ClientOptions {
   std::string study_file;
   long long study_id = 0;
   std::string outcome;
+  std::string fit;
+  std::string covariates;
+  bool default_covariates = true;
   std::size_t limit = 100;
   std::size_t offset = 0;
   bool json = false;
@@ -95,6 +99,26 @@ void print_progress(const nlohmann::ordered_json& progress) {
   std::cout << (progress.at("complete").get<bool>() ? " (complete)" : "") << "\n";
 }
 
+// The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
+// with --fit NAME.
+void print_correlations(ApiClient& api, const ClientOptions& options) {
+  std::string path = study_path(options.study_id, "/correlations");
+  if (!options.fit.empty()) path += "/" + httplib::detail::encode_query_param(options.fit);
+  if (!options.default_covariates) path += "?covariates=" + httplib::detail::encode_query_param(options.covariates);
+  const auto answer = api.get(path);
+  if (options.json || !options.fit.empty()) {
+    std::cout << answer.dump(2) << "\n";
+    return;
+  }
+  const auto& provenance = answer.at("provenance");
+  std::cout << "Correlations of study " << provenance.at("study") << " (result set " << provenance.at("result_set_hash").get<std::string>().substr(0, 12)
+            << ", aerobreak " << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
+            << "Critical speeds (95 % profile-likelihood intervals):\n" << format_critical_table(answer) << "\n"
+            << "Critical energies per contact E_kin/(N_c E_break):\n" << format_critical_table(answer, "energy_per_contact")
+            << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME") << " for one in full):\n"
+            << format_fit_list(answer);
+}
+
 int run_client(const std::string& action, const ClientOptions& options) {
   ApiClient api(options);
   if (action == "submit") {
@@ -126,6 +150,8 @@ int run_client(const std::string& action, const ClientOptions& options) {
     } else {
       std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")));
     }
+  } else if (action == "correlations") {
+    print_correlations(api, options);
   } else if (action == "cancel") {
     print_progress(api.post(study_path(options.study_id, "/cancel"), ""));
   }
@@ -181,6 +207,12 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
       ->check(CLI::IsMember({"stick", "bounce", "break-up", "undetermined"}));
   results->add_option("--limit", options->limit, "With --json: results per page")->capture_default_str();
   results->add_option("--offset", options->offset, "With --json: results to skip")->capture_default_str();
+  auto* correlations = add("correlations", "A study's fitted correlations: critical speeds and energies, and every fit");
+  correlations->add_option("id", options->study_id, "Study id")->required();
+  correlations->add_option("--fit", options->fit, "One fit in full, as JSON (a name from the list)");
+  correlations->add_option("--covariates", options->covariates, "Covariates of the pooled models, e.g. gamma_over_kn,N "
+                           "(default: every one of gamma_over_kn, N, Df, angle the study sweeps)")
+      ->each([options](const std::string&) { options->default_covariates = false; });
   add("cancel", "Cancel a study: its queued cases will not run")->add_option("id", options->study_id, "Study id")->required();
 }
 

@@ -1,6 +1,6 @@
 #include "orchestrator/service/api_json.hpp"
 
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/proportion.hpp"
 
 namespace aerobreak {
 namespace {

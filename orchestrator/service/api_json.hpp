@@ -20,7 +20,7 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt);
 // the probability among the finished cases with the 95 % Wilson interval (outcome_statistics.hpp).
 nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell);
 // Per grid point: counts of each outcome and its probability among the finished cases with the
-// 95 % Wilson interval (outcome_statistics.hpp).
+// 95 % Wilson interval (orchestrator/fitting/proportion.hpp).
 nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells);
 
 template <typename Record>

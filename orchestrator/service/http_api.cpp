@@ -9,6 +9,7 @@
 #include "engine/core/version.hpp"
 #include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/correlation_endpoints.hpp"
 #include "orchestrator/service/dashboard_endpoints.hpp"
 #include "orchestrator/service/error_answers.hpp"
 #include "orchestrator/service/http_support.hpp"
@@ -17,6 +18,7 @@
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
 #include "orchestrator/service/summary_endpoints.hpp"
+#include "orchestrator/service/table_endpoints.hpp"
 #include "orchestrator/service/web_endpoints.hpp"
 
 namespace aerobreak {
@@ -132,6 +134,8 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
                send_json(response, 200, page_json(store.results(study.id, outcome, page), page));
              }));
   register_summary_endpoints(server, store);
+  register_correlation_endpoints(server, store);
+  register_table_endpoints(server, store);
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {
                 const auto study = existing_study(store, path_id(request));

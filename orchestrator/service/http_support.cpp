@@ -54,4 +54,20 @@ StudyRecord existing_study(Store& store, std::int64_t id) {
   return *study;
 }
 
+bool names_current_tag(const httplib::Request& request, const std::string& etag) {
+  const std::string header = request.get_header_value("If-None-Match");
+  std::size_t start = 0;
+  while (start < header.size()) {
+    std::size_t end = header.find(',', start);
+    if (end == std::string::npos) end = header.size();
+    std::string tag = header.substr(start, end - start);
+    tag.erase(0, tag.find_first_not_of(" \t"));
+    tag.erase(tag.find_last_not_of(" \t") + 1);
+    if (tag.rfind("W/", 0) == 0) tag.erase(0, 2);
+    if (tag == "*" || tag == etag) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 }  // namespace aerobreak

@@ -2,19 +2,11 @@
 #include <cstddef>
 #include <optional>
 
+// The Wilson interval of the outcome probabilities: orchestrator/fitting/proportion.hpp, the
+// statistics library of the correlations.
+#include "orchestrator/fitting/proportion.hpp"
+
 namespace aerobreak {
-
-// A binomial proportion with its Wilson score interval (E. B. Wilson, J. Am. Stat. Assoc. 22
-// (1927) 209): unlike the normal approximation it stays inside [0, 1] and is usable for the few
-// replicates per grid point that impact sweeps afford, and for k = 0 or k = n.
-struct ProportionEstimate {
-  double probability = 0.0;  // k / n
-  double lower = 0.0;
-  double upper = 0.0;
-};
-
-// z = 1.959964 gives the 95 % interval. nullopt when n = 0 (no information).
-std::optional<ProportionEstimate> wilson_interval(std::size_t successes, std::size_t trials, double z = 1.959963984540054);
 
 // The 0.975 quantile of Student's t distribution with `degrees_of_freedom` (>= 1): exact for 1 and
 // 2, the Cornish-Fisher expansion of Abramowitz & Stegun 26.7.5 (four terms) from 3 on, within

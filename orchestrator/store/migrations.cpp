@@ -161,12 +161,53 @@ ALTER TABLE results ADD COLUMN data_file_size INTEGER;
 ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
 )sql";
 
+// Correlations (docs/CORRELATIONS.md). correlation_sets holds one set of fits per study and request
+// (the pooled models' covariates): its summary and, in correlation_fits, each fit's document;
+// result_set_hash identifies the results it was fitted to, result_set_version the study's
+// result-set version (study_summaries, migration 3) at which that hash was last found current.
+constexpr std::string_view kVersion5 = R"sql(
+CREATE TABLE correlation_sets (
+  id                 INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies (id),
+  request            TEXT NOT NULL,
+  result_set_version INTEGER NOT NULL,
+  result_set_hash    TEXT NOT NULL,
+  aerobreak_version  TEXT NOT NULL,
+  computed_at        REAL NOT NULL,
+  fit_seconds        REAL NOT NULL,
+  summary            TEXT NOT NULL,
+  UNIQUE (study_id, request)
+);
+
+CREATE TABLE correlation_fits (
+  set_id   INTEGER NOT NULL REFERENCES correlation_sets (id) ON DELETE CASCADE,
+  name     TEXT NOT NULL,
+  kind     TEXT NOT NULL,
+  status   TEXT NOT NULL,
+  document TEXT NOT NULL,
+  PRIMARY KEY (set_id, name)
+) WITHOUT ROWID;
+)sql";
+
+// Indexes for the dashboard's per-grid-point reads (docs/PERFORMANCE.md, "Dashboard"): a study's
+// cases by grid point (with study_cases' key, case_id), so that one grid point's cases are a range
+// and the cases come grouped by grid point; and the results' summed columns beside their case id,
+// so that aggregating them reads this index instead of the table, whose rows hold the result
+// document (14 kB on average in real stores) with the outcome columns of version 2 after it.
+constexpr std::string_view kVersion6 = R"sql(
+CREATE INDEX study_cases_by_grid_key ON study_cases (study_id, grid_key);
+CREATE INDEX results_statistics ON results (case_id, outcome, retained_mass_fraction, restitution, fragment_count,
+  largest_fragment_share, damage_ratio, energy_per_contact, fractured_on_wall, small_strain_exceeded);
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
     Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
     Migration{4, "size and SHA-256 of each result's data file", kVersion4},
+    Migration{5, "stored correlation sets and fits", kVersion5},
+    Migration{6, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion6},
 };
 
 int user_version(SqliteDatabase& db) {

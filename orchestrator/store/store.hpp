@@ -73,6 +73,16 @@ class Store {
   // Jobs without an end (their orchestrator died): ended now, with a note.
   std::size_t close_orphaned_jobs();
 
+  // Stores a study's set of fits for one request (its key: the request as canonical text),
+  // replacing the one before, in one short transaction. The fitting itself happens before, outside
+  // the write lock.
+  void save_correlations(std::int64_t study_id, const std::string& request_key, const StoredCorrelations& set,
+                         const std::vector<StoredFit>& fits);
+  // A set whose result-set hash is still the study's: marks it current at `version` without
+  // refitting. False when there is no such set.
+  bool confirm_correlations(std::int64_t study_id, const std::string& request_key, const std::string& result_set_hash,
+                            std::int64_t version);
+
   // Cancels an active study: its queued cases that no other active study wants become cancelled.
   // Running cases finish (their results are kept). False when there is no such active study.
   bool cancel_study(std::int64_t study_id);
@@ -107,10 +117,22 @@ class Store {
   // Fragments of the results at the given grid points, counted per grid point and size (grid
   // points without a result are left out).
   std::vector<GridPointFragments> fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys);
+  // Per grid point, in submission order: the document of its first case.
+  std::vector<GridPointCase> grid_point_cases(std::int64_t study_id);
+  // Per grid point with a determined result, in submission order: the mass and count of the
+  // fragments its determined results left, by wall contact and size (store_grid_queries.cpp).
+  std::vector<GridPointFragmentMasses> fragment_masses(std::int64_t study_id);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
   std::vector<JobRecord> jobs(std::size_t limit);
   // The data files, with their recorded size and checksum, of the done cases among `hashes`.
   std::vector<StoredDataFile> data_files(const std::vector<std::string>& hashes);
+
+  // Everything the statistics need about a study's results, read in one read transaction (the rows
+  // and the version agree). The one place that maps store columns to CaseOutcome fields.
+  StudyOutcomes study_outcomes(std::int64_t study_id);
+  std::optional<StoredCorrelations> stored_correlations(std::int64_t study_id, const std::string& request_key);
+  std::optional<std::string> stored_fit(std::int64_t set_id, const std::string& name);
+  std::vector<std::string> stored_fit_names(std::int64_t set_id);
 
  private:
   class ReadConnection;

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "orchestrator/fitting/case_outcome.hpp"
+
 namespace aerobreak {
 
 // A case's life: queued -> running -> done | failed, back to queued when an attempt is lost or
@@ -117,6 +119,9 @@ struct CaseRecord {
   std::optional<double> restitution;
   std::optional<double> retained_mass_fraction;
   std::optional<std::int64_t> fragment_count;
+  std::optional<double> damage_ratio;
+  std::optional<bool> fractured_on_wall;
+  std::optional<bool> small_strain_exceeded;
 };
 
 // Which of a study's cases to list: each condition that is set must hold.
@@ -229,6 +234,30 @@ struct GridPointFragments {
   std::vector<std::pair<std::int64_t, std::size_t>> sizes;  // (primaries, fragments), by size
 };
 
+// The fragments that the determined results (stick, bounce, break-up) of one grid point left, in
+// classes of (on the wall or not, size): what the lookup tables' fragment moments and sectional
+// matrices are computed from (docs/EXPORT.md).
+struct FragmentClass {
+  bool on_wall = false;
+  std::int64_t primaries = 0;
+  std::size_t fragments = 0;  // fragments of this class, over all the grid point's results
+  double mass = 0.0;          // their mass in all
+};
+struct GridPointFragmentMasses {
+  std::string grid_key;
+  std::size_t results = 0;    // determined results
+  std::size_t break_ups = 0;
+  std::vector<FragmentClass> classes;  // by on_wall, then size
+};
+
+// One grid point of a study with the document of its first case (every replicate shares the
+// physics but for the seeds).
+struct GridPointCase {
+  std::string grid_key;
+  nlohmann::ordered_json grid_point;
+  nlohmann::ordered_json document;
+};
+
 struct JobRecord {
   std::int64_t id = 0;
   std::string command;
@@ -238,6 +267,33 @@ struct JobRecord {
   std::optional<double> ended_at;
   std::optional<std::int64_t> exit_status;
   std::optional<std::string> note;
+};
+
+// A study's finished cases as the statistics read them (Store::study_outcomes), with the version
+// of its result set they were read at and the identity of every result (case hash, attempt, commit
+// time, and every number the statistics read of it), from which the result-set hash is computed.
+struct StudyOutcomes {
+  CaseOutcomeTable table;
+  std::int64_t result_set_version = 0;
+  std::string identity;
+};
+
+// A stored set of fits (correlation_sets): its summary document and what it was fitted to.
+struct StoredCorrelations {
+  std::int64_t set_id = 0;
+  std::int64_t result_set_version = 0;
+  std::string result_set_hash;
+  std::string aerobreak_version;
+  double computed_at = 0.0;
+  double fit_seconds = 0.0;
+  std::string summary;  // JSON text
+};
+
+struct StoredFit {
+  std::string name;
+  std::string kind;
+  std::string status;
+  std::string document;  // JSON text
 };
 
 template <typename Record>

@@ -1,0 +1,168 @@
+#include "orchestrator/service/correlation_cache.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "engine/core/version.hpp"
+#include "orchestrator/fitting/correlation_json.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
+#include "orchestrator/study/sha256.hpp"
+#include "orchestrator/study/study_axes.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr const char* kSpeedPointer = "/impact/speed";
+constexpr const char* kPrimariesPointer = "/cluster/generator/primaries";
+
+struct KnownCovariate {
+  const char* name;
+  const char* alias;
+  const char* pointer;
+  bool logarithmic;
+};
+constexpr KnownCovariate kKnownCovariates[] = {
+    {"gamma_over_kn", "gamma_over_kn", "/material/gamma_over_kn", true},
+    {"primaries", "N", kPrimariesPointer, true},
+    {"fractal_dimension", "Df", "/cluster/generator/fractal_dimension", false},
+    {"angle", "angle", "/impact/angle", false},
+};
+
+std::vector<std::string> study_axes(const StudyRecord& study) {
+  std::vector<std::string> axes;
+  if (study.document.contains("axes") && study.document["axes"].is_object())
+    for (const auto& [name, spec] : study.document["axes"].items()) axes.push_back(name);
+  return axes;
+}
+
+std::string axis_setting(const std::vector<std::string>& axes, const std::string& pointer) {
+  for (const auto& axis : axes)
+    if (axis_pointer(axis) == pointer) return axis;
+  return {};
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// Axes that take more than one value in the study document (a list of two or more, or a range).
+bool sweeps_several(const StudyRecord& study, const std::string& axis) {
+  const auto& spec = study.document["axes"][axis];
+  if (spec.contains("values")) return spec["values"].size() > 1;
+  for (const char* range : {"linear", "log"})
+    if (spec.contains(range)) return spec[range].value("count", 1) > 1;
+  return false;
+}
+
+Covariate resolve(const StudyRecord& study, const std::vector<std::string>& axes, const std::string& name) {
+  for (const auto& known : kKnownCovariates)
+    if (name == known.name || name == known.alias) {
+      const std::string axis = axis_setting(axes, known.pointer);
+      if (axis.empty())
+        throw CorrelationRequestError("covariate '" + name + "' is not an axis of study " + std::to_string(study.id) +
+                                          " (its axes: " + joined(axes) + ")", false);
+      return {axis, known.logarithmic};
+    }
+  if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == kSpeedPointer)
+    throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " + std::to_string(study.id) +
+                                      " (its axes: " + joined(axes) + "; known covariates: gamma_over_kn, N, Df, angle)",
+                                  false);
+  return {name, false};
+}
+
+}  // namespace
+
+CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates) {
+  const auto axes = study_axes(study);
+  CorrelationRequest request;
+  request.speed_axis = axis_setting(axes, kSpeedPointer);
+  if (covariates) {
+    std::set<std::string> seen;
+    for (const auto& name : *covariates) {
+      const Covariate covariate = resolve(study, axes, name);
+      if (seen.insert(covariate.axis).second) request.covariates.push_back(covariate);
+    }
+    return request;
+  }
+  for (const auto& known : kKnownCovariates) {
+    const std::string axis = axis_setting(axes, known.pointer);
+    if (!axis.empty() && sweeps_several(study, axis)) request.covariates.push_back({axis, known.logarithmic});
+  }
+  return request;
+}
+
+std::string request_key(const CorrelationRequest& request) {
+  nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
+  for (const auto& covariate : request.covariates) covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});
+  return nlohmann::ordered_json{{"covariates", covariates}}.dump();
+}
+
+CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {
+  StudyOutcomes outcomes = store.study_outcomes(study.id);
+  if (outcomes.table.cases.empty())
+    throw CorrelationRequestError("study " + std::to_string(study.id) + " has no results yet: nothing to fit", true);
+  if (version) *version = outcomes.result_set_version;
+  if (result_set_hash) *result_set_hash = sha256_hex(outcomes.identity);
+  const std::string primaries_axis = axis_setting(study_axes(study), kPrimariesPointer);
+  const nlohmann::ordered_json base_primaries =
+      study.document.value(nlohmann::ordered_json::json_pointer("/base" + std::string(kPrimariesPointer)), nlohmann::ordered_json());
+  for (CaseOutcome& c : outcomes.table.cases) {
+    const auto& point = outcomes.table.grid_points[c.grid_point];
+    const auto& n = primaries_axis.empty() ? base_primaries : point.value(primaries_axis, nlohmann::ordered_json());
+    c.primaries = n.is_number() ? n.get<std::int64_t>() : 0;
+  }
+  return std::move(outcomes.table);
+}
+
+CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request) {
+  Provenance provenance{study.id, {}, 0, std::string(version())};
+  const CaseOutcomeTable table = study_outcome_table(store, study, &provenance.result_set_version, &provenance.result_set_hash);
+  return compute_correlations(table, request, provenance);
+}
+
+std::shared_ptr<std::mutex> CorrelationCache::study_lock(std::int64_t study_id) {
+  std::lock_guard lock(locks_mutex_);
+  auto& entry = study_locks_[study_id];
+  if (!entry) entry = std::make_shared<std::mutex>();
+  return entry;
+}
+
+std::int64_t CorrelationCache::result_set_version(std::int64_t study_id) {
+  const auto versions = store_.study_versions(study_id);
+  return versions ? versions->result_set : 0;
+}
+
+StoredCorrelations CorrelationCache::current(const StudyRecord& study, const CorrelationRequest& request) {
+  const std::string key = request_key(request);
+  auto stored = store_.stored_correlations(study.id, key);
+  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
+  const auto lock = study_lock(study.id);
+  std::lock_guard guard(*lock);
+  // Another request may have refitted while this one waited.
+  stored = store_.stored_correlations(study.id, key);
+  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
+  return refit(study, request, key, stored);
+}
+
+StoredCorrelations CorrelationCache::refit(const StudyRecord& study, const CorrelationRequest& request,
+                                           const std::string& key, const std::optional<StoredCorrelations>& stored) {
+  Provenance provenance{study.id, {}, 0, std::string(version())};
+  const CaseOutcomeTable table = study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
+  if (stored && stored->result_set_hash == provenance.result_set_hash &&
+      store_.confirm_correlations(study.id, key, provenance.result_set_hash, provenance.result_set_version))
+    return *store_.stored_correlations(study.id, key);
+  const CorrelationSet set = compute_correlations(table, request, provenance);
+  StoredCorrelations saved{0, provenance.result_set_version, provenance.result_set_hash, provenance.aerobreak_version,
+                           unix_seconds(), set.seconds, correlation_summary_json(set).dump()};
+  std::vector<StoredFit> fits;
+  for (const auto& name : fit_names(set)) {
+    const auto document = *fit_json(set, name);
+    fits.push_back({name, document.at("kind"), document.at("status"), document.dump()});
+  }
+  store_.save_correlations(study.id, key, saved, fits);
+  return *store_.stored_correlations(study.id, key);
+}
+
+}  // namespace aerobreak

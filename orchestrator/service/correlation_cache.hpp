@@ -1,0 +1,64 @@
+#pragma once
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "orchestrator/fitting/case_outcome.hpp"
+#include "orchestrator/fitting/correlation_request.hpp"
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak {
+
+struct CorrelationSet;
+
+// A correlation request that does not fit the study (a covariate it does not sweep, a study without
+// results): the message names the problem; `no_results` tells the two apart.
+struct CorrelationRequestError : std::runtime_error {
+  CorrelationRequestError(const std::string& message, bool no_results_)
+      : std::runtime_error(message), no_results(no_results_) {}
+  bool no_results;
+};
+
+// The request of a study's correlations: its speed axis and the pooled models' covariates, given by
+// name (gamma_over_kn, N or primaries, Df or fractal_dimension, angle, or any axis name of the
+// study); none given: every one of those four that the study sweeps over more than one value.
+// gamma/k_n and N enter as logarithms, the others as they are.
+CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates);
+
+// The canonical text of a request: the key its fits are stored under.
+std::string request_key(const CorrelationRequest& request);
+
+// A study's outcomes with each case's N filled in (from the primaries axis or the study's base).
+CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
+                                 std::string* result_set_hash = nullptr);
+
+// A study's fits as the table model (not cached): for consumers in C++ such as the lookup-table
+// export. Throws CorrelationRequestError for a study without results.
+CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request);
+
+// The fits of a study, stored and served from the store while its result set is unchanged: a
+// request checks one row (the study's result-set version, Store::study_versions); a changed result set is read, its hash
+// compared with the stored set's, and refitted only when it differs. Fitting runs outside the
+// store's write lock, one study at a time; the new set is stored in one short transaction.
+class CorrelationCache {
+ public:
+  explicit CorrelationCache(Store& store) : store_(store) {}
+  StoredCorrelations current(const StudyRecord& study, const CorrelationRequest& request);
+
+ private:
+  std::shared_ptr<std::mutex> study_lock(std::int64_t study_id);
+  // The study's result-set version (Store::study_versions; 0 before its first result).
+  std::int64_t result_set_version(std::int64_t study_id);
+  StoredCorrelations refit(const StudyRecord& study, const CorrelationRequest& request, const std::string& key,
+                           const std::optional<StoredCorrelations>& stored);
+
+  Store& store_;
+  std::mutex locks_mutex_;
+  std::map<std::int64_t, std::shared_ptr<std::mutex>> study_locks_;
+};
+
+}  // namespace aerobreak

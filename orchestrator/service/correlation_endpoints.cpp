@@ -1,0 +1,105 @@
+#include "orchestrator/service/correlation_endpoints.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/service/http_support.hpp"
+#include "orchestrator/study/sha256.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr std::size_t kMaxCovariateText = 256;
+constexpr std::size_t kMaxCovariates = 8;
+
+// ?covariates=a,b (empty: none); absent: the study's default.
+std::optional<std::vector<std::string>> covariates_parameter(const httplib::Request& request) {
+  if (!request.has_param("covariates")) return std::nullopt;
+  const std::string text = request.get_param_value("covariates");
+  if (text.size() > kMaxCovariateText)
+    throw RequestError{400, "query parameter 'covariates' is longer than " + std::to_string(kMaxCovariateText) + " characters"};
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size() && !text.empty()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    if (comma == start) throw RequestError{400, "query parameter 'covariates' has an empty name (use a,b,c)"};
+    names.push_back(text.substr(start, comma - start));
+    if (names.size() > kMaxCovariates)
+      throw RequestError{400, "query parameter 'covariates' names more than " + std::to_string(kMaxCovariates) + " covariates"};
+    start = comma + 1;
+  }
+  return names;
+}
+
+struct CurrentSet {
+  StoredCorrelations set;
+  std::string request_key;
+};
+
+CurrentSet current(Store& store, CorrelationCache& cache, const httplib::Request& request) {
+  const auto study = existing_study(store, path_id(request));
+  try {
+    const CorrelationRequest asked = correlation_request(study, covariates_parameter(request));
+    return {cache.current(study, asked), request_key(asked)};
+  } catch (const CorrelationRequestError& error) {
+    // A study without results has no correlations yet: 404, as the dashboard expects of a part it
+    // cannot show (docs/WEB.md); the message says why.
+    throw RequestError{error.no_results ? 404 : 400, error.what()};
+  }
+}
+
+// The tag of one document of a stored set: it changes whenever the set is fitted again (a new
+// result set, another aerobreak), and only then.
+std::string document_tag(const StoredCorrelations& set, const std::string& request_key, const std::string& name) {
+  char computed_at[32];
+  std::snprintf(computed_at, sizeof computed_at, "%.17g", set.computed_at);
+  const std::string identity = request_key + "\n" + set.result_set_hash + "\n" + computed_at + "\n" + name;
+  std::string tag(1, '"');
+  tag.append(sha256_hex(identity), 0, 32);
+  tag.push_back('"');
+  return tag;
+}
+
+// The document with its ETag, or 304 when the request's If-None-Match names it.
+void send_document(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+                   const std::string& document) {
+  response.set_header("ETag", etag);
+  response.set_header("Cache-Control", "no-cache");
+  if (names_current_tag(request, etag)) {
+    response.status = 304;
+    return;
+  }
+  response.status = 200;
+  response.set_content(document, "application/json");
+}
+
+std::string fit_list(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size() && i < 20; ++i) text += (i ? ", " : "") + names[i];
+  return names.size() > 20 ? text + ", ..." : text;
+}
+
+}  // namespace
+
+void register_correlation_endpoints(httplib::Server& server, Store& store) {
+  const auto cache = std::make_shared<CorrelationCache>(store);
+  server.Get(R"(/api/studies/(\d+)/correlations)",
+             guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
+               const auto [set, key] = current(store, *cache, request);
+               send_document(request, response, document_tag(set, key, ""), set.summary);
+             }));
+  server.Get(R"(/api/studies/(\d+)/correlations/([^/]{1,200}))",
+             guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
+               const auto [set, key] = current(store, *cache, request);
+               const std::string name = request.matches[2];
+               const auto document = store.stored_fit(set.set_id, name);
+               if (!document)
+                 throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
+                                             " (fits: " + fit_list(store.stored_fit_names(set.set_id)) + ")"};
+               send_document(request, response, document_tag(set, key, name), *document);
+             }));
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,99 @@
+// The correlations' storage over a real SQLite file: the reader, the study's result-set version
+// (Store::study_versions), and the cache that refits only when the result set changed.
+#include <catch2/catch.hpp>
+
+#include "orchestrator/service/correlation_cache.hpp"
+#include "tests/store/correlation_study.hpp"
+#include "tests/store/store_support.hpp"
+
+namespace aerobreak::testing {
+
+TEST_CASE("The store reads a study's outcomes with fragments, and counts changes of its result set", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_reader");
+  Store store(file.path());
+  const auto id = finished_correlation_study(store, "reader", 3, 1);
+  const StudyOutcomes outcomes = store.study_outcomes(id);
+  CHECK(outcomes.table.cases.size() == 48);
+  CHECK(outcomes.table.grid_points.size() == 16);
+  CHECK(outcomes.table.axes == std::vector<std::string>{"impact_speed", "primaries"});
+  CHECK(outcomes.result_set_version == 48);  // one per committed result
+  CHECK(store.study_versions(id)->result_set == 48);
+  std::size_t break_ups = 0;
+  for (const CaseOutcome& c : outcomes.table.cases) {
+    REQUIRE(c.retained_mass_fraction);
+    if (c.outcome == Outcome::break_up) {
+      ++break_ups;
+      CHECK(c.reentrained_sizes == std::vector<std::int64_t>{1, 3, 1, 3});
+    }
+    if (c.outcome == Outcome::stick) CHECK(c.reentrained_sizes.empty());
+  }
+  CHECK(break_ups > 0);
+  // A second study naming the same cases gets its own count when it is linked to them.
+  auto again = correlation_study_submission("reader", 3);
+  again.hash = "reader-again";
+  const auto second = store.submit_study(again).study_id;
+  CHECK(store.study_versions(second)->result_set == 48);  // one per case linked with its result
+  CHECK(store.study_versions(id)->result_set == 48);
+}
+
+TEST_CASE("Fits are stored, served while the result set is unchanged, refitted when it changes", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_cache");
+  Store store(file.path());
+  const auto id = finished_correlation_study(store, "cache", 4, 2);
+  const StudyRecord study = *store.study(id);
+  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  REQUIRE(request.covariates.size() == 1);
+  CHECK(request.covariates[0].axis == "primaries");
+  CorrelationCache cache(store);
+
+  const StoredCorrelations first = cache.current(study, request);
+  CHECK(first.result_set_version == 64);
+  CHECK(first.result_set_hash.size() == 64);
+  const auto summary = nlohmann::json::parse(first.summary);
+  CHECK(summary.at("provenance").at("result_set_hash") == first.result_set_hash);
+  REQUIRE(store.stored_fit(first.set_id, "break-up.speed.g1"));
+  CHECK_FALSE(store.stored_fit(first.set_id, "no-such-fit"));
+
+  SECTION("unchanged: the same stored set") {
+    const StoredCorrelations again = cache.current(study, request);
+    CHECK(again.set_id == first.set_id);
+    CHECK(again.computed_at == first.computed_at);
+  }
+  SECTION("a version bump with the same results: confirmed, not refitted") {
+    SqliteDatabase db(file.path());
+    db.execute("UPDATE results SET outcome = outcome WHERE case_id = 1");
+    const StoredCorrelations again = cache.current(study, request);
+    CHECK(again.result_set_version == 65);
+    CHECK(again.computed_at == first.computed_at);
+    CHECK(again.result_set_hash == first.result_set_hash);
+  }
+  SECTION("a changed result: refitted, with a new hash") {
+    SqliteDatabase db(file.path());
+    db.execute("UPDATE results SET outcome = 'undetermined' WHERE case_id = 1");
+    const StoredCorrelations again = cache.current(study, request);
+    CHECK(again.result_set_version == 65);
+    CHECK(again.result_set_hash != first.result_set_hash);
+    CHECK(again.computed_at > first.computed_at);
+  }
+}
+
+TEST_CASE("Correlation requests that do not fit the study are refused with the reason", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_requests");
+  Store store(file.path());
+  const auto id = store.submit_study(correlation_study_submission("empty", 1)).study_id;
+  const StudyRecord study = *store.study(id);
+  CHECK_THROWS_WITH(correlation_request(study, std::vector<std::string>{"angle"}),
+                    Catch::Contains("covariate 'angle' is not an axis of study") && Catch::Contains("impact_speed"));
+  CHECK(correlation_request(study, std::vector<std::string>{"N"}).covariates.at(0).axis == "primaries");
+  CHECK(correlation_request(study, std::vector<std::string>{}).covariates.empty());
+  CorrelationCache cache(store);
+  try {
+    cache.current(study, correlation_request(study, std::nullopt));
+    FAIL("a study without results was fitted");
+  } catch (const CorrelationRequestError& error) {
+    CHECK(error.no_results);
+    CHECK(std::string(error.what()).find("has no results") != std::string::npos);
+  }
+}
+
+}  // namespace aerobreak::testing
