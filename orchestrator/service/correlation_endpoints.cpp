@@ -50,8 +50,8 @@ CurrentSet current(Store& store, CorrelationCache& cache, const httplib::Request
   }
 }
 
-// The tag of one document of a stored set: it changes whenever the set is fitted again (a new
-// result set, another aerobreak), and only then.
+// The tag of one document of a stored set: it changes whenever the set is fitted again (its result
+// set changed), and only then.
 std::string document_tag(const StoredCorrelations& set, const std::string& request_key, const std::string& name) {
   char computed_at[32];
   std::snprintf(computed_at, sizeof computed_at, "%.17g", set.computed_at);
