@@ -11,7 +11,9 @@ by maximum likelihood to the individual results (undetermined and failed ones le
 x = ln v (the impact speed, in the study's units) and once with x = ln(E_kin / (N_c E_break)), the
 energy per initial contact each result records (docs/MODEL.md 1.3), and prints v50 and E50 with 95 %
 profile-likelihood intervals: the x50 where 2 (ln L_max - ln L_profile(x50)) <= 3.841 (chi-square,
-one degree of freedom; Venzon & Moolgavkar 1988), the slope s maximised at each x50. With no
+one degree of freedom; Venzon & Moolgavkar 1988), the slope s maximised at each x50. Also prints
+Q*, the energy per contact at which the mean largest fragment falls below half the primaries
+(interpolated between speeds), the catastrophic-disruption measure. With no
 overlap between the two classes the slope is unbounded: the interval is then the gap between the
 two classes (printed as "separated"). A negative slope: the outcome gives way with speed (stick).
 
@@ -76,15 +78,29 @@ def fit(xs, ys):
 def load(store, study_id):
     db = sqlite3.connect(store)
     rows = db.execute(
-        "select sc.grid_point, r.outcome, r.energy_per_contact from study_cases sc "
+        "select sc.grid_point, r.outcome, r.energy_per_contact, r.largest_fragment_share from study_cases sc "
         "join results r on r.case_id = sc.case_id where sc.study_id = ? "
         "and r.outcome in ('stick', 'bounce', 'break-up')", (study_id,))
     groups = defaultdict(list)
-    for grid_point, outcome, energy in rows:
+    for grid_point, outcome, energy, largest in rows:
         point = json.loads(grid_point)
         speed = point.pop("impact_speed")
-        groups[json.dumps(point, sort_keys=True)].append((speed, energy, outcome))
+        groups[json.dumps(point, sort_keys=True)].append((speed, energy, outcome, largest))
     return groups
+
+
+def half_mass_energy(results):
+    """Q*: the energy per contact where the mean largest-fragment share (in primaries) of a speed
+    falls through 1/2, interpolated linearly in ln E between the two speeds around it."""
+    by_speed = defaultdict(list)
+    for speed, energy, _, largest in results:
+        by_speed[speed].append((energy, largest))
+    means = [(sum(e for e, _ in rows) / len(rows), sum(f for _, f in rows) / len(rows))
+             for _, rows in sorted(by_speed.items())]
+    for (e0, f0), (e1, f1) in zip(means, means[1:]):
+        if f0 >= 0.5 > f1:
+            return math.exp(math.log(e0) + (f0 - 0.5) / (f0 - f1) * (math.log(e1) - math.log(e0)))
+    return None
 
 
 def describe(label, result, transform):
@@ -102,11 +118,13 @@ def main():
     parser.add_argument("--outcome", default="break-up", choices=["break-up", "stick", "bounce"])
     args = parser.parse_args()
     for group, results in sorted(load(args.store, args.study).items()):
-        hits = [outcome == args.outcome for _, _, outcome in results]
-        by_speed = fit([math.log(v) for v, _, _ in results], hits)
-        by_energy = fit([math.log(e) for _, e, _ in results], hits)
+        hits = [outcome == args.outcome for _, _, outcome, _ in results]
+        by_speed = fit([math.log(v) for v, _, _, _ in results], hits)
+        by_energy = fit([math.log(e) for _, e, _, _ in results], hits)
+        q_star = half_mass_energy(results)
         print(f"{group} n={len(results)} P({args.outcome}): "
-              f"{describe('v50', by_speed, math.exp)}; {describe('E50/(N_c E_break)', by_energy, math.exp)}")
+              f"{describe('v50', by_speed, math.exp)}; {describe('E50/(N_c E_break)', by_energy, math.exp)}; "
+              f"largest fragment below half at E/(N_c E_break) = {'-' if q_star is None else f'{q_star:.3g}'}")
 
 
 if __name__ == "__main__":
