@@ -12,7 +12,7 @@ namespace aerobreak::validation {
 
 namespace {
 
-// One primary, undamped JKR without friction, a head-on impact.
+// One primary, undamped JKR without friction, a head-on impact at `speed` (m/s).
 nlohmann::ordered_json monomer_case(const MaterialSI& material, double diameter, double speed) {
   return {
       {"units", "physical"},
@@ -25,7 +25,7 @@ nlohmann::ordered_json monomer_case(const MaterialSI& material, double diameter,
         {"diameter", diameter}}},
       {"model", {{"normal", "jkr"}, {"separation", "displacement"}, {"damping", {{"law", "none"}}}, {"tangential", false}}},
       {"impact", {{"speed", speed}}},
-      {"run", {{"time_limit", 1.0}}}};
+      {"run", {{"time_limit", 1.0}}}};  // a placeholder: monomer_sticks sets the limit
 }
 
 }  // namespace
