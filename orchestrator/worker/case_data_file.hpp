@@ -11,7 +11,7 @@ namespace aerobreak {
 
 class Simulation;
 
-// The bulk arrays of one case (DESIGN.md: the store references HDF5 files for them), as an H5MD
+// The bulk arrays of one case (docs/ARCHITECTURE.md: the store references HDF5 files for them), as an H5MD
 // file (engine/io/h5md_writer.hpp) with two frames, the state when the impact starts and when it
 // ends (one frame if the run took no step), plus each primary's fragment at the end:
 //
