@@ -1,7 +1,9 @@
 #include "engine/impact/impact_case.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "engine/impact/schema_text.hpp"
@@ -208,6 +210,16 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);
   if (c.time_step > 0.0 && c.time_limit > 0.0 && c.time_step >= c.time_limit)
     violation("/run/time_step", "must be smaller than /run/time_limit");
+  // The cluster starts `gap` above the wall, so its first wall contact comes after gap / v_n
+  // (docs/IMPACT.md): a speed too small to reach the wall within time_limit (5e-324 d/tau, say,
+  // whose restitution would be noise over nothing) is no impact.
+  const double approach_time = c.gap / (c.speed * std::cos(c.angle_degrees * std::numbers::pi / 180.0));
+  if (c.time_limit > 0.0 && !(approach_time < c.time_limit)) {
+    std::ostringstream message;
+    message << "is too small: the cluster would reach the wall after " << approach_time
+            << " tau (gap / normal speed), beyond /run/time_limit (" << c.time_limit << " tau)";
+    violation("/impact/speed", message.str());
+  }
 
 }
 

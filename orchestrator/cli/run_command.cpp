@@ -113,16 +113,23 @@ int run(RunOptions options) {
 
   Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
-  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
-  const auto receipt = store.submit_study(make_submission(study));
+  const auto log = line_log(data_directory / "orchestrator.log");
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
+  StudySubmission submission = make_submission(study);
+  DataFileChecker checker;
+  recompute_lost_data_files(submission, store, checker);
+  const auto receipt = store.submit_study(submission);
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.port = options.port;
+  service_options.access_log = log;
   const auto service = start_service(store, scheduler, service_options);
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
+  const std::string recomputed =
+      receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "";
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done), store " << store.file().string() << "\n"
+            << " already done" << recomputed << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
             << " in a browser (API: " << study_url << ")\n";

@@ -128,7 +128,8 @@ nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, c
 
 }  // namespace
 
-void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options) {
+void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options,
+                                  std::shared_ptr<DataFileChecker> checker) {
   auto grid = std::make_shared<GridPointCache>();
   server.Get("/api/progress", guarded([&store](const httplib::Request& request, httplib::Response& response) {
     PageRequest page;
@@ -164,8 +165,8 @@ void register_dashboard_endpoints(httplib::Server& server, Store& store, const S
                send_json(response, 200, fragment_sizes_json(store, *grid, study, AxisFilter(request)));
              }));
   server.Get(R"(/api/cases/(\d+)/data)",
-             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-               send_case_file(response, store, path_id(request), options.data_directory);
+             guarded([&store, &options, checker](const httplib::Request& request, httplib::Response& response) {
+               send_case_file(response, store, path_id(request), options.data_directory, *checker);
              }));
 }
 

@@ -6,7 +6,9 @@ namespace aerobreak {
 
 void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body) {
   response.status = status;
-  response.set_content(body.dump(), "application/json");
+  // Text a client sent (a path, a parameter, a key) can be invalid UTF-8, with which dump() would
+  // throw where nothing catches it: such bytes are written as U+FFFD instead.
+  response.set_content(body.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace), "application/json");
 }
 
 void send_error(httplib::Response& response, const RequestError& error) {

@@ -155,11 +155,18 @@ CREATE TABLE grid_point_summaries (
 CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
 )sql";
 
+// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+constexpr std::string_view kVersion4 = R"sql(
+ALTER TABLE results ADD COLUMN data_file_size INTEGER;
+ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
     Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
+    Migration{4, "size and SHA-256 of each result's data file", kVersion4},
 };
 
 int user_version(SqliteDatabase& db) {

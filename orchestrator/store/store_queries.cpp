@@ -262,11 +262,12 @@ std::optional<CaseDetail> Store::case_detail(std::int64_t case_id) {
                                attempts.optional_text(5), attempts.optional_text(6)});
   }
 
-  auto result = db->prepare("SELECT document, data_file FROM results WHERE case_id = ?");
+  auto result = db->prepare("SELECT document, data_file, data_file_size, data_file_sha256 FROM results WHERE case_id = ?");
   result.bind_all(case_id);
   if (result.step()) {
     detail.result = nlohmann::ordered_json::parse(result.text(0));
     detail.data_file = result.optional_text(1);
+    detail.data_file_digest = {result.optional_integer(2).value_or(-1), result.optional_text(3).value_or("")};
   }
 
   auto fragments = db->prepare(
@@ -292,6 +293,22 @@ std::vector<JobRecord> Store::jobs(std::size_t limit) {
                     statement.optional_integer(6), statement.optional_text(7)});
   }
   return jobs;
+}
+
+std::vector<StoredDataFile> Store::data_files(const std::vector<std::string>& hashes) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT r.data_file, r.data_file_size, r.data_file_sha256 FROM cases c JOIN results r ON r.case_id = c.id "
+      "WHERE c.hash = ? AND c.status = 'done' AND r.data_file IS NOT NULL");
+  std::vector<StoredDataFile> files;
+  for (const auto& hash : hashes) {
+    statement.reset();
+    statement.bind_all(hash);
+    if (statement.step())
+      files.push_back({hash, statement.text(0),
+                       {statement.optional_integer(1).value_or(-1), statement.optional_text(2).value_or("")}});
+  }
+  return files;
 }
 
 }  // namespace aerobreak

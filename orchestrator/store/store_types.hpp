@@ -35,6 +35,8 @@ struct StudySubmission {
     int replicate = 0;
   };
   std::vector<Case> cases;
+  // Hashes of done cases to compute again (their data files were lost or damaged).
+  std::vector<std::string> recompute;
 };
 
 struct SubmissionReceipt {
@@ -44,6 +46,13 @@ struct SubmissionReceipt {
   std::size_t new_cases = 0;     // queued now for the first time
   std::size_t already_done = 0;  // finished for another study: not rerun
   std::size_t requeued = 0;      // cancelled before, queued again
+  std::size_t recomputed = 0;    // done, but queued again: the data file was lost or damaged
+};
+
+// A case's bulk data file as its worker wrote it, so that a damaged or lost file is noticed later.
+struct DataFileDigest {
+  std::int64_t size = -1;  // bytes; -1: not reported
+  std::string sha256;      // hex; empty: not reported
 };
 
 // A case handed to a worker job.
@@ -166,7 +175,15 @@ struct CaseDetail {
   std::vector<AttemptRecord> attempts;
   std::optional<nlohmann::ordered_json> result;
   std::optional<std::string> data_file;
+  DataFileDigest data_file_digest;
   std::vector<FragmentRecord> fragments;
+};
+
+// A done case's data file as recorded.
+struct StoredDataFile {
+  std::string hash;  // the case's
+  std::string path;
+  DataFileDigest digest;
 };
 
 // Outcome counts of the finished cases at one grid point of a study, and what their results say
