@@ -14,7 +14,7 @@
 
 namespace aerobreak {
 
-// The orchestrator's SQLite store (DESIGN.md "Sweeps, storage, service"): one file in WAL mode
+// The orchestrator's SQLite store (docs/ORCHESTRATOR.md): one file in WAL mode
 // with a versioned schema (migrations.hpp). One writer: every method that changes the store runs
 // on the writer connection under one mutex, each as one transaction, so that a crash at any point
 // leaves either all or none of a change. Readers use connections of their own (WAL lets them read

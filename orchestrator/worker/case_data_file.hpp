@@ -18,7 +18,7 @@ class DataFileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The bulk arrays of one case (DESIGN.md: the store references HDF5 files for them), as an H5MD
+// The bulk arrays of one case (docs/ARCHITECTURE.md: the store references HDF5 files for them), as an H5MD
 // file (engine/io/h5md_writer.hpp) with two frames, the state when the impact starts and when it
 // ends (one frame if the run took no step), plus each primary's fragment at the end:
 //
