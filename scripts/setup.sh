@@ -18,6 +18,7 @@ packages=(
   libcli11-dev
   libeigen3-dev
   libboost-dev
+  gfortran
   chromium
 )
 # Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a

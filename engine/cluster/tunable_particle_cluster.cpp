@@ -159,23 +159,16 @@ class MonomerPlacer {
   Vec3 centre_;
 };
 
-}  // namespace
-
-ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const FractalLaw& law,
-                                            const ParticleClusterSettings& settings,
-                                            RandomStream& random) {
+// Puts the radii in the order of growth and returns the law's primary radius a, the geometric
+// mean of all the primaries to be placed (FracVAL's choice for this stage): the final aggregate
+// then obeys the law with its own a. The radius nearest to a is kept for the last step, where no
+// other radius can stand in, so that the final monomer behaves as in a monodisperse aggregate;
+// the starting dimer is made of the next two nearest, so that its fixed Rg is typical.
+double arrange_radii(std::vector<double>& radii) {
   const std::size_t n = radii.size();
-  const double max_radius = *std::max_element(radii.begin(), radii.end());
-  // The law's primary radius a is the geometric mean of all the primaries to be placed (FracVAL's
-  // choice for this stage): the final aggregate then obeys the law with its own a.
   double log_mean = 0.0;
   for (double r : radii) log_mean += std::log(r);
   log_mean /= static_cast<double>(n);
-  const double a = std::exp(log_mean);
-
-  // The radius nearest to a is kept for the last step, where no other radius can stand in, so
-  // that the final monomer behaves as in a monodisperse aggregate; the starting dimer is made of
-  // the next two nearest, so that its fixed Rg is typical.
   const auto nearer_to_mean = [&](double x, double y) {
     return std::abs(std::log(x) - log_mean) < std::abs(std::log(y) - log_mean);
   };
@@ -185,6 +178,42 @@ ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const Fra
     const auto slot = radii.begin() + static_cast<std::ptrdiff_t>(k);
     std::iter_swap(slot, std::min_element(slot, last, nearer_to_mean));
   }
+  return std::exp(log_mean);
+}
+
+// Why step k (growing to k + 1 primaries) found no position on the law at Gamma_pc^2 = gamma2.
+std::string off_law_reason(std::size_t k, double gamma2, double farthest) {
+  const double gamma = std::sqrt(std::max(0.0, gamma2));
+  const std::string step = "growing the aggregate from " + std::to_string(k) + " to " +
+                           std::to_string(k + 1) + " primaries, ";
+  if (!(gamma2 > 0.0)) return step + "Gamma_pc^2 = " + describe(gamma2) + " <= 0 (too compact)";
+  if (gamma > farthest)
+    return step + "Gamma_pc = " + describe(gamma) + " is beyond the reach of every primary, at most " +
+           describe(farthest) + " (too open)";
+  return step + "no position at distance Gamma_pc = " + describe(gamma) +
+         " touches a primary without overlapping another (too compact)";
+}
+
+// Off the law: the position at the nearest distance beyond gamma that has one, else straight
+// outward of the outermost primary.
+Vec3 nearest_off_law_position(MonomerPlacer& placer, double r, double gamma, double farthest) {
+  std::optional<Vec3> position;
+  for (int i = 1; !position; ++i) {
+    const double g = gamma + distance_search_step * r * (i <= fine_search_steps ? i : i * (i - fine_search_steps));
+    if (g >= farthest) break;
+    position = placer.touching_position(r, g);
+  }
+  return position ? *position : placer.outermost_position(r);
+}
+
+}  // namespace
+
+ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const FractalLaw& law,
+                                            const ParticleClusterSettings& settings,
+                                            RandomStream& random) {
+  const std::size_t n = radii.size();
+  const double max_radius = *std::max_element(radii.begin(), radii.end());
+  const double a = arrange_radii(radii);
 
   GrowingAggregate aggregate(2.0 * max_radius, law.convention);
   aggregate.add(Vec3{}, radii[0]);
@@ -215,28 +244,9 @@ ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const Fra
     // Off the law: the nearest distance that has a position.
     const double r = radii[k];
     const double gamma2 = placer.gamma_squared(r, target, law.convention);
-    const double gamma = std::sqrt(std::max(0.0, gamma2));
     const double farthest = placer.farthest_reach(r);
-    const std::string step = "growing the aggregate from " + std::to_string(k) + " to " +
-                             std::to_string(k + 1) + " primaries, ";
-    std::string shortfall;
-    if (!(gamma2 > 0.0)) {
-      shortfall = step + "Gamma_pc^2 = " + describe(gamma2) + " <= 0 (too compact)";
-    } else if (gamma > farthest) {
-      shortfall = step + "Gamma_pc = " + describe(gamma) +
-                  " is beyond the reach of every primary, at most " + describe(farthest) +
-                  " (too open)";
-    } else {
-      shortfall = step + "no position at distance Gamma_pc = " + describe(gamma) +
-                  " touches a primary without overlapping another (too compact)";
-    }
-    for (int i = 1; !position; ++i) {
-      const double g = gamma + distance_search_step * r *
-                                   (i <= fine_search_steps ? i : i * (i - fine_search_steps));
-      if (g >= farthest) break;
-      position = placer.touching_position(r, g);
-    }
-    aggregate.add(position ? *position : placer.outermost_position(r), r);
+    std::string shortfall = off_law_reason(k, gamma2, farthest);
+    aggregate.add(nearest_off_law_position(placer, r, std::sqrt(std::max(0.0, gamma2)), farthest), r);
 
     const double deviation = std::abs(aggregate.gyration_radius() / target - 1.0);
     shortfall +=

@@ -23,7 +23,7 @@ struct ContactConstants {
   bool operator==(const ContactConstants&) const = default;
 };
 
-// What the normal law hands to the other slots (DESIGN.md "Style": explicit, no shared state).
+// What the normal law hands to the other slots (docs/ARCHITECTURE.md, "The engine": explicit, no shared state).
 struct NormalResponse {
   double force = 0.0;           // elastic normal force, > 0 repulsive
   double contact_radius = 0.0;  // a
@@ -49,7 +49,7 @@ inline ContactConstants unfinished_constants(double radius, double mass, const P
   return c;
 }
 
-// Two spheres (DESIGN.md: R* = RiRj/(Ri+Rj), m* likewise) of the given pair of materials.
+// Two spheres (docs/MODEL.md section 2: R* = RiRj/(Ri+Rj), m* likewise) of the given pair of materials.
 inline ContactConstants sphere_pair_constants(double radius_i, double mass_i, double radius_j, double mass_j,
                                               const PairMaterial& material) {
   return unfinished_constants(radius_i * radius_j / (radius_i + radius_j), mass_i * mass_j / (mass_i + mass_j),

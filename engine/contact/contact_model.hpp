@@ -26,7 +26,7 @@ struct ContactLoad {
   Vec3 torque_j;
 };
 
-// One contact law assembled from its slots (DESIGN.md "Style"); the combination is a type, chosen
+// One contact law assembled from its slots (docs/ARCHITECTURE.md, "The engine"); the combination is a type, chosen
 // once per run, so the pair loop holds no model switches.
 template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
 struct ContactModel {

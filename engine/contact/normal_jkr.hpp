@@ -8,7 +8,7 @@
 
 namespace aerobreak {
 
-// Where a JKR contact in tension lets go (DESIGN.md "Contact physics").
+// Where a JKR contact in tension lets go (docs/MODEL.md 3.3).
 enum class JkrSeparation {
   displacement,  // at delta = -delta_c (eq 3), the report's rule and the default
   force,         // at a = a0 / 4^(1/3), where F = -F_c: the rule of some DEM codes
@@ -47,7 +47,7 @@ inline double jkr_radius_ratio(double overlap_ratio) {
 inline double jkr_overlap_ratio(double x) { return x * x - (2.0 / 3.0) * std::sqrt(x); }
 
 // Normal JKR law (Johnson, Kendall & Roberts 1971; report eqs 1-5) in the general form of
-// DESIGN.md: F(a) = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3), delta(a) = a^2/R* - sqrt(2 pi w a/E*).
+// docs/MODEL.md section 2 (eqs 1-2, general form): F(a) = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3), delta(a) = a^2/R* - sqrt(2 pi w a/E*).
 struct JkrNormal {
   JkrSeparation separation = JkrSeparation::displacement;
 

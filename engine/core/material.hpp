@@ -15,7 +15,7 @@ struct Material {
   void validate(const std::string& what) const;
 };
 
-// Effective elastic and adhesive constants of a pair of materials (DESIGN.md "Contact physics").
+// Effective elastic and adhesive constants of a pair of materials (docs/MODEL.md section 2).
 // For identical materials these reduce exactly to the report's eqs 1-5, 7 and 11.
 struct PairMaterial {
   double modulus = 0.0;            // E* = [(1-nu_i^2)/E_i + (1-nu_j^2)/E_j]^-1

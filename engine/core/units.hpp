@@ -15,7 +15,7 @@ double adhesion_energy_ratio(const Material& material, double diameter, double i
 // A reduced material is fixed by gamma/k_n and nu.
 Material reduced_material(double gamma_over_kn, double poisson_ratio);
 
-// Physical mode (DESIGN.md "Units"): a real material and impact speed, run with the stiffness
+// Physical mode (docs/MODEL.md 1.2): a real material and impact speed, run with the stiffness
 // softened by s (k_n' = s k_n), gamma' = s gamma (gamma/k_n kept) and v' = sqrt(s) v (eq 19's
 // lambda kept). In the reduced units above the softened problem is the same dimensionless
 // problem for every s: s only relabels time, t_physical = t_reduced * tau, whereas the softened

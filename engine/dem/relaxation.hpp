@@ -27,7 +27,7 @@ struct RelaxationResult {
   std::uint64_t contacts_broken = 0; // during relaxation (0 for a cluster that holds together)
 };
 
-// Brings a cluster built at touching distance to mechanical equilibrium (DESIGN.md "Clusters"):
+// Brings a cluster built at touching distance to mechanical equilibrium (docs/MODEL.md 11.1):
 // contacts at their equilibrium overlap, internal kinetic energy ~0. It runs the model's normal
 // law only (so no tangential, rolling or twisting spring is left stretched), with Tsuji damping
 // that is critical about equilibrium for every contact whatever its size (so polydisperse clusters

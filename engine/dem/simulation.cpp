@@ -1,6 +1,7 @@
 #include "engine/dem/simulation.hpp"
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/dem/simulation_force_pass.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,11 @@ Wall normalised(Wall wall, std::size_t index, std::size_t material_count) {
 
 Simulation::Simulation(Particles particles, std::vector<Material> materials, std::vector<Wall> walls,
                        ContactModelSpec model, SimulationSettings settings)
-    : particles_(std::move(particles)), materials_(std::move(materials)), spec_(model), settings_(settings) {
+    : particles_(std::move(particles)),
+      materials_(std::move(materials)),
+      spec_(model),
+      settings_(settings),
+      wavefront_({settings.wavefront_depth, settings.wavefront_min_particles, settings.wavefront_margin}) {
   validate_particles(particles_, materials_.size());
   if (!(settings_.initial_bond_gap >= 0.0)) throw std::invalid_argument("simulation: initial_bond_gap must be >= 0");
   for (std::size_t w = 0; w < walls.size(); ++w) walls_.push_back(normalised(walls[w], w, materials_.size()));
@@ -162,99 +167,61 @@ double Simulation::interaction_margin() const {
 
 void Simulation::step() { run(1); }
 
-// Velocity Verlet. The closing half kick of one step and the opening half kick of the next are
-// done together (two additions, rounded as two separate passes would be), particle by particle
-// as the force pass completes each particle (ForcePass), with the drift, the force reset and the
-// neighbour list's displacement check: the particles' arrays are streamed once per step. Several
-// steps' passes run together as a wavefront where they can (run_wavefront). Between calls the
-// velocities are whole-step.
+// Velocity Verlet [S82]: v(n+1/2) = v(n) + dt F(n)/(2m), x(n+1) = x(n) + dt v(n+1/2), forces
+// F(n+1) at x(n+1), v(n+1) = v(n+1/2) + dt F(n+1)/(2m); the same for the spin with the torque
+// and the moment of inertia. Between calls the velocities are whole-step. Inside a run the closing
+// half kick of one step and the opening half kick of the next are done together (verlet_step).
+// Where the system is large enough, the wavefront runs several steps in one sweep over the data
+// with the same result to the last bit (wavefront.hpp).
 void Simulation::run(std::int64_t steps) {
   if (steps <= 0) return;
-  Drift drift = kick_and_drift<1>(0, particles_.size());
-  const double limit2 = neighbors_->displacement_limit2();
-  std::int64_t one_by_one_until = 0;  // after a wavefront that was undone, its steps one at a time
-  for (std::int64_t s = 0; s < steps;) {
-    bool rebuild = drift.since_build2 > limit2;
-    const std::int64_t wanted =
-        s < one_by_one_until ? 1 : std::min({wavefront_depth(), wavefront_cap_, steps - s});
-    if (wanted > 1) {
-      // Rebuilt early rather than run a wavefront of less than half the passes a fresh list allows;
-      // not in a periodic box, where rebuilds wrap the positions (and so round them differently).
-      const bool early = !settings_.periodic && 2 * wavefront_room(drift.since_build2, drift, wanted) <
-                                                    wavefront_room(0.0, drift, wanted);
-      if (rebuild || early) {
-        rebuild_neighbors();
-        drift.since_build2 = 0.0;
-        rebuild = false;
-      }
-      const std::int64_t depth = wavefront_room(drift.since_build2, drift, wanted);
-      if (depth > 1) {
-        if (const std::optional<Drift> next = run_wavefront(static_cast<int>(depth), s + depth < steps)) {
-          drift = *next;
-          s += depth;
-          wavefront_cap_ = std::min(2 * wavefront_cap_, wavefront_depth());
-          continue;
-        }
-        one_by_one_until = s + depth;
-        wavefront_cap_ = std::max<std::int64_t>(2, depth / 2);
-      }
+  ParticleDrift drift = kick_and_drift<1>(0, particles_.size());  // the first step's opening half kick and drift
+  wavefront_.begin_run();
+  for (std::int64_t done = 0; done < steps;) {
+    if (const std::int64_t taken = wavefront_.advance(*this, drift, done, steps)) {
+      done += taken;
+      continue;
     }
-    time_ += dt_;
-    ++steps_;
-    drift = compute_forces(rebuild, 0.0, s + 1 < steps);
-    ++s;
+    ++done;
+    drift = verlet_step(drift, done < steps);
   }
-  kick();
+  kick();  // the last step's closing half kick
 }
 
-// What follows a particle's last pair force in a force pass: its wall contacts; then, unless
-// van der Waals forces are still to come, its body forces and, when the run goes on, the kicks
-// and the drift of the next step. Its sums run over the particles in index order, across the
-// ranges the pair loop reports, exactly as separate passes over all particles would.
-class Simulation::ForcePass final : public ParticleCompletion {
- public:
-  ForcePass(Simulation& simulation, bool finish, bool integrate, std::int64_t step)
-      : sim_(simulation), finish_(finish), integrate_(integrate), step_(step), wall_tally_(simulation.walls_.size()) {}
+// One step: the forces at the drifted positions (the neighbour list rebuilt first if a particle
+// may have left its skin); then, unless the run ends with this step, this step's closing half
+// kick, the next step's opening half kick and its drift, particle by particle as the force pass
+// completes each particle (ForcePass), with the force reset and the neighbour list's
+// displacement check: the particles' arrays are streamed once per step. The two half kicks are
+// two additions, rounded as two separate passes would round them.
+ParticleDrift Simulation::verlet_step(const ParticleDrift& drift, bool more) {
+  time_ += dt_;
+  ++steps_;
+  return compute_forces(drift.since_build2 > neighbors_->displacement_limit2(), 0.0, more);
+}
 
-  void complete(std::size_t begin, std::size_t end) override {
-    Simulation& s = sim_;
-    for (std::size_t w = 0; w < s.walls_.size(); ++w) {
-      const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
-      s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
-                                         s.materials_, s.dt_, begin, end,
-                                         {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range, step_ > 0});
-    }
-    if (!finish_) return;
-    add_body_forces(s.particles_, s.settings_.body, step_, s.dt_, begin, end, body_work_);
-    if (integrate_) drift_.merge(s.kick_and_drift<2>(begin, end));
+void Simulation::ForcePass::complete(std::size_t begin, std::size_t end) {
+  Simulation& s = sim_;
+  for (std::size_t w = 0; w < s.walls_.size(); ++w) {
+    const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
+    s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
+                                       s.materials_, s.dt_, begin, end,
+                                       {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range, step_ > 0});
   }
-
-  // What the pass adds to the run's sums, in the order one pass at a time adds it.
-  void book(DissipationTally& tally, double& external_work) const {
-    for (const DissipationTally& wall : wall_tally_) tally += wall;
-    if (finish_) external_work += body_work_;
-  }
-  const Drift& drift() const { return drift_; }
-
- private:
-  Simulation& sim_;
-  bool finish_;
-  bool integrate_;
-  std::int64_t step_;
-  std::vector<DissipationTally> wall_tally_;  // each wall's dissipation in this pass
-  double body_work_ = 0.0;
-  Drift drift_;
-};
+  if (!finish_) return;
+  add_body_forces(s.particles_, s.settings_.body, step_, s.dt_, begin, end, body_work_);
+  if (integrate_) drift_.merge(s.kick_and_drift<2>(begin, end));
+}
 
 // `Kicks` half kicks of the particles begin .. end-1 with their current forces, a drift over
 // dt, and their forces cleared for the next evaluation; returns how far they have now moved since
 // the neighbour list was built, and in this drift (the largest of each).
 template <int Kicks>
-Simulation::Drift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
+ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   Particles& p = particles_;
   const std::vector<Vec3>& built_at = neighbors_->built_at();
   if (built_at.size() != p.size()) throw std::logic_error("simulation: neighbour list built for other particles");
-  Drift drift;
+  ParticleDrift drift;
   const double dt = dt_;
   // Locals, not the arrays: the stores to one array would otherwise make the compiler read the
   // others again (they all hold doubles).
@@ -286,7 +253,7 @@ void Simulation::kick() {
 // particles then move on by a step (kick_and_drift<2>) and the return value says how far they
 // have moved. Periodic or not is fixed for the run; each branch below calls a loop compiled for
 // that case.
-Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap, bool integrate) {
+ParticleDrift Simulation::compute_forces(bool rebuild, double formation_gap, bool integrate) {
   if (rebuild) rebuild_neighbors();
   require_list_for_particles();
   // Van der Waals forces between listed pairs come after the walls', in a pass of their own:
@@ -305,7 +272,7 @@ Simulation::Drift Simulation::compute_forces(bool rebuild, double formation_gap,
   double work = 0.0;
   add_body_forces(particles_, settings_.body, steps_, dt_, 0, particles_.size(), work);
   external_work_ += work;
-  return integrate ? kick_and_drift<2>(0, particles_.size()) : Drift{};
+  return integrate ? kick_and_drift<2>(0, particles_.size()) : ParticleDrift{};
 }
 
 // The pair loop over the listed pairs, compiled for open space or for the periodic box.
@@ -331,84 +298,6 @@ void Simulation::rebuild_neighbors() {
 void Simulation::require_list_for_particles() const {
   if (neighbors_->pairs().particles() != particles_.size())
     throw std::logic_error("simulation: neighbour list built for other particles");
-}
-
-std::int64_t Simulation::wavefront_depth() const {
-  // Van der Waals forces need a pass of their own between the pair forces and the integration.
-  if (spec_.van_der_waals || particles_.size() < settings_.wavefront_min_particles) return 1;
-  return std::max(settings_.wavefront_depth, 1);
-}
-
-// How many passes (at most `wanted`) can run on a list from which the particles have moved up to
-// sqrt(since_build2): pass k sees the positions k drifts ahead, and each drift is taken to move a
-// particle at most wavefront_margin times as far as the last one moved any.
-std::int64_t Simulation::wavefront_room(double since_build2, const Drift& drift, std::int64_t wanted) const {
-  const double room = std::sqrt(neighbors_->displacement_limit2()) - std::sqrt(since_build2);
-  if (room < 0.0) return 0;
-  const double per_pass = settings_.wavefront_margin * std::sqrt(drift.last_step2);
-  if (!(per_pass > 0.0)) return wanted;
-  return std::min(wanted, 1 + static_cast<std::int64_t>(std::min(room / per_pass, static_cast<double>(wanted))));
-}
-
-// `depth` steps whose force passes run together (ContactForces::add_pair_forces). Each
-// pass sums exactly as it would alone, and the run's sums take the passes in order, so the result
-// is the one of `depth` single steps, to the last bit, provided the neighbour list held for
-// every pass: if a pass has moved a particle out of the skin, the steps are undone (empty result).
-std::optional<Simulation::Drift> Simulation::run_wavefront(int depth, bool integrate_last) {
-  require_list_for_particles();
-  save_checkpoint();
-  std::vector<ForcePass> passes;
-  std::vector<DissipationTally> pair_tally(static_cast<std::size_t>(depth));
-  passes.reserve(static_cast<std::size_t>(depth));
-  std::vector<ContactForces::Pass> list;
-  for (int k = 0; k < depth; ++k) {
-    passes.emplace_back(*this, true, k + 1 < depth || integrate_last, steps_ + k + 1);
-    list.push_back({{pair_pool_, pair_tally[k], pair_events_, nullptr}, passes.back()});
-  }
-  add_pair_forces(0.0, list);
-  const double limit2 = neighbors_->displacement_limit2();
-  for (int k = 0; k + 1 < depth; ++k)
-    if (passes[k].drift().since_build2 > limit2) {
-      restore_checkpoint();
-      ++wavefronts_undone_;
-      return std::nullopt;
-    }
-  for (int k = 0; k < depth; ++k) {
-    time_ += dt_;
-    ++steps_;
-    tally_ += pair_tally[k];
-    passes[k].book(tally_, external_work_);
-  }
-  wavefront_steps_ += static_cast<std::uint64_t>(depth);
-  return passes.back().drift();
-}
-
-// What a wavefront changes, kept to undo it (forces are zero between passes).
-void Simulation::save_checkpoint() {
-  Checkpoint& c = checkpoint_;
-  c.position = particles_.position;
-  c.velocity = particles_.velocity;
-  c.angular_velocity = particles_.angular_velocity;
-  c.pair_pool = pair_pool_;
-  c.wall_pool = wall_pool_;
-  c.wall_slots = wall_slots_;
-  c.pair_contacts = neighbors_->pairs().contact;
-  c.pair_events = pair_events_;
-  c.wall_events = wall_events_;
-}
-
-void Simulation::restore_checkpoint() {
-  Checkpoint& c = checkpoint_;
-  particles_.position = c.position;
-  particles_.velocity = c.velocity;
-  particles_.angular_velocity = c.angular_velocity;
-  particles_.clear_forces();
-  pair_pool_ = c.pair_pool;
-  wall_pool_ = c.wall_pool;
-  wall_slots_ = c.wall_slots;
-  neighbors_->pairs().contact = c.pair_contacts;
-  pair_events_ = c.pair_events;
-  wall_events_ = c.wall_events;
 }
 
 void Simulation::wrap_positions() {

@@ -1,7 +1,6 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -13,8 +12,10 @@
 #include "engine/dem/contact_forces.hpp"
 #include "engine/dem/energy_budget.hpp"
 #include "engine/dem/neighbor_list.hpp"
+#include "engine/dem/particle_drift.hpp"
 #include "engine/dem/time_step.hpp"
 #include "engine/dem/wall.hpp"
+#include "engine/dem/wavefront.hpp"
 #include "engine/neighbor/periodic_box.hpp"
 
 namespace aerobreak {
@@ -76,8 +77,8 @@ class Simulation {
   std::uint64_t neighbor_builds() const { return neighbors_->builds(); }
   // Steps run in wavefronts (SimulationSettings::wavefront_depth), and wavefronts undone because a
   // particle left the skin during one (their steps then ran one at a time).
-  std::uint64_t wavefront_steps() const { return wavefront_steps_; }
-  std::uint64_t wavefronts_undone() const { return wavefronts_undone_; }
+  std::uint64_t wavefront_steps() const { return wavefront_.steps(); }
+  std::uint64_t wavefronts_undone() const { return wavefront_.undone(); }
   std::size_t neighbor_pairs() const { return neighbors_->pairs().pairs(); }
   const std::vector<Wall>& walls() const { return walls_; }
   const ContactModelSpec& model() const { return spec_; }
@@ -92,37 +93,15 @@ class Simulation {
   Vec3 separation(std::size_t i, std::size_t j) const;
 
  private:
+  friend class Wavefront;
   class ForcePass;
-  // The largest squared displacement of a particle since the neighbour list was built, and in
-  // the last drift.
-  struct Drift {
-    double since_build2 = 0.0;
-    double last_step2 = 0.0;
-    void merge(const Drift& other) {
-      since_build2 = std::max(since_build2, other.since_build2);
-      last_step2 = std::max(last_step2, other.last_step2);
-    }
-  };
-  // What a wavefront changes, to undo it.
-  struct Checkpoint {
-    std::vector<Vec3> position, velocity, angular_velocity;
-    ContactPool pair_pool{false};
-    ContactPool wall_pool{true};
-    std::vector<std::vector<std::int32_t>> wall_slots;
-    std::vector<std::int32_t> pair_contacts;
-    ContactEvents pair_events, wall_events;
-  };
-  Drift compute_forces(bool rebuild, double formation_gap, bool integrate);
+  ParticleDrift verlet_step(const ParticleDrift& drift, bool more);
+  ParticleDrift compute_forces(bool rebuild, double formation_gap, bool integrate);
   void add_pair_forces(double formation_gap, const std::vector<ContactForces::Pass>& passes);
   void rebuild_neighbors();
   void require_list_for_particles() const;
-  std::int64_t wavefront_depth() const;
-  std::int64_t wavefront_room(double since_build2, const Drift& drift, std::int64_t wanted) const;
-  std::optional<Drift> run_wavefront(int depth, bool integrate_last);
-  void save_checkpoint();
-  void restore_checkpoint();
   template <int Kicks>
-  Drift kick_and_drift(std::size_t begin, std::size_t end);
+  ParticleDrift kick_and_drift(std::size_t begin, std::size_t end);
   void kick();
   // Half a step's velocity change of particle i under the force and torque given.
   void half_kick(std::size_t i, Vec3& velocity, Vec3& spin, const Vec3& force, const Vec3& torque) const {
@@ -159,11 +138,7 @@ class Simulation {
   std::vector<double> half_step_per_inertia_;  // dt / (2 I_i)
   std::vector<ImageCount> images_;
   double van_der_waals_energy_ = 0.0;
-  Checkpoint checkpoint_;
-  std::uint64_t wavefront_steps_ = 0;
-  std::uint64_t wavefronts_undone_ = 0;
-  // Deepest wavefront to try next: halved when one is undone, doubled again after one that is not.
-  std::int64_t wavefront_cap_ = std::numeric_limits<std::int32_t>::max();
+  Wavefront wavefront_;
 };
 
 }  // namespace aerobreak

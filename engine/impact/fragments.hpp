@@ -13,8 +13,8 @@ namespace aerobreak {
 
 class Simulation;
 
-// One fragment: a connected component of the particle-particle contact graph (DESIGN.md, "Impact
-// and outcomes"); a primary without contacts is a fragment of size 1.
+// One fragment: a connected component of the particle-particle contact graph (docs/IMPACT.md
+// section 5); a primary without contacts is a fragment of size 1.
 struct Fragment {
   std::size_t size = 0;          // primaries
   double mass = 0.0;

@@ -1,7 +1,9 @@
 #include "engine/impact/impact_case.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "engine/impact/schema_text.hpp"
@@ -118,20 +120,12 @@ const JsonSchema& result_schema() {
   return schema;
 }
 
-ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory) {
-  std::vector<SchemaViolation> violations = case_schema().validate_and_complete(document);
-  if (!violations.empty()) throw CaseError(std::move(violations));
+namespace {
 
-  ImpactCase c;
-  c.document = document;
-  const Json& d = c.document;
-  c.name = d.value("name", std::string());
+using Violations = std::vector<SchemaViolation>;
 
-  // Rules the schema does not state; each names the field to change.
-  auto violation = [&](const std::string& pointer, const std::string& message) {
-    violations.push_back({pointer, message});
-  };
-
+// The primaries' material and the wall's, reduced (E in k_n/d, gamma in k_n), and the impact speed.
+void read_materials(const Json& d, ImpactCase& c) {
   const Json& m = d["material"];
   if (d["units"].get<std::string>() == "physical") {
     PhysicalScaling scaling;
@@ -166,6 +160,13 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
     }
   }
 
+}
+
+// The contact model and the rules on it the schema does not state.
+void read_model(const Json& d, ImpactCase& c, Violations& violations) {
+  auto violation = [&](const std::string& pointer, const std::string& message) {
+    violations.push_back({pointer, message});
+  };
   c.model = model_from(d["model"]);
   const bool adhesive_law = c.model.normal != NormalLaw::hertz;
   const std::string energy_field = c.physical ? "/material/surface_energy" : "/material/gamma_over_kn";
@@ -184,15 +185,13 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   if (c.model.damping == DampingLaw::tsuji && !(c.model.restitution < 1.0))
     violation("/model/damping/restitution", "must be < 1 for Tsuji damping (1 is no damping: use \"law\": \"none\")");
 
-  c.cluster = cluster_source(c.document["cluster"], base_directory, violations);
+}
 
-  const Json& im = d["impact"];
-  c.angle_degrees = im["angle"].get<double>();
-  c.orientation_seed = im["orientation_seed"].get<std::uint64_t>();
-  c.gap = im["gap"].get<double>();
-
-  c.thresholds.bounce_share = d["classification"]["largest_fragment_share"].get<double>();
-
+// Time limit, snapshot interval, time step and the settle criterion.
+void read_run(const Json& d, ImpactCase& c, Violations& violations) {
+  auto violation = [&](const std::string& pointer, const std::string& message) {
+    violations.push_back({pointer, message});
+  };
   const Json& run = d["run"];
   if (run.contains("time_limit_s")) {
     if (c.physical)
@@ -211,6 +210,41 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
   c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);
   if (c.time_step > 0.0 && c.time_limit > 0.0 && c.time_step >= c.time_limit)
     violation("/run/time_step", "must be smaller than /run/time_limit");
+  // The cluster starts `gap` above the wall, so its first wall contact comes after gap / v_n
+  // (docs/IMPACT.md): a speed too small to reach the wall within time_limit (5e-324 d/tau, say,
+  // whose restitution would be noise over nothing) is no impact.
+  const double approach_time = c.gap / (c.speed * std::cos(c.angle_degrees * std::numbers::pi / 180.0));
+  if (c.time_limit > 0.0 && !(approach_time < c.time_limit)) {
+    std::ostringstream message;
+    message << "is too small: the cluster would reach the wall after " << approach_time
+            << " tau (gap / normal speed), beyond /run/time_limit (" << c.time_limit << " tau)";
+    violation("/impact/speed", message.str());
+  }
+
+}
+
+}  // namespace
+
+ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory) {
+  std::vector<SchemaViolation> violations = case_schema().validate_and_complete(document);
+  if (!violations.empty()) throw CaseError(std::move(violations));
+
+  ImpactCase c;
+  c.document = document;
+  const Json& d = c.document;
+  c.name = d.value("name", std::string());
+  // Rules the schema does not state are checked as each part is read; each names the field to change.
+  read_materials(d, c);
+  read_model(d, c, violations);
+  c.cluster = cluster_source(c.document["cluster"], base_directory, violations);
+
+  const Json& im = d["impact"];
+  c.angle_degrees = im["angle"].get<double>();
+  c.orientation_seed = im["orientation_seed"].get<std::uint64_t>();
+  c.gap = im["gap"].get<double>();
+
+  c.thresholds.bounce_share = d["classification"]["largest_fragment_share"].get<double>();
+  read_run(d, c, violations);
 
   if (!violations.empty()) throw CaseError(std::move(violations));
   return c;

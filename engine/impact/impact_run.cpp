@@ -9,10 +9,12 @@
 #include <stdexcept>
 
 #include "engine/cluster/cluster_analysis.hpp"
+#include "engine/cluster/neighbour_order.hpp"
 #include "engine/cluster/random_stream.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
 #include "engine/dem/simulation.hpp"
+#include "engine/impact/impact_measurement.hpp"
 #include "engine/impact/settle.hpp"
 #include "engine/io/cluster_library.hpp"
 #include "engine/io/xyz.hpp"
@@ -33,52 +35,12 @@ constexpr double kBondGap = 1e-6;
 // Every primary of the case's material, index 0; the wall's material is index 1.
 constexpr std::uint16_t kWallMaterial = 1;
 
-ClusterShape shape_of(const Particles& p, const std::vector<std::uint32_t>& members, std::size_t contacts) {
-  Cluster c;
-  c.position.reserve(members.size());
-  c.radius.reserve(members.size());
-  for (std::uint32_t i : members) {
-    c.position.push_back(p.position[i]);
-    c.radius.push_back(p.radius[i]);
-  }
-  ClusterShape s;
-  s.primaries = members.size();
-  if (members.empty()) return s;
-  s.radius_of_gyration = radius_of_gyration(c);
-  s.fractal_dimension = mass_radius_dimension(c);
-  s.coordination = 2.0 * static_cast<double>(contacts) / static_cast<double>(members.size());
-  s.filling_factor = members.size() > 1 ? filling_factor(c) : std::numeric_limits<double>::quiet_NaN();
-  return s;
-}
-
 // Diameter of the bounding sphere of the particles about their centre of mass.
 double extent_of(const Particles& p) {
   const Vec3 centre = p.centre_of_mass();
   double extent = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
   return extent;
-}
-
-// The particle-particle contacts of a simulation as sorted pairs (i < j).
-std::vector<std::pair<std::uint32_t, std::uint32_t>> contact_pairs(const Simulation& sim) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  sim.contacts().for_each([&](const ContactState& c) {
-    if (!c.with_wall) pairs.emplace_back(std::min(c.i, c.j), std::max(c.i, c.j));
-  });
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
-
-// How many of the sorted pairs `before` are missing from the sorted pairs `after`.
-std::size_t missing_from(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& before,
-                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& after) {
-  std::size_t missing = 0;
-  auto found = after.begin();
-  for (const auto& pair : before) {
-    found = std::lower_bound(found, after.end(), pair);
-    if (found == after.end() || *found != pair) ++missing;
-  }
-  return missing;
 }
 
 // The contact energies of two primaries of diameter d = 1 (the geometric mean of a polydisperse
@@ -143,8 +105,11 @@ Particles prepare_cluster(const ImpactCase& c, RelaxationSummary& relaxation,
     tell(log, "built a " + c.cluster.generator.method + " cluster of " + std::to_string(cluster.size()) +
                   " primaries in " + std::to_string(seconds_since(start)) + " s");
   } else {
-    cluster = read_case_cluster(c.cluster);
-    tell(log, "read " + std::to_string(cluster.size()) + " primaries from " + c.cluster.file.string());
+    // Listed along their neighbours, as the generators list theirs: the pair loop then works on a
+    // narrow band of particles, whatever order the file had (docs/PERFORMANCE.md).
+    cluster = ordered_along_neighbours(read_case_cluster(c.cluster));
+    tell(log, "read " + std::to_string(cluster.size()) + " primaries from " + c.cluster.file.string() +
+                  " (listed along their neighbours)");
   }
   if (cluster.size() == 0) throw std::invalid_argument("impact: the cluster has no primaries");
   Particles particles = particles_from_cluster(cluster, c.material.density, 0);
@@ -215,150 +180,36 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
   return prepared;
 }
 
-namespace {
-
-ImpactProgress progress_of(const Simulation& sim, double time_limit, double elapsed) {
-  ImpactProgress progress;
-  progress.time = sim.time();
-  progress.time_limit = time_limit;
-  progress.steps = sim.step_count();
-  progress.steps_per_second = static_cast<double>(sim.step_count()) / elapsed;
-  progress.particle_steps_per_second = progress.steps_per_second * static_cast<double>(sim.particles().size());
-  sim.contacts().for_each([&](const ContactState& contact) {
-    if (contact.with_wall)
-      ++progress.wall_contacts;
-    else
-      ++progress.contacts;
-  });
-  progress.fragments = find_fragments(sim).fragments.size();
-  progress.kinetic_energy = sim.energy().kinetic();
-  return progress;
+ImpactSchedule impact_schedule(const ImpactResult& r, std::size_t particles) {
+  const ImpactCase& c = r.impact_case;
+  const double dt = r.time_step;
+  ImpactSchedule s;
+  s.limit_steps = static_cast<std::int64_t>(std::ceil(c.time_limit / dt - 1e-9));
+  s.check_steps = std::max<std::int64_t>(1, static_cast<std::int64_t>(r.quiet_window / dt / 20.0));
+  s.snapshot_steps = c.snapshot_interval > 0.0 ? std::max<std::int64_t>(1, std::llround(c.snapshot_interval / dt)) : 0;
+  s.progress_steps = std::max<std::int64_t>(1, 1'000'000 / static_cast<std::int64_t>(particles));
+  return s;
 }
 
-// Steps the simulation until the monitor finds the outcome settled or the time limit comes,
-// writing snapshots and progress on the way; returns the wall-clock seconds it took.
-double run_until_settled(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options) {
+double run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options) {
   ImpactResult& r = prepared.result;
   Simulation& sim = *prepared.simulation;
-  const ImpactCase& c = r.impact_case;
-  const double dt = sim.time_step();
-  const auto limit_steps = static_cast<std::int64_t>(std::ceil(c.time_limit / dt - 1e-9));
-  const std::int64_t check_steps = std::max<std::int64_t>(1, static_cast<std::int64_t>(r.quiet_window / dt / 20.0));
-  const std::int64_t snapshot_steps =
-      c.snapshot_interval > 0.0 ? std::max<std::int64_t>(1, std::llround(c.snapshot_interval / dt)) : 0;
-  // Chunks between progress checks: about 1e6 particle-steps, and never past a check or snapshot.
-  const std::int64_t progress_steps =
-      std::max<std::int64_t>(1, 1'000'000 / static_cast<std::int64_t>(sim.particles().size()));
-
-  std::int64_t last_snapshot = -1;
-  auto snapshot = [&] {
-    if (!options.snapshot || last_snapshot == sim.step_count()) return;
-    options.snapshot(sim);
-    last_snapshot = sim.step_count();
-    ++r.snapshots;
-  };
-  snapshot();
+  const ImpactSchedule schedule = impact_schedule(r, sim.particles().size());
+  SnapshotObserver snapshots(options.snapshot, schedule.snapshot_steps, sim.step_count());
+  SettleObserver settle(monitor, schedule.check_steps, sim.step_count());
+  snapshots.take(sim);
   monitor.update(sim);
-
   const auto start = Clock::now();
-  auto last_progress = start;
-  std::int64_t next_check = check_steps;
-  std::int64_t next_snapshot = snapshot_steps > 0 ? snapshot_steps : limit_steps + 1;
-  while (sim.step_count() < limit_steps) {
-    const std::int64_t s = sim.step_count();
-    sim.run(std::min({limit_steps, next_check, next_snapshot, s + progress_steps}) - s);
-    if (sim.step_count() == next_snapshot) {
-      snapshot();
-      next_snapshot += snapshot_steps;
-    }
-    if (sim.step_count() == next_check) {
-      next_check += check_steps;
-      if (monitor.update(sim)) break;
-    }
-    if (options.progress && seconds_since(last_progress) >= options.progress_seconds) {
-      last_progress = Clock::now();
-      options.progress(progress_of(sim, c.time_limit, seconds_since(start)));
-    }
-  }
+  ProgressObserver progress(options.progress, options.progress_seconds, r.impact_case.time_limit,
+                            schedule.progress_steps, sim.step_count());
+  std::vector<StepObserver*> observers{&snapshots, &settle};
+  if (options.progress) observers.push_back(&progress);
+  run_observed(sim, schedule.limit_steps, observers);
   const double seconds = seconds_since(start);
-  snapshot();
+  snapshots.take(sim);
+  r.snapshots = snapshots.taken();
   return seconds;
 }
-
-// The run's counters, as the simulation left them.
-void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, double seconds) {
-  ImpactResult& r = prepared.result;
-  const Simulation& sim = *prepared.simulation;
-  r.wall_clock_seconds = seconds;
-  r.steps = sim.step_count();
-  r.simulated_time = sim.time();
-  r.settled = monitor.settled();
-  r.settled_by = monitor.rule();
-  r.settled_at = monitor.settled_at();
-  r.quiet_since = monitor.quiet_since();
-  if (!r.settled) r.unsettled_reason = monitor.open_reason(sim);
-  r.particle_steps_per_second =
-      seconds > 0.0 ? static_cast<double>(r.primaries) * static_cast<double>(r.steps) / seconds : 0.0;
-  r.neighbor_builds = sim.neighbor_builds();
-  r.pair_events = sim.pair_events();
-  r.pair_events.made -= prepared.pair_start.made;
-  r.pair_events.broken -= prepared.pair_start.broken;
-  r.wall_events = sim.wall_events();
-  r.wall_events.made -= prepared.wall_start.made;
-  r.wall_events.broken -= prepared.wall_start.broken;
-  r.final_energy = sim.energy();
-}
-
-// Restitution of the largest fragment: v_n after over |v_n| before, and along the impact's tangent.
-void measure_restitution(ImpactResult& r) {
-  r.rebound_velocity = r.fragment_final_velocity.front();
-  const double impact_normal = dot(r.impact_velocity, r.wall_normal);  // < 0
-  r.restitution_normal = -dot(r.rebound_velocity, r.wall_normal) / impact_normal;
-  const Vec3 tangential = r.impact_velocity - impact_normal * r.wall_normal;
-  const double tangential_speed = norm(tangential);
-  r.restitution_tangential = tangential_speed > 1e-12 * r.impact_case.speed
-                                 ? dot(r.rebound_velocity, tangential) / (tangential_speed * tangential_speed)
-                                 : std::numeric_limits<double>::quiet_NaN();
-}
-
-// The final state: fragments of the final contact graph (settled: the judged state, which is the
-// final one, the run having stopped right after the judgement), outcome, restitution, compaction
-// of the largest fragment, damage and the small-strain check.
-void analyse_final_state(PreparedImpact& prepared, const SettleMonitor& monitor) {
-  ImpactResult& r = prepared.result;
-  const Simulation& sim = *prepared.simulation;
-  const FragmentAnalysis end = r.settled ? monitor.judged_fragments() : find_fragments(sim);
-  r.fragments = end.fragments;
-  if (r.settled) r.fragment_mean_velocity = monitor.judged_mean_velocities();
-  r.fragment_final_velocity = r.fragment_mean_velocity;
-  if (!r.settled)
-    for (const Fragment& f : r.fragments) r.fragment_final_velocity.push_back(f.velocity);
-  r.classification =
-      classify(fates_of(r.fragments, r.fragment_final_velocity, r.wall_normal), r.settled, r.impact_case.thresholds);
-  measure_restitution(r);
-
-  const auto final_contacts = contact_pairs(sim);
-  r.final_contacts = final_contacts.size();
-  r.final_wall_contacts = sim.contacts().size() - final_contacts.size();
-  r.initial_contacts_broken = missing_from(prepared.initial_contacts, final_contacts);
-  std::size_t largest_contacts = 0;
-  for (const auto& [i, j] : final_contacts)
-    if (end.fragment_of[i] == 0) ++largest_contacts;
-  for (const Fragment& f : r.fragments) r.fragment_translational_kinetic += 0.5 * f.mass * norm2(f.velocity);
-
-  std::vector<std::uint32_t> members;
-  members.reserve(r.fragments.front().size);
-  for (std::uint32_t i = 0; i < sim.particles().size(); ++i)
-    if (end.fragment_of[i] == 0) members.push_back(i);
-  r.after = shape_of(sim.particles(), members, largest_contacts);
-
-  DeepestOverlaps deepest;
-  if (r.initial_contacts + r.pair_events.made > 0) deepest.pair = sim.pair_events().deepest_overlap_ratio;
-  if (r.wall_events.made > 0) deepest.wall = sim.wall_events().deepest_overlap_ratio;
-  r.validity = check_small_strain(deepest, sim.particles(), sim.materials(), sim.walls().front(), sim.model());
-}
-
-}  // namespace
 
 ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   PreparedImpact prepared = prepare_impact(c, options);
@@ -371,9 +222,8 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   }
   SettleMonitor monitor(prepared.result.quiet_window, prepared.result.rest_speed, c.thresholds,
                         c.settle.stop_when_outcome_fixed);
-  const double seconds = run_until_settled(prepared, monitor, options);
-  record_run(prepared, monitor, seconds);
-  analyse_final_state(prepared, monitor);
+  const double seconds = run_prepared_impact(prepared, monitor, options);
+  measure_impact(prepared, monitor, seconds);
   return std::move(prepared.result);
 }
 

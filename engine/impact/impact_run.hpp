@@ -10,23 +10,12 @@
 #include "engine/core/particles.hpp"
 #include "engine/impact/impact_case.hpp"
 #include "engine/impact/impact_result.hpp"
+#include "engine/impact/run_observers.hpp"
 
 namespace aerobreak {
 
 class Simulation;
-
-// Where a running impact stands (for progress output).
-struct ImpactProgress {
-  double time = 0.0;
-  double time_limit = 0.0;
-  std::int64_t steps = 0;
-  double steps_per_second = 0.0;
-  double particle_steps_per_second = 0.0;
-  std::size_t contacts = 0;       // particle-particle
-  std::size_t wall_contacts = 0;
-  std::size_t fragments = 0;
-  double kinetic_energy = 0.0;
-};
+class SettleMonitor;
 
 struct ImpactRunOptions {
   // Called with the simulation at the start, every snapshot interval of the case, and at the end.
@@ -61,6 +50,23 @@ struct PreparedImpact {
 // Prepares the cluster, turns it to the seeded random orientation, places it `gap` above the wall
 // with every primary at the impact velocity and builds the simulation (docs/IMPACT.md section 3).
 PreparedImpact prepare_impact(const ImpactCase& impact_case, const ImpactRunOptions& options = {});
+
+// How often a running impact is looked at, in steps: the time limit, the settle check (20 times
+// per quiet window), snapshots (the case's interval; 0: none) and progress (about every 10^6
+// particle-steps).
+struct ImpactSchedule {
+  std::int64_t limit_steps = 0;
+  std::int64_t check_steps = 0;
+  std::int64_t snapshot_steps = 0;
+  std::int64_t progress_steps = 0;
+};
+ImpactSchedule impact_schedule(const ImpactResult& prepared, std::size_t particles);
+
+// Runs a prepared impact until the settle check (SettleMonitor, both rules) finds its outcome
+// settled or the time limit comes, with snapshots and progress on the way (run_observed); returns
+// the wall-clock seconds of stepping. The result is then measured by measure_impact
+// (impact_measurement.hpp).
+double run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options = {});
 
 // Runs one impact case end to end (docs/IMPACT.md): prepares the cluster, turns it to the seeded
 // random orientation, places it `gap` above the wall with every primary at the impact velocity,

@@ -47,8 +47,11 @@ std::string number_text(double x) {
 
 std::string shown(const Json& v) {
   std::string text = v.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  if (text.size() <= 60) return text;
+  // Cut before a UTF-8 continuation byte's character, never inside it.
+  std::size_t cut = 57;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
 }
 
 // x is a whole multiple of m (> 0). Integers exactly; otherwise within 1e-9 of a whole number of m,

@@ -11,7 +11,7 @@
 namespace aerobreak {
 
 // A cluster library: one HDF5 file holding many named clusters, the store from which impact cases
-// take their clusters (DESIGN.md "Clusters", "Sweeps, storage, service": bulk arrays go to HDF5).
+// take their clusters (docs/ARCHITECTURE.md, "The engine": bulk arrays go to HDF5).
 //
 // Layout (format version 1.0):
 //   /aerobreak                  attributes format = "aerobreak cluster library",

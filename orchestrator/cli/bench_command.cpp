@@ -32,6 +32,9 @@ struct BenchOptions {
   double critical_rolling = 0.01;
   double dissipative_time = 0.05;
   bool wall_adhesion = true;
+  bool rolling = true;
+  bool twisting = true;
+  double time_step = 0.0;  // 0: automatic
   JkrSeparation separation = JkrSeparation::displacement;
   std::uint64_t seed = 1;
   int wavefront_depth = SimulationSettings{}.wavefront_depth;
@@ -43,13 +46,13 @@ ContactModelSpec full_model(const BenchOptions& o) {
   ContactModelSpec spec;
   spec.normal = NormalLaw::jkr;
   spec.separation = o.separation;
-  spec.damping = DampingLaw::viscoelastic;
   spec.dissipative_time = o.dissipative_time;
   spec.tangential = true;
   spec.friction = o.friction;
-  spec.rolling = true;
+  spec.damping = o.dissipative_time > 0.0 ? DampingLaw::viscoelastic : DampingLaw::none;
+  spec.rolling = o.rolling;
   spec.critical_rolling = o.critical_rolling;
-  spec.twisting = true;
+  spec.twisting = o.twisting;
   return spec;
 }
 
@@ -62,7 +65,7 @@ void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
       {"primaries", n},          {"time_step", sim.time_step()},         {"speed", o.speed},
       {"gamma_over_kn", o.gamma_over_kn}, {"poisson_ratio", o.poisson},  {"friction", o.friction},
       {"critical_rolling", o.critical_rolling}, {"dissipative_time", o.dissipative_time},
-      {"wall_adhesion", o.wall_adhesion}, {"separation", o.separation == JkrSeparation::force ? "force" : "displacement"},       {"steps", o.steps},      {"seed", o.seed}};
+      {"wall_adhesion", o.wall_adhesion}, {"rolling", o.rolling}, {"twisting", o.twisting}, {"separation", o.separation == JkrSeparation::force ? "force" : "displacement"},       {"steps", o.steps},      {"seed", o.seed}};
   std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
 }
 
@@ -84,6 +87,7 @@ void run_bench(const BenchOptions& o) {
     SimulationSettings settings;
     settings.initial_bond_gap = 1e-6;
     settings.speed_scale = o.speed;
+    settings.time_step = o.time_step;
     settings.wavefront_depth = o.wavefront_depth;
     settings.wavefront_min_particles = o.wavefront_min_particles;
     Simulation sim(std::move(placed), {material}, {wall}, full_model(o), settings);
@@ -119,6 +123,10 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--xi-crit", options->critical_rolling, "Critical rolling displacement, d")->check(CLI::PositiveNumber)->capture_default_str();
   bench->add_option("--damping", options->dissipative_time, "Visco-elastic dissipative time A, tau")->check(CLI::NonNegativeNumber)->capture_default_str();
   bench->add_flag("!--no-wall-adhesion", options->wall_adhesion, "Wall without adhesion (Hertz)");
+  bench->add_flag("!--no-rolling", options->rolling, "No rolling resistance");
+  bench->add_flag("!--no-twisting", options->twisting, "No twisting resistance");
+  bench->add_option("--time-step", options->time_step, "Fixed time step, tau (default: automatic)")
+      ->check(CLI::PositiveNumber);
   bench->add_option("--separation", options->separation,
                     "Where JKR contacts let go: displacement (at -delta_c, eq 3) or force (at F = -F_c, as LAMMPS)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, JkrSeparation>{

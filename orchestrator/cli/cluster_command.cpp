@@ -241,7 +241,7 @@ RelaxationResult relax_generated(const Cluster& cluster, const GenerateOptions& 
   return relax_cluster(particles_from_cluster(cluster, material.density), {material}, ContactModelSpec{});
 }
 
-// DESIGN.md "Clusters": a cluster handed to an impact must be at mechanical equilibrium and intact.
+// docs/MODEL.md 11.1: a cluster handed to an impact must be at mechanical equilibrium and intact.
 void require_intact(const RelaxationResult& relaxation, const std::string& name, std::uint64_t seed) {
   const std::string which = "cluster " + name + " (seed " + std::to_string(seed) + ")";
   if (!relaxation.converged)

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "orchestrator/cli/text_table.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -21,23 +23,6 @@ std::string number(const nlohmann::ordered_json& value) {
 std::string with_interval(const nlohmann::ordered_json& critical) {
   const auto& ci = critical.at("ci95");
   return number(critical.at("estimate")) + " [" + number(ci[0]) + ", " + number(ci[1]) + "]";
-}
-
-std::string aligned(const Rows& rows) {
-  std::vector<std::size_t> widths;
-  for (const auto& row : rows) {
-    widths.resize(std::max(widths.size(), row.size()), 0);
-    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
-  }
-  std::string text;
-  for (const auto& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      text += row[c];
-      if (c + 1 < row.size()) text += std::string(widths[c] - row[c].size() + 2, ' ');
-    }
-    text += '\n';
-  }
-  return text;
 }
 
 std::string fit_state(const nlohmann::ordered_json& fit) {
@@ -72,7 +57,7 @@ std::string format_critical_table(const nlohmann::ordered_json& summary, const s
     rows.push_back(row);
   }
   if (rows.empty()) return std::string("(no ") + (dose == "impact_speed" ? "speed" : "energy") + " fits)\n";
-  return aligned(rows);
+  return aligned_columns(rows);
 }
 
 std::string format_fit_list(const nlohmann::ordered_json& summary) {
@@ -85,7 +70,7 @@ std::string format_fit_list(const nlohmann::ordered_json& summary) {
                   number(exponent.at("ci95")[0]) + ", " + number(exponent.at("ci95")[1]) + "]";
     rows.push_back({fit.at("name"), fit.at("status"), number(fit.at("cases")), detail});
   }
-  std::string text = aligned(rows);
+  std::string text = aligned_columns(rows);
   const auto& fragments = summary.at("fragment_sizes");
   if (!fragments.empty())
     text += "fragment-size fits (power law and lognormal) at " + std::to_string(fragments.size()) + " grid point(s): " +

@@ -8,6 +8,7 @@
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
 #include "orchestrator/cli/cluster_command.hpp"
+#include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/run_command.hpp"
 #include "orchestrator/cli/serve_command.hpp"
 #include "orchestrator/cli/study_client_command.hpp"
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   study->require_subcommand(1);
   aerobreak::add_study_client_subcommands(*study, exit_code);
   aerobreak::add_study_expand_subcommand(*study);
+  aerobreak::add_export_command(app, exit_code);
   aerobreak::add_impact_command(app, exit_code);
   aerobreak::add_cluster_command(app);
   aerobreak::add_bench_command(app);

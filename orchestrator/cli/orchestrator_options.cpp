@@ -91,13 +91,18 @@ std::function<void(const std::string&)> line_log(const std::filesystem::path& fi
     if (!*out) throw std::runtime_error("cannot write the log " + file.string());
   }
   auto mutex = std::make_shared<std::mutex>();
+  // The access log calls this once per request: the line is put together first and written in one
+  // piece (std::cerr is unbuffered: each << would be a system call of its own).
   return [out, mutex](const std::string& line) {
     const std::time_t now = std::time(nullptr);
+    std::tm local{};
     char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S ", ::localtime_r(&now, &local));
+    const std::string text = stamp + line + "\n";
     std::lock_guard lock(*mutex);
     std::ostream& stream = out->is_open() ? static_cast<std::ostream&>(*out) : std::cerr;
-    stream << stamp << " " << line << std::endl;
+    stream.write(text.data(), static_cast<std::streamsize>(text.size()));
+    stream.flush();
   };
 }
 

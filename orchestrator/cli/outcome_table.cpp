@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "orchestrator/cli/text_table.hpp"
+
 namespace aerobreak {
 namespace {
 
@@ -68,18 +70,7 @@ std::string format_outcome_table(const nlohmann::ordered_json& table) {
     row.push_back(flagged(point));
     rows.push_back(row);
   }
-  std::vector<std::size_t> widths(header.size(), 0);
-  for (const auto& row : rows)
-    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
-  std::string text;
-  for (const auto& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      text += row[c];
-      if (c + 1 < row.size()) text += std::string(widths[c] - row[c].size() + 2, ' ');
-    }
-    text += '\n';
-  }
-  return text;
+  return aligned_columns(rows);
 }
 
 }  // namespace aerobreak

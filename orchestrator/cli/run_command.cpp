@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
@@ -103,6 +104,19 @@ void print_failures(Store& store, std::int64_t study_id) {
               << record.error.value_or("(no error text)") << "\n";
 }
 
+// The study's lookup tables for system codes (docs/EXPORT.md), next to the store.
+void print_tables(Store& store, std::int64_t study_id) {
+  auto directory = store.file();
+  directory.replace_extension(".tables");
+  try {
+    const auto files = write_default_tables(store, study_id, directory);
+    std::cout << "\nLookup tables for system codes (docs/EXPORT.md) in " << directory.string() << "/:\n";
+    for (const auto& file : files) std::cout << "  " << file.filename().string() << "\n";
+  } catch (const std::exception& error) {
+    std::cout << "\nNo lookup tables: " << error.what() << "\n";
+  }
+}
+
 // The critical speeds of the study's fits (computed and stored now, so that the service serves them
 // from the store afterwards).
 void print_critical_speeds(Store& store, std::int64_t study_id) {
@@ -132,16 +146,23 @@ int run(RunOptions options) {
 
   Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
-  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log(data_directory / "orchestrator.log")));
-  const auto receipt = store.submit_study(make_submission(study));
+  const auto log = line_log(data_directory / "orchestrator.log");
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
+  StudySubmission submission = make_submission(study);
+  DataFileChecker checker;
+  recompute_lost_data_files(submission, store, checker);
+  const auto receipt = store.submit_study(submission);
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.port = options.port;
+  service_options.access_log = log;
   const auto service = start_service(store, scheduler, service_options);
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
+  const std::string recomputed =
+      receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "";
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done), store " << store.file().string() << "\n"
+            << " already done" << recomputed << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
             << " in a browser (API: " << study_url << ")\n";
@@ -172,6 +193,7 @@ int run(RunOptions options) {
     std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
+  print_tables(store, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();

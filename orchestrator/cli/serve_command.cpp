@@ -2,6 +2,8 @@
 
 #include <signal.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -27,6 +29,8 @@ struct ServeOptions {
   std::string port_file;
   std::size_t max_cases = 10000;
   std::size_t max_primaries = 100000;
+  std::size_t max_connections = ConnectionLimits{}.max_connections;
+  bool quiet = false;
 };
 
 std::string read_token(const std::string& path) {
@@ -41,26 +45,38 @@ std::string read_token(const std::string& path) {
 // Written whole and renamed, so that a script waiting for the file never reads half a number.
 void write_port_file(const std::string& path, int port) {
   const std::string partial = path + ".partial";
-  std::ofstream(partial) << port << "\n";
-  std::filesystem::rename(partial, path);
+  std::ofstream out(partial);
+  out << port << "\n";
+  out.close();
+  std::error_code error;
+  if (out) std::filesystem::rename(partial, path, error);
+  if (!out || error) {
+    std::filesystem::remove(partial, error);
+    throw std::runtime_error("cannot write the port file " + path + " (" +
+                             (out ? error.message() : std::string(std::strerror(errno))) + "): --port-file must name a "
+                             "file in a folder this user can write");
+  }
 }
 
 int serve(const ServeOptions& options) {
   ShutdownSignals signals;
   Store store(options.orchestrator.store);
-  Scheduler scheduler(store, options.orchestrator.scheduler_options(line_log({})));
+  const auto log = line_log({});
+  Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.host = options.host;
   service_options.port = options.port;
+  service_options.connections.max_connections = options.max_connections;
+  if (!options.quiet) service_options.access_log = log;
   if (!options.token_file.empty()) service_options.token = read_token(options.token_file);
   service_options.study_limits.max_cases = options.max_cases;
   service_options.study_limits.max_primaries = options.max_primaries;
   Service service(store, &scheduler, service_options);
   service.start();
+  if (!options.port_file.empty()) write_port_file(options.port_file, service.port());
   scheduler.start();
   std::cerr << "aerobreak serve: " << service.url() << "/  (store " << store.file().string() << ", schema version "
             << store.schema_version() << "; workers: " << scheduler.status().launcher_command << ")" << std::endl;
-  if (!options.port_file.empty()) write_port_file(options.port_file, service.port());
   const int received = signals.wait();
   std::cerr << "aerobreak serve: " << (received == SIGINT ? "SIGINT" : "SIGTERM")
             << ": stopping; running cases go back to the queue" << std::endl;
@@ -87,6 +103,11 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--max-primaries", options->max_primaries, "Largest cluster a client may ask for")
       ->capture_default_str();
+  command->add_option("--max-connections", options->max_connections,
+                      "Connections served at once; beyond, a connection is answered 503 at once")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  command->add_flag("--quiet", options->quiet, "No access log (one line per request on stderr)");
   command->callback([options, &exit_code] {
     try {
       exit_code = serve(*options);

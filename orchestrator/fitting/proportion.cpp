@@ -17,7 +17,12 @@ std::optional<ProportionEstimate> wilson_interval(std::size_t successes, std::si
   const double denominator = 1.0 + z2 / n;
   const double centre = (p + z2 / (2.0 * n)) / denominator;
   const double half_width = z * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n)) / denominator;
-  return ProportionEstimate{p, std::max(0.0, centre - half_width), std::min(1.0, centre + half_width)};
+  // For k = 0 the lower bound is exactly 0 (and for k = n the upper bound exactly 1): centre and
+  // half-width are then equal in exact arithmetic, and their difference in doubles is round-off
+  // (5.55e-17 for k = 0, n = 20).
+  const double lower = successes == 0 ? 0.0 : std::max(0.0, centre - half_width);
+  const double upper = successes == trials ? 1.0 : std::min(1.0, centre + half_width);
+  return ProportionEstimate{p, lower, upper};
 }
 
 std::optional<MeanWithError> mean_estimate(std::span<const double> values) {

@@ -1,6 +1,7 @@
 #include "orchestrator/scheduler/scheduler.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "orchestrator/worker/worker_protocol.hpp"
 
@@ -21,10 +22,21 @@ std::string text_or(const nlohmann::json& message, const char* key, const std::s
   return found != message.end() && found->is_string() ? found->get<std::string>() : fallback;
 }
 
+// "still running 47.3 s after its start (wall-time limit 10 s); its worker job was killed".
+std::string overdue_text(double seconds, double limit) {
+  char text[160];
+  std::snprintf(text, sizeof text, "still running %.1f s after its start (wall-time limit %.6g s); its worker job was killed",
+                seconds, limit);
+  return text;
+}
+
 }  // namespace
 
 Scheduler::Scheduler(Store& store, SchedulerOptions options)
-    : store_(store), options_(std::move(options)), searches_(store, options_.log) {
+    : store_(store),
+      options_(std::move(options)),
+      searches_(store, options_.log),
+      storage_(options_.max_storage_retry_delay) {
   status_.launcher_command = join_command(worker_job_command(options_.launcher));
 }
 
@@ -61,48 +73,91 @@ void Scheduler::note(const std::string& line) {
   if (options_.log) options_.log(line);
 }
 
+// A round the store refuses for a storage fault is not lost: it is decided again, from the same
+// stored results, once storage works.
 void Scheduler::advance_searches() {
-  if (!searches_due_) return;
-  searches_due_ = false;
+  if (!searches_due_ || storage_.holding()) return;
   try {
     searches_.advance();
+  } catch (const SqliteError& error) {
+    if (error.storage_fault()) {
+      storage_.note(error.what());
+      return;
+    }
+    note(std::string("adaptive search: ") + error.what());
   } catch (const std::exception& error) {
     note(std::string("adaptive search: ") + error.what());
   }
+  searches_due_ = false;
 }
 
 void Scheduler::run() {
   while (!stopping_) {
-    advance_searches();
-    if (job_) {
-      // Wait for one message at most 50 ms, then take the ones already there without waiting:
-      // each may free a rank, and the freed rank gets its next case right after.
-      auto message = job_->next_message(std::chrono::milliseconds(50));
-      while (message && !stopping_) {
-        handle(*message);
-        message = job_->next_message(std::chrono::milliseconds(0));
-      }
-      if (!stopping_) {
-        feed_job();
-        check_hard_limits();
-        stop_idle_job();
-        reap_job();
-      }
-    } else if (Clock::now() >= next_launch_ && store_.claimable_cases() > 0) {
-      launch_job();
-    } else {
-      std::unique_lock lock(wake_mutex_);
-      wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return woken_ || stopping_.load(); });
-      woken_ = false;
-      searches_due_ = true;
+    try {
+      step();
+    } catch (const SqliteError& error) {
+      // A read, claim or launch the store refused: nothing was changed; new work waits.
+      if (!error.storage_fault()) throw;
+      storage_.note(error.what());
     }
+    publish_storage_status();
   }
+  end_job_on_stop();
+}
+
+void Scheduler::step() {
+  const bool writes_waiting = storage_.status() && storage_.status()->waiting_writes > 0;
+  if (storage_.retry_when_due() && writes_waiting) storage_.clear();
+  advance_searches();
+  if (job_) {
+    // Wait for one message at most 50 ms, then take the ones already there without waiting:
+    // each may free a rank, and the freed rank gets its next case right after.
+    auto message = job_->next_message(std::chrono::milliseconds(50));
+    while (message && !stopping_) {
+      handle(*message);
+      message = job_->next_message(std::chrono::milliseconds(0));
+    }
+    if (!stopping_) {
+      feed_job();
+      check_hard_limits();
+      stop_idle_job();
+      reap_job();
+    }
+  } else if (!storage_.holding() && Clock::now() >= next_launch_ && store_.claimable_cases() > 0) {
+    launch_job();
+  } else {
+    std::unique_lock lock(wake_mutex_);
+    wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return woken_ || stopping_.load(); });
+    woken_ = false;
+    searches_due_ = true;
+  }
+}
+
+void Scheduler::end_job_on_stop() {
+  const bool written = storage_.retry_now();
   if (job_) {
     job_->kill();
-    store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
-    store_.end_job(status_.job_id, *job_->exit_status(), "killed: the orchestrator stopped");
+    try {
+      store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
+      store_.end_job(status_.job_id, *job_->exit_status(), "killed: the orchestrator stopped");
+    } catch (const SqliteError& error) {
+      if (!error.storage_fault()) throw;
+      note(std::string("could not record the end of the worker job: ") + error.what());
+    }
     job_.reset();
   }
+  if (!written)
+    note("stopped with store writes the store would not take; the cases they concern are still running in the "
+         "store, and the next start queues them again without a failure");
+}
+
+void Scheduler::publish_storage_status() {
+  const auto fault = storage_.status();
+  if (fault && !status().storage_fault)
+    note("storage fails (" + fault->error + "): no case is handed out until it works again; none is failed for it");
+  if (!fault && status().storage_fault) note("storage works again; the store writes held meanwhile are committed");
+  std::lock_guard lock(status_mutex_);
+  status_.storage_fault = fault;
 }
 
 void Scheduler::launch_job() {
@@ -112,7 +167,7 @@ void Scheduler::launch_job() {
   try {
     job_ = std::make_unique<WorkerJob>(command, log_file);
   } catch (const std::exception& error) {
-    store_.end_job(job_id, -1, error.what());
+    storage_.write([this, job_id, text = std::string(error.what())] { store_.end_job(job_id, -1, text); });
     std::lock_guard lock(status_mutex_);
     status_.last_error = error.what();
     next_launch_ = Clock::now() + options_.max_launch_delay;
@@ -137,7 +192,7 @@ void Scheduler::launch_job() {
 
 void Scheduler::feed_job() {
   const auto status = this->status();
-  if (!status.job_ready || job_told_to_stop_) return;
+  if (!status.job_ready || job_told_to_stop_ || storage_.holding()) return;
   while (in_flight_.size() < static_cast<std::size_t>(status.ranks)) {
     auto assignment = store_.claim_next_case(status.job_id);
     if (!assignment) break;
@@ -158,8 +213,8 @@ void Scheduler::handle(const nlohmann::json& message) {
   const std::string type = text_or(message, "type", "");
   if (type == "ready") {
     const int ranks = message.value("ranks", 0);
-    store_.job_started(status().job_id, message.value("pid", std::int64_t{0}),
-                       message.value("hosts", nlohmann::json::array()));
+    storage_.write([this, job_id = status().job_id, pid = message.value("pid", std::int64_t{0}),
+                    hosts = message.value("hosts", nlohmann::json::array())] { store_.job_started(job_id, pid, hosts); });
     std::lock_guard lock(status_mutex_);
     status_.job_ready = ranks > 0;
     status_.ranks = ranks;
@@ -179,29 +234,26 @@ void Scheduler::handle(const nlohmann::json& message) {
     return;
   }
   if (type == "started") {
-    store_.record_worker(case_id, attempt,
-                         text_or(message, "host", "?") + ":" + std::to_string(message.value("rank", -1)));
+    storage_.write([this, case_id, attempt,
+                    worker = text_or(message, "host", "?") + ":" + std::to_string(message.value("rank", -1))] {
+      store_.record_worker(case_id, attempt, worker);
+    });
     return;
   }
   searches_due_ = true;
   if (type == "result") {
-    try {
-      const nlohmann::ordered_json result = message.at("result");
-      if (store_.commit_result(case_id, attempt, result, text_or(message, "data_file", ""),
-                               message.value("seconds", 0.0))) {
-        std::lock_guard lock(status_mutex_);
-        ++status_.results_committed;
-      }
-    } catch (const std::exception& error) {
-      store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
-    }
+    if (storage_.write([this, case_id, attempt, message] { commit_result(case_id, attempt, message); }))
+      storage_.clear();
+  } else if (type == "failed" && text_or(message, "kind", "") == "storage") {
+    // The worker could not write the case's data file: not the case's fault.
+    const std::string error = text_or(message, "error", "(no error text)");
+    storage_.write([this, case_id, attempt, error] {
+      store_.requeue_attempt(case_id, attempt, "its data file could not be written: " + error);
+    });
+    storage_.note(error);
   } else if (type == "failed") {
     const auto end = attempt_end_of(text_or(message, "kind", "error")).value_or(AttemptEnd::error);
-    const std::string error = text_or(message, "error", "(no error text)");
-    const auto status = store_.record_failure(case_id, attempt, end, error);
-    note("case " + std::to_string(case_id) + " attempt " + std::to_string(attempt) + " failed (" +
-         std::string(to_string(end)) + "): " + error +
-         (status == CaseStatus::failed ? " - marked failed" : " - queued again"));
+    record_failure(case_id, attempt, end, text_or(message, "error", "(no error text)"));
   } else {
     note("ignored a worker message of unknown type '" + type + "'");
     return;
@@ -209,6 +261,31 @@ void Scheduler::handle(const nlohmann::json& message) {
   in_flight_.erase(flight);
   std::lock_guard lock(status_mutex_);
   status_.in_flight = in_flight_.size();
+}
+
+void Scheduler::commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message) {
+  try {
+    if (store_.commit_result(case_id, attempt, message.at("result"), text_or(message, "data_file", ""),
+                             message.value("seconds", 0.0),
+                             {message.value("data_file_size", std::int64_t{-1}), text_or(message, "data_file_sha256", "")})) {
+      std::lock_guard lock(status_mutex_);
+      ++status_.results_committed;
+    }
+  } catch (const SqliteError& error) {
+    if (error.storage_fault()) throw;
+    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+  } catch (const std::exception& error) {
+    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+  }
+}
+
+void Scheduler::record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error) {
+  storage_.write([this, case_id, attempt, end, error] {
+    const auto status = store_.record_failure(case_id, attempt, end, error);
+    note("case " + std::to_string(case_id) + " attempt " + std::to_string(attempt) + " failed (" +
+         std::string(to_string(end)) + "): " + error +
+         (status == CaseStatus::failed ? " - marked failed" : " - queued again"));
+  });
 }
 
 void Scheduler::check_hard_limits() {
@@ -220,7 +297,7 @@ void Scheduler::check_hard_limits() {
                        options_.hard_limit_margin;
     if (now - flight.sent > limit) {
       note("case " + std::to_string(case_id) + " ignored its wall-time limit; killing its worker job");
-      overdue_case_ = case_id;
+      overdue_case_ = OverdueCase{case_id, std::chrono::duration<double>(now - flight.sent).count()};
       job_->kill();
       return;
     }
@@ -253,21 +330,21 @@ void Scheduler::reap_job() {
   std::string note_text = job_told_to_stop_ && code == 0 ? "stopped when idle"
                                                          : "ended with exit status " + std::to_string(code);
   if (overdue_case_) {
-    const auto& flight = in_flight_.at(*overdue_case_);
-    store_.record_failure(*overdue_case_, flight.attempt, AttemptEnd::wall_time,
-                          "still running " + std::to_string(flight.wall_time_limit * options_.hard_limit_factor) +
-                              " s after its start (wall-time limit " + std::to_string(flight.wall_time_limit) +
-                              " s); its worker job was killed");
-    in_flight_.erase(*overdue_case_);
-    store_.requeue_job(job_id, "worker job killed for another case's wall time", false);
-    note_text = "killed: case " + std::to_string(*overdue_case_) + " overran its wall-time limit";
+    const auto& flight = in_flight_.at(overdue_case_->case_id);
+    record_failure(overdue_case_->case_id, flight.attempt, AttemptEnd::wall_time,
+                   overdue_text(overdue_case_->seconds, flight.wall_time_limit));
+    in_flight_.erase(overdue_case_->case_id);
+    storage_.write([this, job_id] { store_.requeue_job(job_id, "worker job killed for another case's wall time", false); });
+    note_text = "killed: case " + std::to_string(overdue_case_->case_id) + " overran its wall-time limit";
     overdue_case_.reset();
   } else if (!in_flight_.empty()) {
-    const auto requeued = store_.requeue_job(job_id, "the worker job " + note_text + " while the case ran");
-    note("worker job " + std::to_string(job_id) + " " + note_text + " with " + std::to_string(in_flight_.size()) +
-         " case(s) in flight; " + std::to_string(requeued) + " queued again");
+    storage_.write([this, job_id, note_text, in_flight = in_flight_.size()] {
+      const auto requeued = store_.requeue_job(job_id, "the worker job " + note_text + " while the case ran");
+      note("worker job " + std::to_string(job_id) + " " + note_text + " with " + std::to_string(in_flight) +
+           " case(s) in flight; " + std::to_string(requeued) + " queued again");
+    });
   }
-  store_.end_job(job_id, code, note_text);
+  storage_.write([this, job_id, code, note_text] { store_.end_job(job_id, code, note_text); });
   job_.reset();
   in_flight_.clear();
   searches_due_ = true;

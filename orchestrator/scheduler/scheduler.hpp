@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "orchestrator/scheduler/launcher.hpp"
+#include "orchestrator/scheduler/storage_faults.hpp"
 #include "orchestrator/scheduler/worker_job.hpp"
 #include "orchestrator/search/search_driver.hpp"
 #include "orchestrator/store/store.hpp"
@@ -36,6 +37,8 @@ struct SchedulerOptions {
   // are then retried with a growing delay, up to max_launch_delay.
   int launch_failures_reported = 3;
   std::chrono::milliseconds max_launch_delay{std::chrono::seconds(60)};
+  // While storage fails (storage_faults.hpp), new work waits a delay that doubles up to this.
+  std::chrono::milliseconds max_storage_retry_delay{std::chrono::seconds(16)};
   // Where the scheduler's one-line notes go (job started, case failed, ...).
   std::function<void(const std::string&)> log;
 };
@@ -52,12 +55,15 @@ struct SchedulerStatus {
   std::size_t results_committed = 0;
   int consecutive_launch_failures = 0;
   std::string last_error;
+  std::optional<StorageFaultStatus> storage_fault;  // the store or data directory cannot be written
 };
 
 // Hands the store's queued cases to worker jobs one case per free rank (dynamic: a rank asks for
 // nothing, it gets the next case the moment it reports its last one), commits every result the
 // moment it arrives, and turns every way a case or a job can end into a store transition
 // (store.hpp). All of it on one thread, the store's one writer besides submissions and cancels.
+// Storage that fails (disk full, read-only, I/O errors) fails no case and stops nothing: the
+// scheduler holds its writes and new work until storage works again (storage_faults.hpp).
 // Between messages it decides the adaptive searches' next rounds (search_driver.hpp) as their
 // last rounds finish, so that their cases join the queue the moment they can be chosen.
 class Scheduler {
@@ -82,11 +88,21 @@ class Scheduler {
     double wall_time_limit = 0.0;
     std::chrono::steady_clock::time_point sent;
   };
+  // A case the scheduler killed its job for, and how long it had run then.
+  struct OverdueCase {
+    std::int64_t case_id = 0;
+    double seconds = 0.0;
+  };
 
   void run();
+  void step();
+  void end_job_on_stop();
   void launch_job();
   void feed_job();
   void handle(const nlohmann::json& message);
+  void commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message);
+  void record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error);
+  void publish_storage_status();
   void check_hard_limits();
   void stop_idle_job();
   void reap_job();
@@ -106,7 +122,8 @@ class Scheduler {
   bool searches_due_ = true;  // a case of a search may have finished: look for rounds to decide
   std::unique_ptr<WorkerJob> job_;
   std::map<std::int64_t, InFlight> in_flight_;
-  std::optional<std::int64_t> overdue_case_;
+  std::optional<OverdueCase> overdue_case_;
+  StorageFaults storage_;
   bool job_told_to_stop_ = false;
   std::chrono::steady_clock::time_point job_idle_since_;
   std::chrono::steady_clock::time_point next_launch_;

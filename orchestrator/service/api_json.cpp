@@ -85,7 +85,7 @@ nlohmann::ordered_json to_json(const ResultRecord& record) {
           {"committed_at", record.committed_at}};
 }
 
-nlohmann::ordered_json to_json(const CaseDetail& detail) {
+nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check) {
   nlohmann::ordered_json json = to_json(detail.record);
   json["document"] = detail.document;
   auto& attempts = json["attempt_history"] = nlohmann::ordered_json::array();
@@ -108,6 +108,18 @@ nlohmann::ordered_json to_json(const CaseDetail& detail) {
                          {"radius_of_gyration", optional_json(fragment.radius_of_gyration)}});
   }
   json["data_file"] = optional_json(detail.data_file);
+  json["data_file_check"] = nullptr;
+  if (data_file_check) {
+    const auto& digest = detail.data_file_digest;
+    const auto text_or_null = [](const std::string& text) {
+      return text.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(text);
+    };
+    json["data_file_check"] = {
+        {"state", std::string(to_string(data_file_check->state))},
+        {"problem", text_or_null(data_file_check->problem)},
+        {"size", digest.size >= 0 ? nlohmann::ordered_json(digest.size) : nlohmann::ordered_json(nullptr)},
+        {"sha256", text_or_null(digest.sha256)}};
+  }
   json["result"] = detail.result ? *detail.result : nlohmann::ordered_json(nullptr);
   return json;
 }
@@ -129,7 +141,8 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
           {"cases", receipt.cases},
           {"new_cases", receipt.new_cases},
           {"already_done", receipt.already_done},
-          {"requeued", receipt.requeued}};
+          {"requeued", receipt.requeued},
+          {"recomputed", receipt.recomputed}};
 }
 
 nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <nlohmann/json.hpp>
 
+#include "orchestrator/store/data_file_check.hpp"
 #include "orchestrator/store/store_types.hpp"
 
 namespace aerobreak {
@@ -11,7 +12,8 @@ nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document);
 nlohmann::ordered_json to_json(const StudyProgress& progress);
 nlohmann::ordered_json to_json(const CaseRecord& record);
 nlohmann::ordered_json to_json(const ResultRecord& record);
-nlohmann::ordered_json to_json(const CaseDetail& detail);
+// With the check of its data file against the recorded size and SHA-256 (null without a file).
+nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check);
 nlohmann::ordered_json to_json(const JobRecord& job);
 nlohmann::ordered_json to_json(const SubmissionReceipt& receipt);
 // One grid point: its axis values, cases, finished and failed counts, and per outcome the count and

@@ -18,7 +18,8 @@ bool lies_under(const std::filesystem::path& file, const std::filesystem::path& 
 }
 
 // The store's file for the case, checked; RequestError 404 naming what is missing.
-std::filesystem::path case_file(Store& store, std::int64_t case_id, const std::filesystem::path& data_directory) {
+std::filesystem::path case_file(Store& store, std::int64_t case_id, const std::filesystem::path& data_directory,
+                                DataFileChecker& checker) {
   const std::string which = "case " + std::to_string(case_id);
   if (data_directory.empty()) throw RequestError{404, "this service serves no case files"};
   const auto detail = store.case_detail(case_id);
@@ -29,14 +30,18 @@ std::filesystem::path case_file(Store& store, std::int64_t case_id, const std::f
   const auto directory = std::filesystem::weakly_canonical(data_directory, error);
   if (error || !lies_under(file, directory) || !std::filesystem::is_regular_file(file))
     throw RequestError{404, which + "'s HDF5 file is not in the service's data folder (moved or deleted?)"};
+  // Not the file its worker wrote: refused rather than served as if it were.
+  if (const auto check = checker.check(*detail->data_file, detail->data_file_digest); check.state == DataFileState::damaged)
+    throw RequestError{409, which + "'s HDF5 file is damaged (" + check.problem +
+                                "): submit its study again to compute it again"};
   return file;
 }
 
 }  // namespace
 
 void send_case_file(httplib::Response& response, Store& store, std::int64_t case_id,
-                    const std::filesystem::path& data_directory) {
-  const auto file = case_file(store, case_id, data_directory);
+                    const std::filesystem::path& data_directory, DataFileChecker& checker) {
+  const auto file = case_file(store, case_id, data_directory, checker);
   auto in = std::make_shared<std::ifstream>(file, std::ios::binary);
   if (!*in) throw RequestError{404, "case " + std::to_string(case_id) + "'s HDF5 file cannot be read"};
   const auto size = static_cast<std::size_t>(std::filesystem::file_size(file));

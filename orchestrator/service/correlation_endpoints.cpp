@@ -1,10 +1,12 @@
 #include "orchestrator/service/correlation_endpoints.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/http_support.hpp"
+#include "orchestrator/study/sha256.hpp"
 
 namespace aerobreak {
 namespace {
@@ -31,15 +33,46 @@ std::optional<std::vector<std::string>> covariates_parameter(const httplib::Requ
   return names;
 }
 
-StoredCorrelations current(Store& store, CorrelationCache& cache, const httplib::Request& request) {
+struct CurrentSet {
+  StoredCorrelations set;
+  std::string request_key;
+};
+
+CurrentSet current(Store& store, CorrelationCache& cache, const httplib::Request& request) {
   const auto study = existing_study(store, path_id(request));
   try {
-    return cache.current(study, correlation_request(study, covariates_parameter(request)));
+    const CorrelationRequest asked = correlation_request(study, covariates_parameter(request));
+    return {cache.current(study, asked), request_key(asked)};
   } catch (const CorrelationRequestError& error) {
     // A study without results has no correlations yet: 404, as the dashboard expects of a part it
     // cannot show (docs/WEB.md); the message says why.
     throw RequestError{error.no_results ? 404 : 400, error.what()};
   }
+}
+
+// The tag of one document of a stored set: it changes whenever the set is fitted again (its result
+// set changed), and only then.
+std::string document_tag(const StoredCorrelations& set, const std::string& request_key, const std::string& name) {
+  char computed_at[32];
+  std::snprintf(computed_at, sizeof computed_at, "%.17g", set.computed_at);
+  const std::string identity = request_key + "\n" + set.result_set_hash + "\n" + computed_at + "\n" + name;
+  std::string tag(1, '"');
+  tag.append(sha256_hex(identity), 0, 32);
+  tag.push_back('"');
+  return tag;
+}
+
+// The document with its ETag, or 304 when the request's If-None-Match names it.
+void send_document(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+                   const std::string& document) {
+  response.set_header("ETag", etag);
+  response.set_header("Cache-Control", "no-cache");
+  if (names_current_tag(request, etag)) {
+    response.status = 304;
+    return;
+  }
+  response.status = 200;
+  response.set_content(document, "application/json");
 }
 
 std::string fit_list(const std::vector<std::string>& names) {
@@ -54,20 +87,18 @@ void register_correlation_endpoints(httplib::Server& server, Store& store) {
   const auto cache = std::make_shared<CorrelationCache>(store);
   server.Get(R"(/api/studies/(\d+)/correlations)",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
-               const auto set = current(store, *cache, request);
-               response.status = 200;
-               response.set_content(set.summary, "application/json");
+               const auto [set, key] = current(store, *cache, request);
+               send_document(request, response, document_tag(set, key, ""), set.summary);
              }));
   server.Get(R"(/api/studies/(\d+)/correlations/([^/]{1,200}))",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
-               const auto set = current(store, *cache, request);
+               const auto [set, key] = current(store, *cache, request);
                const std::string name = request.matches[2];
                const auto document = store.stored_fit(set.set_id, name);
                if (!document)
                  throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
                                              " (fits: " + fit_list(store.stored_fit_names(set.set_id)) + ")"};
-               response.status = 200;
-               response.set_content(*document, "application/json");
+               send_document(request, response, document_tag(set, key, name), *document);
              }));
 }
 

@@ -11,6 +11,7 @@
 #include "orchestrator/service/grid_filter.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/service/versioned_documents.hpp"
 
 namespace aerobreak {
 namespace {
@@ -66,7 +67,7 @@ nlohmann::ordered_json axes_json(const std::vector<GridPointStatistics>& cells) 
   return axes;
 }
 
-nlohmann::ordered_json grid_json(const StudyRecord& study, const std::vector<GridPointStatistics>& cells) {
+nlohmann::ordered_json grid_json(std::int64_t study, const std::vector<GridPointStatistics>& cells) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const auto& cell : cells) {
     auto row = grid_point_outcomes_json(cell.outcomes);
@@ -74,9 +75,11 @@ nlohmann::ordered_json grid_json(const StudyRecord& study, const std::vector<Gri
     row["restitution"] = moments_json(cell.restitution);
     row["fragment_count"] = moments_json(cell.fragment_count);
     row["largest_fragment_share"] = moments_json(cell.largest_fragment_share);
+    row["damage_ratio"] = moments_json(cell.damage_ratio);
+    row["energy_per_contact"] = moments_json(cell.energy_per_contact);
     rows.push_back(std::move(row));
   }
-  return {{"study", study.id}, {"confidence", 0.95}, {"axes", axes_json(cells)}, {"grid_points", rows}};
+  return {{"study", study}, {"confidence", 0.95}, {"axes", axes_json(cells)}, {"grid_points", rows}};
 }
 
 CaseFilter case_filter(const httplib::Request& request, Store& store, GridPointCache& grid, std::int64_t study_id) {
@@ -104,6 +107,9 @@ nlohmann::ordered_json case_row_json(const CaseRecord& record) {
   json["restitution"] = optional(record.restitution);
   json["retained_mass_fraction"] = optional(record.retained_mass_fraction);
   json["fragment_count"] = optional(record.fragment_count);
+  json["damage_ratio"] = optional(record.damage_ratio);
+  json["fractured_on_wall"] = optional(record.fractured_on_wall);
+  json["small_strain_exceeded"] = optional(record.small_strain_exceeded);
   return json;
 }
 
@@ -128,7 +134,8 @@ nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, c
 
 }  // namespace
 
-void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options) {
+void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options,
+                                  std::shared_ptr<DataFileChecker> checker) {
   auto grid = std::make_shared<GridPointCache>();
   server.Get("/api/progress", guarded([&store](const httplib::Request& request, httplib::Response& response) {
     PageRequest page;
@@ -143,9 +150,11 @@ void register_dashboard_endpoints(httplib::Server& server, Store& store, const S
     }
     send_json(response, 200, {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
   }));
-  server.Get(R"(/api/studies/(\d+)/grid)", guarded([&store](const httplib::Request& request, httplib::Response& response) {
-    const auto study = existing_study(store, path_id(request));
-    send_json(response, 200, grid_json(study, store.grid_statistics(study.id)));
+  // The grid statistics are one pass over the study's results: kept serialised until its versions move.
+  const auto grids = std::make_shared<VersionedDocuments>(
+      [&store](std::int64_t study) { return grid_json(study, store.grid_statistics(study)).dump(); });
+  server.Get(R"(/api/studies/(\d+)/grid)", guarded([&store, grids](const httplib::Request& request, httplib::Response& response) {
+    grids->serve(store, path_id(request), request, response);
   }));
   server.Get(R"(/api/studies/(\d+)/case-table)",
              guarded([&store, &options, grid](const httplib::Request& request, httplib::Response& response) {
@@ -164,8 +173,8 @@ void register_dashboard_endpoints(httplib::Server& server, Store& store, const S
                send_json(response, 200, fragment_sizes_json(store, *grid, study, AxisFilter(request)));
              }));
   server.Get(R"(/api/cases/(\d+)/data)",
-             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-               send_case_file(response, store, path_id(request), options.data_directory);
+             guarded([&store, &options, checker](const httplib::Request& request, httplib::Response& response) {
+               send_case_file(response, store, path_id(request), options.data_directory, *checker);
              }));
 }
 

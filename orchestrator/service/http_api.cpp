@@ -2,49 +2,48 @@
 
 #include <httplib.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "engine/core/version.hpp"
+#include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/correlation_endpoints.hpp"
 #include "orchestrator/service/dashboard_endpoints.hpp"
+#include "orchestrator/service/error_answers.hpp"
 #include "orchestrator/service/http_support.hpp"
+#include "orchestrator/service/json_body.hpp"
 #include "orchestrator/service/openapi_text.hpp"
+#include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
 #include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/summary_endpoints.hpp"
+#include "orchestrator/service/table_endpoints.hpp"
 #include "orchestrator/service/web_endpoints.hpp"
 
 namespace aerobreak {
 namespace {
 
-// Compares without an early exit, so that response times do not reveal how much of a guess was right.
-bool same_token(const std::string& given, const std::string& expected) {
-  unsigned char difference = given.size() == expected.size() ? 0 : 1;
-  for (std::size_t i = 0; i < given.size(); ++i)
-    difference |= static_cast<unsigned char>(given[i] ^ expected[i % std::max<std::size_t>(expected.size(), 1)]);
-  return difference == 0;
-}
-
 void submit_study(const httplib::Request& request, httplib::Response& response, Store& store, Scheduler* scheduler,
-                  const ServiceOptions& options) {
-  nlohmann::ordered_json document;
-  try {
-    document = nlohmann::ordered_json::parse(request.body);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw RequestError{400, "the body is not JSON", nlohmann::ordered_json::array({{{"pointer", ""},
-                                                                                  {"message", error.what()}}})};
-  }
+                  const ServiceOptions& options, DataFileChecker& checker) {
+  nlohmann::ordered_json document = parse_json_body(request.body);
   try {
     const Study study = parse_study(std::move(document), options.study_limits);
-    const auto receipt = store.submit_study(make_submission(study));
+    StudySubmission submission = make_submission(study);
+    recompute_lost_data_files(submission, store, checker);
+    const auto receipt = store.submit_study(submission);
     if (scheduler) scheduler->wake();
     response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
     send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));
   } catch (const StudyError& error) {
     throw RequestError{422, "the study is not valid", violations_json(error.violations())};
   }
+}
+
+nlohmann::ordered_json storage_fault_json(const std::optional<StorageFaultStatus>& fault) {
+  if (!fault) return nullptr;
+  return {{"error", fault->error}, {"since", fault->since}, {"waiting_writes", fault->waiting_writes}};
 }
 
 nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
@@ -70,44 +69,21 @@ nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
                        {"results_committed", status.results_committed},
                        {"consecutive_launch_failures", status.consecutive_launch_failures},
                        {"last_error", status.last_error.empty() ? nlohmann::ordered_json(nullptr)
-                                                                : nlohmann::ordered_json(status.last_error)}};
-  if (status.consecutive_launch_failures > 0) json["status"] = "degraded";
+                                                                : nlohmann::ordered_json(status.last_error)},
+                       {"storage_fault", storage_fault_json(status.storage_fault)}};
+  if (status.consecutive_launch_failures > 0 || status.storage_fault) json["status"] = "degraded";
   return json;
 }
 
 }  // namespace
 
 void register_http_api(httplib::Server& server, Store& store, Scheduler* scheduler, const ServiceOptions& options) {
-  const bool token_required = options.token.has_value();
-  server.set_pre_routing_handler([&options, token_required](const httplib::Request& request, httplib::Response& response) {
-    if (!token_required || request.method == "GET" || request.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
-    const std::string header = request.get_header_value("Authorization");
-    const std::string prefix = "Bearer ";
-    if (header.rfind(prefix, 0) == 0 && same_token(header.substr(prefix.size()), *options.token))
-      return httplib::Server::HandlerResponse::Unhandled;
-    response.set_header("WWW-Authenticate", "Bearer");
-    send_error(response, {401, "this endpoint needs 'Authorization: Bearer TOKEN'"});
-    return httplib::Server::HandlerResponse::Handled;
+  server.set_pre_routing_handler([&options](const httplib::Request& request, httplib::Response& response) {
+    return check_request(request, response, options);
   });
-  server.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
-    if (!response.body.empty()) return;
-    if (response.status == 413)
-      send_error(response, {413, "the request body is larger than the service accepts"});
-    else if (response.status == 404)
-      send_error(response, {404, "no endpoint " + request.method + " " + request.path + " (see /api/openapi.json)"});
-    else
-      send_error(response, {response.status, "the request could not be served"});
-  });
-  server.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr error) {
-    std::string message = "internal error";
-    try {
-      std::rethrow_exception(error);
-    } catch (const std::exception& e) {
-      message += std::string(": ") + e.what();
-    } catch (...) {
-    }
-    send_error(response, {500, message});
-  });
+  server.set_error_handler(answer_error);
+  server.set_exception_handler(answer_exception);
+  if (options.access_log) server.set_logger(access_logger(options.access_log));
 
   server.Get("/api/health", guarded([&store, scheduler](const httplib::Request&, httplib::Response& response) {
     send_json(response, 200, health(store, scheduler));
@@ -123,9 +99,10 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
     send_json(response, 200,
               {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
   }));
+  auto checker = std::make_shared<DataFileChecker>();
   server.Post("/api/studies",
-              guarded([&store, scheduler, &options](const httplib::Request& request, httplib::Response& response) {
-                submit_study(request, response, store, scheduler, options);
+              guarded([&store, scheduler, &options, checker](const httplib::Request& request, httplib::Response& response) {
+                submit_study(request, response, store, scheduler, options, *checker);
               }));
   server.Get(R"(/api/studies/(\d+))", guarded([&store](const httplib::Request& request, httplib::Response& response) {
     const auto study = existing_study(store, path_id(request));
@@ -160,6 +137,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
   register_summary_endpoints(server, store);
   register_correlation_endpoints(server, store);
   register_search_endpoints(server, store);
+  register_table_endpoints(server, store);
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {
                 const auto study = existing_study(store, path_id(request));
@@ -167,10 +145,12 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
                   throw RequestError{409, "study " + std::to_string(study.id) + " is already cancelled"};
                 send_json(response, 200, to_json(*store.progress(study.id)));
               }));
-  server.Get(R"(/api/cases/(\d+))", guarded([&store](const httplib::Request& request, httplib::Response& response) {
+  server.Get(R"(/api/cases/(\d+))", guarded([&store, checker](const httplib::Request& request, httplib::Response& response) {
     const auto detail = store.case_detail(path_id(request));
     if (!detail) throw RequestError{404, "no case " + std::string(request.matches[1])};
-    send_json(response, 200, to_json(*detail));
+    std::optional<DataFileCheck> check;
+    if (detail->data_file) check = checker->check(*detail->data_file, detail->data_file_digest);
+    send_json(response, 200, to_json(*detail, check));
   }));
   server.Get("/api/jobs", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
     const auto limit = unsigned_parameter(request, "limit", 20, options.max_page_size);
@@ -178,7 +158,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
     for (const auto& job : store.jobs(limit)) items.push_back(to_json(job));
     send_json(response, 200, {{"items", items}});
   }));
-  register_dashboard_endpoints(server, store, options);
+  register_dashboard_endpoints(server, store, options, checker);
   register_web_endpoints(server, options);
 }
 

@@ -6,7 +6,9 @@ namespace aerobreak {
 
 void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body) {
   response.status = status;
-  response.set_content(body.dump(), "application/json");
+  // Text a client sent (a path, a parameter, a key) can be invalid UTF-8, with which dump() would
+  // throw where nothing catches it: such bytes are written as U+FFFD instead.
+  response.set_content(body.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace), "application/json");
 }
 
 void send_error(httplib::Response& response, const RequestError& error) {
@@ -50,6 +52,22 @@ StudyRecord existing_study(Store& store, std::int64_t id) {
   auto study = store.study(id);
   if (!study) throw RequestError{404, "no study " + std::to_string(id)};
   return *study;
+}
+
+bool names_current_tag(const httplib::Request& request, const std::string& etag) {
+  const std::string header = request.get_header_value("If-None-Match");
+  std::size_t start = 0;
+  while (start < header.size()) {
+    std::size_t end = header.find(',', start);
+    if (end == std::string::npos) end = header.size();
+    std::string tag = header.substr(start, end - start);
+    tag.erase(0, tag.find_first_not_of(" \t"));
+    tag.erase(tag.find_last_not_of(" \t") + 1);
+    if (tag.rfind("W/", 0) == 0) tag.erase(0, 2);
+    if (tag == "*" || tag == etag) return true;
+    start = end + 1;
+  }
+  return false;
 }
 
 }  // namespace aerobreak

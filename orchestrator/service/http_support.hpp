@@ -38,6 +38,10 @@ std::int64_t path_id(const httplib::Request& request);
 // The study `id`; RequestError 404 when there is none.
 StudyRecord existing_study(Store& store, std::int64_t id);
 
+// Whether the request's If-None-Match (RFC 9110, 13.1.2: a list of tags or "*", compared weakly)
+// names `etag`: then the answer is 304 without a body.
+bool names_current_tag(const httplib::Request& request, const std::string& etag);
+
 // Runs a handler, turning RequestError into its JSON answer.
 template <typename Handler>
 httplib::Server::Handler guarded(Handler handler) {

@@ -3,9 +3,12 @@
 #include <httplib.h>
 #include <arpa/inet.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 
+#include "orchestrator/service/bounded_server.hpp"
 #include "orchestrator/service/http_api.hpp"
 
 namespace aerobreak {
@@ -27,22 +30,19 @@ void Service::start() {
   if (!is_loopback_host(options_.host) && !options_.token)
     throw std::runtime_error("refusing to listen on " + options_.host +
                              " without a bearer token: give --token-file (or listen on 127.0.0.1)");
-  server_ = std::make_unique<httplib::Server>();
-  const int threads = options_.threads;
-  server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
+  server_ = std::make_unique<BoundedServer>(options_.connections, options_.access_log);
   server_->set_payload_max_length(options_.max_body_bytes);
   // Small JSON answers: without TCP_NODELAY, Nagle's algorithm and delayed ACKs add ~40 ms to each.
   server_->set_tcp_nodelay(true);
-  // Slow or stalled clients must not hold a worker thread for long.
-  server_->set_read_timeout(5, 0);
-  server_->set_write_timeout(5, 0);
-  server_->set_keep_alive_timeout(5);
   register_http_api(*server_, store_, scheduler_, options_);
+  errno = 0;
   port_ = options_.port == 0 ? server_->bind_to_any_port(options_.host)
                              : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);
-  if (port_ <= 0)
-    throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
-                             " (address in use? another port: --port)");
+  if (port_ <= 0) {
+    const std::string reason = errno != 0 ? std::strerror(errno) : "the address is not available";
+    throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) + ": " + reason +
+                             " (another service on that port? choose another with --port)");
+  }
   listening_ended_ = false;
   thread_ = std::thread([this] {
     server_->listen_after_bind();

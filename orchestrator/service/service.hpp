@@ -2,12 +2,14 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
 
 #include "orchestrator/scheduler/scheduler.hpp"
+#include "orchestrator/service/connection_stream.hpp"
 #include "orchestrator/store/store.hpp"
 #include "orchestrator/study/study.hpp"
 
@@ -28,10 +30,10 @@ struct ServiceOptions {
   std::size_t max_body_bytes = 1 << 20;
   StudyLimits study_limits{10000, 100000, false};
   std::size_t max_page_size = 1000;
-  // cpp-httplib serves a keep-alive connection on one thread until it closes: with fewer threads
-  // than open connections the others wait their turn (16 wrk connections on 8 threads: p99 2-3x
-  // that on 32, docs/ORCHESTRATOR.md "Performance").
-  int threads = 32;
+  // What one connection may take: connections at once, timeouts, header size (docs/ORCHESTRATOR.md).
+  ConnectionLimits connections;
+  // Gets one line per request (client, method, target, status, milliseconds); null: no log.
+  std::function<void(const std::string&)> access_log;
   // The dashboard's folder (web_assets.hpp): served at `/` with the library files it names; empty:
   // the API only.
   std::filesystem::path web_directory;

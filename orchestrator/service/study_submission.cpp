@@ -44,4 +44,14 @@ StudySubmission make_submission(const Study& study) {
   return submission;
 }
 
+void recompute_lost_data_files(StudySubmission& submission, Store& store, DataFileChecker& checker) {
+  std::vector<std::string> hashes;
+  hashes.reserve(submission.cases.size());
+  for (const auto& study_case : submission.cases) hashes.push_back(study_case.hash);
+  for (const auto& file : store.data_files(hashes)) {
+    const auto state = checker.check(file.path, file.digest).state;
+    if (state == DataFileState::missing || state == DataFileState::damaged) submission.recompute.push_back(file.hash);
+  }
+}
+
 }  // namespace aerobreak

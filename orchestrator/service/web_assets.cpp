@@ -36,7 +36,10 @@ void add_page_files(const std::filesystem::path& web_directory, WebAssets& asset
     }
     const auto type = content_type(entry->path());
     if (!entry->is_regular_file() || entry->is_symlink() || hidden(name) || type.empty()) continue;
-    const auto url = "/" + entry->path().lexically_relative(web_directory).generic_string();
+    // Appended rather than "/" + path: GCC 12 warns (-Wrestrict, a false positive) about inserting
+    // in front of a temporary string.
+    std::string url = "/";
+    url += entry->path().lexically_relative(web_directory).generic_string();
     assets.by_path[url] = {entry->path(), type};
   }
   if (const auto index = assets.by_path.find("/index.html"); index != assets.by_path.end())

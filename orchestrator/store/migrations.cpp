@@ -155,11 +155,17 @@ CREATE TABLE grid_point_summaries (
 CREATE INDEX grid_point_summaries_by_position ON grid_point_summaries (study_id, position);
 )sql";
 
+// Each case's bulk file is checked against the size and SHA-256 its worker reported.
+constexpr std::string_view kVersion4 = R"sql(
+ALTER TABLE results ADD COLUMN data_file_size INTEGER;
+ALTER TABLE results ADD COLUMN data_file_sha256 TEXT;
+)sql";
+
 // Correlations (docs/CORRELATIONS.md). correlation_sets holds one set of fits per study and request
 // (the pooled models' covariates): its summary and, in correlation_fits, each fit's document;
 // result_set_hash identifies the results it was fitted to, result_set_version the study's
 // result-set version (study_summaries, migration 3) at which that hash was last found current.
-constexpr std::string_view kVersion4 = R"sql(
+constexpr std::string_view kVersion5 = R"sql(
 CREATE TABLE correlation_sets (
   id                 INTEGER PRIMARY KEY,
   study_id           INTEGER NOT NULL REFERENCES studies (id),
@@ -183,9 +189,20 @@ CREATE TABLE correlation_fits (
 ) WITHOUT ROWID;
 )sql";
 
+// Indexes for the dashboard's per-grid-point reads (docs/PERFORMANCE.md, "Dashboard"): a study's
+// cases by grid point (with study_cases' key, case_id), so that one grid point's cases are a range
+// and the cases come grouped by grid point; and the results' summed columns beside their case id,
+// so that aggregating them reads this index instead of the table, whose rows hold the result
+// document (14 kB on average in real stores) with the outcome columns of version 2 after it.
+constexpr std::string_view kVersion6 = R"sql(
+CREATE INDEX study_cases_by_grid_key ON study_cases (study_id, grid_key);
+CREATE INDEX results_statistics ON results (case_id, outcome, retained_mass_fraction, restitution, fragment_count,
+  largest_fragment_share, damage_ratio, energy_per_contact, fractured_on_wall, small_strain_exceeded);
+)sql";
+
 // Adaptive boundary searches (docs/ADAPTIVE.md): each group of a search study with its state,
 // current estimates and every round it placed; each case linked to its group and round.
-constexpr std::string_view kVersion5 = R"sql(
+constexpr std::string_view kVersion7 = R"sql(
 ALTER TABLE study_cases ADD COLUMN search_group INTEGER;
 ALTER TABLE study_cases ADD COLUMN search_round INTEGER;
 CREATE INDEX study_cases_by_search_group ON study_cases (study_id, search_group) WHERE search_group IS NOT NULL;
@@ -219,8 +236,10 @@ constexpr std::array kMigrations{
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
               kVersion2, reclassify_stored_results},
     Migration{3, "per-study and per-grid-point summaries kept by triggers", kVersion3},
-    Migration{4, "stored correlation sets and fits", kVersion4},
-    Migration{5, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion5},
+    Migration{4, "size and SHA-256 of each result's data file", kVersion4},
+    Migration{5, "stored correlation sets and fits", kVersion5},
+    Migration{6, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion6},
+    Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
 };
 
 int user_version(SqliteDatabase& db) {

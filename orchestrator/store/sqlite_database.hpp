@@ -15,6 +15,9 @@ class SqliteError : public std::runtime_error {
  public:
   SqliteError(const std::string& what, int code) : std::runtime_error(what), code_(code) {}
   int code() const { return code_; }
+  // The file could not be written or read just now (disk full, read-only, I/O error, locked, out of
+  // memory): a fault of the machine, not of what was written, and one that can mend.
+  bool storage_fault() const;
 
  private:
   int code_;

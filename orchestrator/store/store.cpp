@@ -16,6 +16,7 @@ double unix_seconds() {
 
 Store::Store(const std::filesystem::path& file) : file_(file) {
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  lock_.emplace(file);
   writer_ = std::make_unique<SqliteDatabase>(file);
   // WAL: readers never block the writer nor the writer them; synchronous=FULL makes every commit
   // durable before the call returns, so that a result acknowledged in the store survives a crash
@@ -46,33 +47,83 @@ int Store::schema_version() {
   return static_cast<int>(statement.integer(0));
 }
 
+namespace {
+
+// Done cases whose data file was lost or damaged go back to the queue: their results and fragments
+// are dropped, to be computed again. Returns how many.
+std::size_t requeue_for_recompute(SqliteDatabase& db, const std::vector<std::string>& hashes, double now) {
+  auto find = db.prepare("SELECT id FROM cases WHERE hash = ? AND status = 'done'");
+  auto drop_fragments = db.prepare("DELETE FROM fragments WHERE case_id = ?");
+  auto drop_result = db.prepare("DELETE FROM results WHERE case_id = ?");
+  auto requeue = db.prepare(
+      "UPDATE cases SET status = 'queued', queued_at = ?, finished_at = NULL, "
+      "error = 'its data file was lost or damaged: computed again' WHERE id = ?");
+  std::size_t requeued = 0;
+  for (const auto& hash : hashes) {
+    find.reset();
+    find.bind_all(hash);
+    if (!find.step()) continue;
+    const std::int64_t case_id = find.integer(0);
+    for (auto* statement : {&drop_fragments, &drop_result}) {
+      statement->reset();
+      statement->bind_all(case_id);
+      statement->run();
+    }
+    requeue.reset();
+    requeue.bind_all(now, case_id).run();
+    ++requeued;
+  }
+  return requeued;
+}
+
+// A study submitted again: wanted again if it was cancelled, and so are its cancelled cases.
+// Returns the cases queued again.
+std::size_t resume_study(SqliteDatabase& db, std::int64_t study_id, double now) {
+  db.prepare("UPDATE studies SET status = 'active', cancelled_at = NULL WHERE id = ? AND status = 'cancelled'")
+      .bind_all(study_id)
+      .run();
+  if (db.changes() == 0) return 0;
+  db.prepare(
+        "UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'cancelled' AND id IN "
+        "(SELECT case_id FROM study_cases WHERE study_id = ?)")
+      .bind_all(now, study_id)
+      .run();
+  return static_cast<std::size_t>(db.changes());
+}
+
+std::size_t done_cases(SqliteDatabase& db, std::int64_t study_id) {
+  auto count = db.prepare(
+      "SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? AND c.status = 'done'");
+  count.bind_all(study_id);
+  count.step();
+  return static_cast<std::size_t>(count.integer(0));
+}
+
+}  // namespace
+
 SubmissionReceipt Store::submit_study(const StudySubmission& submission) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   const double now = unix_seconds();
   SubmissionReceipt receipt;
   receipt.cases = submission.cases.size();
+  receipt.recomputed = requeue_for_recompute(*writer_, submission.recompute, now);
 
-  auto existing = writer_->prepare("SELECT id, status FROM studies WHERE hash = ?");
+  auto existing = writer_->prepare("SELECT id FROM studies WHERE hash = ?");
   existing.bind_all(submission.hash);
   if (existing.step()) {
     receipt.study_id = existing.integer(0);
     receipt.existing_study = true;
-    if (existing.text(1) == "cancelled") {
-      // Submitted again after a cancel: the study is wanted again, and so are its cases.
-      writer_->prepare("UPDATE studies SET status = 'active', cancelled_at = NULL WHERE id = ?")
-          .bind_all(receipt.study_id)
-          .run();
-      auto requeue = writer_->prepare(
-          "UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'cancelled' AND id IN "
-          "(SELECT case_id FROM study_cases WHERE study_id = ?)");
-      requeue.bind_all(now, receipt.study_id).run();
-      receipt.requeued = static_cast<std::size_t>(writer_->changes());
-    }
-    transaction.commit();
-    return receipt;
+    receipt.requeued = resume_study(*writer_, receipt.study_id, now);
+    receipt.already_done = done_cases(*writer_, receipt.study_id);
+  } else {
+    insert_study(submission, now, receipt);
   }
+  transaction.commit();
+  return receipt;
+}
 
+void Store::insert_study(const StudySubmission& submission, double now, SubmissionReceipt& receipt) {
   auto insert_study = writer_->prepare(
       "INSERT INTO studies (hash, name, description, document, status, max_attempts, case_wall_time, created_at) "
       "VALUES (?, ?, ?, ?, 'active', ?, ?, ?)");
@@ -84,8 +135,6 @@ SubmissionReceipt Store::submit_study(const StudySubmission& submission) {
   link_study_cases(*writer_, receipt.study_id, submission.cases, 0,
                    {submission.max_attempts, submission.case_wall_time, now}, receipt);
   insert_search_groups(*writer_, receipt.study_id, submission.search_groups, now);
-  transaction.commit();
-  return receipt;
 }
 
 std::optional<ClaimedCase> Store::claim_next_case(std::int64_t job_id, const std::string& worker) {
@@ -150,7 +199,7 @@ std::optional<int> optional_flag(const nlohmann::ordered_json& value) {
 // The summary columns of a result document (schemas/result.schema.json); the document itself is
 // stored whole beside them.
 void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
-                   const std::string& data_file, double wall_clock_seconds, double now) {
+                   const std::string& data_file, double wall_clock_seconds, const DataFileDigest& digest, double now) {
   const auto& outcome = member(result, "outcome");
   const auto& outcome_class = member(outcome, "class");
   if (!outcome_class.is_string()) throw std::invalid_argument("result document without /outcome/class");
@@ -160,7 +209,8 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
       "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
       "retained_mass_fraction, reentrained_mass_fraction, damage_ratio, fractured_on_wall, small_strain_exceeded, "
       "energy_per_contact, energy_over_rolling, initial_contacts, impact_energy, wall_clock_seconds, data_file, "
-      "document, committed_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "document, committed_at, data_file_size, data_file_sha256) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   statement.bind_all(case_id, attempt, outcome_class.get<std::string>(),
                      optional_number(member(member(outcome, "restitution"), "normal")),
                      optional_number(member(outcome, "largest_fragment_share")),
@@ -173,7 +223,9 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
                      optional_number(member(dimensionless, "energy_over_rolling")),
                      optional_integer(member(dimensionless, "initial_contacts")),
                      optional_number(member(member(result, "setup"), "impact_kinetic_energy")), wall_clock_seconds,
-                     data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now);
+                     data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now,
+                     digest.size >= 0 && !data_file.empty() ? std::optional(digest.size) : std::nullopt,
+                     digest.sha256.empty() || data_file.empty() ? std::nullopt : std::optional(digest.sha256));
   statement.run();
 
   auto fragment = db.prepare(
@@ -192,7 +244,7 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
 }  // namespace
 
 bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
-                          const std::string& data_file, double wall_clock_seconds) {
+                          const std::string& data_file, double wall_clock_seconds, const DataFileDigest& digest) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   const double now = unix_seconds();
@@ -202,7 +254,7 @@ bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ord
       .bind_all(now, case_id, attempt)
       .run();
   if (writer_->changes() != 1) return false;
-  insert_result(*writer_, case_id, attempt, result, data_file, wall_clock_seconds, now);
+  insert_result(*writer_, case_id, attempt, result, data_file, wall_clock_seconds, digest, now);
   writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = 'done' WHERE case_id = ? AND attempt = ?")
       .bind_all(now, case_id, attempt)
       .run();
@@ -253,6 +305,10 @@ std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason, b
 
 std::size_t Store::requeue_interrupted() {
   return requeue_running("1", "the orchestrator stopped while the case ran");
+}
+
+bool Store::requeue_attempt(std::int64_t case_id, int attempt, const std::string& reason) {
+  return requeue_running("id = " + std::to_string(case_id) + " AND attempts = " + std::to_string(attempt), reason) == 1;
 }
 
 std::size_t Store::requeue_running(const std::string& condition, const std::string& reason) {

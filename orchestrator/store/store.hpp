@@ -9,17 +9,20 @@
 #include <vector>
 
 #include "orchestrator/store/sqlite_database.hpp"
+#include "orchestrator/store/store_lock.hpp"
 #include "orchestrator/store/store_types.hpp"
 
 namespace aerobreak {
 
-// The orchestrator's SQLite store (DESIGN.md "Sweeps, storage, service"): one file in WAL mode
+// The orchestrator's SQLite store (docs/ORCHESTRATOR.md): one file in WAL mode
 // with a versioned schema (migrations.hpp). One writer: every method that changes the store runs
 // on the writer connection under one mutex, each as one transaction, so that a crash at any point
 // leaves either all or none of a change. Readers use connections of their own (WAL lets them read
-// while the writer writes), so that the REST service never waits for the scheduler.
+// while the writer writes), so that the REST service never waits for the scheduler. One process
+// at a time: a Store holds the store's lock (store_lock.hpp) while it lives.
 class Store {
  public:
+  // Throws StoreInUse when another Store, in this process or another, has the file open.
   explicit Store(const std::filesystem::path& file);
   ~Store();
   Store(const Store&) = delete;
@@ -34,7 +37,8 @@ class Store {
 
   // Stores a study and links its cases. A case is stored once, by its content hash, whatever the
   // number of studies that name it: a finished case is never rerun, a cancelled one is queued
-  // again. Submitting the same study (same hash) again changes nothing and returns its id.
+  // again, and so is a done one named in submission.recompute (its data file was lost or damaged).
+  // Submitting the same study (same hash) again changes nothing else and returns its id.
   SubmissionReceipt submit_study(const StudySubmission& submission);
 
   // The next queued case that an active study wants (submission order), marked running for the
@@ -44,9 +48,10 @@ class Store {
   void record_worker(std::int64_t case_id, int attempt, const std::string& worker);
 
   // Commits a result exactly once: only while the case is running the same attempt. Returns false
-  // (and changes nothing) for a late, duplicate or unknown result.
+  // (and changes nothing) for a late, duplicate or unknown result. The data file's size and
+  // checksum are kept with it.
   bool commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
-                     const std::string& data_file, double wall_clock_seconds);
+                     const std::string& data_file, double wall_clock_seconds, const DataFileDigest& digest = {});
   // An attempt that ended without a result: the case goes back to the queue, or is marked failed
   // with `error` once it has failed max_attempts times. Returns the new status; nullopt when the
   // attempt was not the running one.
@@ -58,6 +63,9 @@ class Store {
   // At start-up: cases left running by an orchestrator that died go back to the queue without a
   // failure counted (the orchestrator, not the case, stopped them).
   std::size_t requeue_interrupted();
+  // An attempt stopped by a fault of the machine (its data file could not be written) goes back to
+  // the queue without a failure counted. False when it was not the running attempt.
+  bool requeue_attempt(std::int64_t case_id, int attempt, const std::string& reason);
 
   std::int64_t start_job(const std::string& command, int ranks);
   void job_started(std::int64_t job_id, std::int64_t pid, const nlohmann::ordered_json& hosts);
@@ -119,10 +127,17 @@ class Store {
   // Fragments of the results at the given grid points, counted per grid point and size (grid
   // points without a result are left out).
   std::vector<GridPointFragments> fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys);
+  // Per grid point, in submission order: the document of its first case.
+  std::vector<GridPointCase> grid_point_cases(std::int64_t study_id);
+  // Per grid point with a determined result, in submission order: the mass and count of the
+  // fragments its determined results left, by wall contact and size (store_grid_queries.cpp).
+  std::vector<GridPointFragmentMasses> fragment_masses(std::int64_t study_id);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
   // A study's search groups in order, with every round's record when `history` (empty: no search).
   std::vector<SearchGroupRecord> search_groups(std::int64_t study_id, bool history);
   std::vector<JobRecord> jobs(std::size_t limit);
+  // The data files, with their recorded size and checksum, of the done cases among `hashes`.
+  std::vector<StoredDataFile> data_files(const std::vector<std::string>& hashes);
 
   // Everything the statistics need about a study's results, read in one read transaction (the rows
   // and the version agree). The one place that maps store columns to CaseOutcome fields.
@@ -134,10 +149,12 @@ class Store {
  private:
   class ReadConnection;
   ReadConnection read();
+  void insert_study(const StudySubmission& submission, double now, SubmissionReceipt& receipt);
   // Running cases matching an SQL condition on `cases` go back to the queue, no failure counted.
   std::size_t requeue_running(const std::string& condition, const std::string& reason);
 
   std::filesystem::path file_;
+  std::optional<StoreLock> lock_;
   int opened_at_version_ = 0;
   std::mutex write_mutex_;
   std::unique_ptr<SqliteDatabase> writer_;

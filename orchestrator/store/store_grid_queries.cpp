@@ -31,25 +31,35 @@ constexpr std::array<MomentColumn, 6> kMomentColumns{{
 // Results counted per grid point by a flag: fractured on the wall, outside the small-strain range,
 // and without the small-strain check (results migrated from a version-1 store).
 constexpr std::array<std::string_view, 3> kFlagCounts{
-    "sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)",
-    "sum(r.case_id IS NOT NULL AND r.small_strain_exceeded IS NULL)"};
+    "sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)", "count(*) - count(r.small_strain_exceeded)"};
 
 std::optional<double> mean(const Moments& moments) {
   return moments.count > 0 ? std::optional(moments.sum / static_cast<double>(moments.count)) : std::nullopt;
 }
 
+// The counts come from the grid-point summaries (one row per grid point); the moments and flags from
+// one pass over the study's results, grouped by grid point through study_cases_by_grid_key and read
+// from the covering index results_statistics instead of the results table (migration 5). A grid
+// point without results has no row in the pass: its moments read as NULL, that is 0.
 std::string grid_statistics_sql() {
-  std::string sql =
-      "SELECT sc.grid_key, min(sc.grid_point), count(*), sum(c.status = 'failed')";
-  for (const auto outcome : kOutcomes) sql += ", sum(r.outcome = '" + std::string(outcome) + "')";
-  for (const auto& [column, member] : kMomentColumns) {
-    const std::string name(column);
-    sql += ", count(" + name + "), total(" + name + "), total(" + name + " * " + name + ")";
+  std::string aggregates;
+  int column = 0;
+  const auto add = [&](const std::string& expression) {
+    aggregates += ", " + expression + " AS m" + std::to_string(column++);
+  };
+  for (const auto& [name, member] : kMomentColumns) {
+    const std::string value(name);
+    add("count(" + value + ")");
+    add("total(" + value + ")");
+    add("total(" + value + " * " + value + ")");
   }
-  for (const auto flag : kFlagCounts) sql += ", " + std::string(flag);
-  return sql +
-         " FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = sc.case_id "
-         "WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)";
+  for (const auto flag : kFlagCounts) add(std::string(flag));
+  std::string sql = "SELECT g.grid_key, g.grid_point, g.cases, g.failed, g.stick, g.bounce, g.break_up, g.undetermined";
+  for (int i = 0; i < column; ++i) sql += ", m.m" + std::to_string(i);
+  return sql + " FROM grid_point_summaries g LEFT JOIN (SELECT sc.grid_key" + aggregates +
+         " FROM study_cases sc JOIN results r INDEXED BY results_statistics ON r.case_id = sc.case_id"
+         " WHERE sc.study_id = ?1 GROUP BY sc.grid_key) m ON m.grid_key = g.grid_key"
+         " WHERE g.study_id = ?1 ORDER BY g.position";
 }
 
 GridPointStatistics statistics_from(const SqliteStatement& row) {
@@ -59,7 +69,7 @@ GridPointStatistics statistics_from(const SqliteStatement& row) {
   cell.grid_point = nlohmann::ordered_json::parse(row.text(1));
   cell.cases = static_cast<std::size_t>(row.integer(2));
   cell.failed = static_cast<std::size_t>(row.integer(3));
-  int column = 4;
+  int column = 4;  // stick, bounce, break-up, undetermined: the summaries' columns in kOutcomes' order
   for (const auto outcome : kOutcomes) cell.outcomes[std::string(outcome)] = static_cast<std::size_t>(row.integer(column++));
   for (const auto& [name, member] : kMomentColumns) {
     Moments& moments = statistics.*member;
@@ -97,8 +107,8 @@ std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
 
 std::vector<std::pair<std::string, nlohmann::ordered_json>> Store::grid_points(std::int64_t study_id) {
   auto db = read();
-  auto statement = db->prepare(
-      "SELECT grid_key, min(grid_point) FROM study_cases WHERE study_id = ? GROUP BY grid_key ORDER BY min(position)");
+  auto statement =
+      db->prepare("SELECT grid_key, grid_point FROM grid_point_summaries WHERE study_id = ? ORDER BY position");
   statement.bind_all(study_id);
   std::vector<std::pair<std::string, nlohmann::ordered_json>> points;
   while (statement.step()) points.emplace_back(statement.text(0), nlohmann::ordered_json::parse(statement.text(1)));
@@ -125,6 +135,49 @@ std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, con
     const auto found = index.find(sizes.text(0));
     if (found != index.end())
       points[found->second].sizes.emplace_back(sizes.integer(1), static_cast<std::size_t>(sizes.integer(2)));
+  }
+  return points;
+}
+
+std::vector<GridPointCase> Store::grid_point_cases(std::int64_t study_id) {
+  auto db = read();
+  // SQLite takes the bare columns of a min() aggregate from the row that holds the minimum.
+  auto statement = db->prepare(
+      "SELECT sc.grid_key, sc.grid_point, c.document, min(sc.position) FROM study_cases sc JOIN cases c "
+      "ON c.id = sc.case_id WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  statement.bind_all(study_id);
+  std::vector<GridPointCase> points;
+  while (statement.step())
+    points.push_back({statement.text(0), nlohmann::ordered_json::parse(statement.text(1)),
+                      nlohmann::ordered_json::parse(statement.text(2))});
+  return points;
+}
+
+std::vector<GridPointFragmentMasses> Store::fragment_masses(std::int64_t study_id) {
+  auto db = read();
+  const std::string determined =
+      "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id "
+      "WHERE sc.study_id = ? AND r.outcome <> 'undetermined' ";
+  auto results = db->prepare("SELECT sc.grid_key, count(*), sum(r.outcome = 'break-up') " + determined +
+                             "GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  results.bind_all(study_id);
+  std::vector<GridPointFragmentMasses> points;
+  std::map<std::string, std::size_t> index;
+  while (results.step()) {
+    index[results.text(0)] = points.size();
+    points.push_back({results.text(0), static_cast<std::size_t>(results.integer(1)),
+                      static_cast<std::size_t>(results.integer(2)), {}});
+  }
+  auto classes = db->prepare(
+      "SELECT sc.grid_key, f.on_wall, f.primaries, count(*), total(f.mass) FROM study_cases sc "
+      "JOIN results r ON r.case_id = sc.case_id JOIN fragments f ON f.case_id = r.case_id "
+      "WHERE sc.study_id = ? AND r.outcome <> 'undetermined' GROUP BY 1, 2, 3 ORDER BY 1, 2, 3");
+  classes.bind_all(study_id);
+  while (classes.step()) {
+    const auto found = index.find(classes.text(0));
+    if (found == index.end()) continue;
+    points[found->second].classes.push_back({classes.integer(1) != 0, classes.integer(2),
+                                             static_cast<std::size_t>(classes.integer(3)), classes.real(4)});
   }
   return points;
 }

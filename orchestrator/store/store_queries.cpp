@@ -38,8 +38,13 @@ constexpr std::string_view kStudyColumns =
 constexpr std::string_view kCaseColumns =
     "SELECT c.id, c.hash, c.status, c.attempts, c.failures, c.max_attempts, c.wall_time_limit, c.job_id, c.worker, "
     "c.queued_at, c.started_at, c.finished_at, c.error, sc.grid_point, sc.replicate, r.outcome, r.restitution, "
-    "r.retained_mass_fraction, r.fragment_count "
+    "r.retained_mass_fraction, r.fragment_count, r.damage_ratio, r.fractured_on_wall, r.small_strain_exceeded "
     "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = c.id ";
+
+std::optional<bool> optional_flag(const SqliteStatement& row, int column) {
+  const auto value = row.optional_integer(column);
+  return value ? std::optional(*value != 0) : std::nullopt;
+}
 
 CaseRecord case_from(const SqliteStatement& row) {
   CaseRecord record;
@@ -62,12 +67,10 @@ CaseRecord case_from(const SqliteStatement& row) {
   record.restitution = row.optional_real(16);
   record.retained_mass_fraction = row.optional_real(17);
   record.fragment_count = row.optional_integer(18);
+  record.damage_ratio = row.optional_real(19);
+  record.fractured_on_wall = optional_flag(row, 20);
+  record.small_strain_exceeded = optional_flag(row, 21);
   return record;
-}
-
-std::optional<bool> optional_flag(const SqliteStatement& row, int column) {
-  const auto value = row.optional_integer(column);
-  return value ? std::optional(*value != 0) : std::nullopt;
 }
 
 ResultRecord result_from(const SqliteStatement& row) {
@@ -205,13 +208,17 @@ Page<CaseRecord> Store::cases(std::int64_t study_id, const CaseFilter& filter, c
   const FilterClause where(filter);
   Page<CaseRecord> result;
   // The count joins only the tables its conditions read: 100,000 rows of study_cases alone count in
-  // a few milliseconds, joined with cases and results in a few hundred.
+  // a few milliseconds, joined with cases and results in a few hundred; without a condition it is
+  // the study's summary row.
+  const bool unfiltered = !filter.status && !filter.outcome && !filter.grid_keys;
   const std::string from = std::string("FROM study_cases sc ") +
                            (filter.status ? "JOIN cases c ON c.id = sc.case_id " : "") +
                            (filter.outcome ? "JOIN results r ON r.case_id = sc.case_id " : "") + "WHERE ";
-  auto total = db->prepare("SELECT count(*) " + from + where.sql);
+  auto total = db->prepare(unfiltered ? "SELECT queued + running + done + failed + cancelled FROM study_summaries "
+                                        "WHERE study_id = ?"
+                                      : "SELECT count(*) " + from + where.sql);
   where.bind(total, study_id);
-  result.total = count(std::move(total));
+  result.total = total.step() ? static_cast<std::size_t>(total.integer(0)) : 0;
   auto statement = db->prepare(std::string(kCaseColumns) + "WHERE " + where.sql + " ORDER BY sc.position LIMIT ? OFFSET ?");
   const int next = where.bind(statement, study_id);
   statement.bind(next, page.limit);
@@ -269,11 +276,12 @@ std::optional<CaseDetail> Store::case_detail(std::int64_t case_id) {
                                attempts.optional_text(5), attempts.optional_text(6)});
   }
 
-  auto result = db->prepare("SELECT document, data_file FROM results WHERE case_id = ?");
+  auto result = db->prepare("SELECT document, data_file, data_file_size, data_file_sha256 FROM results WHERE case_id = ?");
   result.bind_all(case_id);
   if (result.step()) {
     detail.result = nlohmann::ordered_json::parse(result.text(0));
     detail.data_file = result.optional_text(1);
+    detail.data_file_digest = {result.optional_integer(2).value_or(-1), result.optional_text(3).value_or("")};
   }
 
   auto fragments = db->prepare(
@@ -299,6 +307,22 @@ std::vector<JobRecord> Store::jobs(std::size_t limit) {
                     statement.optional_integer(6), statement.optional_text(7)});
   }
   return jobs;
+}
+
+std::vector<StoredDataFile> Store::data_files(const std::vector<std::string>& hashes) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT r.data_file, r.data_file_size, r.data_file_sha256 FROM cases c JOIN results r ON r.case_id = c.id "
+      "WHERE c.hash = ? AND c.status = 'done' AND r.data_file IS NOT NULL");
+  std::vector<StoredDataFile> files;
+  for (const auto& hash : hashes) {
+    statement.reset();
+    statement.bind_all(hash);
+    if (statement.step())
+      files.push_back({hash, statement.text(0),
+                       {statement.optional_integer(1).value_or(-1), statement.optional_text(2).value_or("")}});
+  }
+  return files;
 }
 
 }  // namespace aerobreak

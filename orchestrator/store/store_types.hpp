@@ -35,8 +35,8 @@ struct StudySubmission {
     nlohmann::ordered_json grid_point;
     std::string grid_key;
     int replicate = 0;
-    std::optional<std::int64_t> search_group;  // an adaptive search's case: its group and round
-    std::optional<int> search_round;
+    std::optional<std::int64_t> search_group{};  // an adaptive search's case: its group and round
+    std::optional<int> search_round{};
   };
   std::vector<Case> cases;
   // An adaptive search's groups (docs/ADAPTIVE.md), each with its round 0 (its cases are among
@@ -48,6 +48,8 @@ struct StudySubmission {
     int cases = 0;
   };
   std::vector<SearchGroup> search_groups;
+  // Hashes of done cases to compute again (their data files were lost or damaged).
+  std::vector<std::string> recompute;
 };
 
 // A search group whose last round has finished (no case of it queued or running): what the next
@@ -100,6 +102,13 @@ struct SubmissionReceipt {
   std::size_t new_cases = 0;     // queued now for the first time
   std::size_t already_done = 0;  // finished for another study: not rerun
   std::size_t requeued = 0;      // cancelled before, queued again
+  std::size_t recomputed = 0;    // done, but queued again: the data file was lost or damaged
+};
+
+// A case's bulk data file as its worker wrote it, so that a damaged or lost file is noticed later.
+struct DataFileDigest {
+  std::int64_t size = -1;  // bytes; -1: not reported
+  std::string sha256;      // hex; empty: not reported
 };
 
 // A case handed to a worker job.
@@ -166,6 +175,9 @@ struct CaseRecord {
   std::optional<double> restitution;
   std::optional<double> retained_mass_fraction;
   std::optional<std::int64_t> fragment_count;
+  std::optional<double> damage_ratio;
+  std::optional<bool> fractured_on_wall;
+  std::optional<bool> small_strain_exceeded;
 };
 
 // Which of a study's cases to list: each condition that is set must hold.
@@ -224,7 +236,15 @@ struct CaseDetail {
   std::vector<AttemptRecord> attempts;
   std::optional<nlohmann::ordered_json> result;
   std::optional<std::string> data_file;
+  DataFileDigest data_file_digest;
   std::vector<FragmentRecord> fragments;
+};
+
+// A done case's data file as recorded.
+struct StoredDataFile {
+  std::string hash;  // the case's
+  std::string path;
+  DataFileDigest digest;
 };
 
 // Outcome counts of the finished cases at one grid point of a study, and what their results say
@@ -268,6 +288,30 @@ struct GridPointFragments {
   std::string grid_key;
   std::size_t results = 0;
   std::vector<std::pair<std::int64_t, std::size_t>> sizes;  // (primaries, fragments), by size
+};
+
+// The fragments that the determined results (stick, bounce, break-up) of one grid point left, in
+// classes of (on the wall or not, size): what the lookup tables' fragment moments and sectional
+// matrices are computed from (docs/EXPORT.md).
+struct FragmentClass {
+  bool on_wall = false;
+  std::int64_t primaries = 0;
+  std::size_t fragments = 0;  // fragments of this class, over all the grid point's results
+  double mass = 0.0;          // their mass in all
+};
+struct GridPointFragmentMasses {
+  std::string grid_key;
+  std::size_t results = 0;    // determined results
+  std::size_t break_ups = 0;
+  std::vector<FragmentClass> classes;  // by on_wall, then size
+};
+
+// One grid point of a study with the document of its first case (every replicate shares the
+// physics but for the seeds).
+struct GridPointCase {
+  std::string grid_key;
+  nlohmann::ordered_json grid_point;
+  nlohmann::ordered_json document;
 };
 
 struct JobRecord {

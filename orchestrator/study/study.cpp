@@ -46,9 +46,12 @@ void make_cluster_paths_absolute(Json& document, const std::filesystem::path& di
 // file where files are refused, and asks for no more primaries than allowed.
 void check_base(const Json& base, const std::vector<StudyAxis>& axes, const StudyLimits& limits,
                 std::vector<SchemaViolation>& violations) {
-  for (const auto& axis : axes)
+  for (const auto& axis : axes) {
     if (has_field(base, axis.pointer))
       violations.push_back({"/base" + axis.pointer, "is set by axis \"" + axis.name + "\": leave it out of the base"});
+    if (const std::string growth = array_growth(base, axis.pointer); !growth.empty())
+      violations.push_back({pointer_child("/axes", axis.name), growth});
+  }
   for (const char* seed : {"/cluster/generator/seed", "/impact/orientation_seed"})
     if (!axis_setting(axes, seed) && has_field(base, seed))
       violations.push_back({"/base" + std::string(seed), "is derived for each replicate from /replicates/seed: leave it out of the "

@@ -1,5 +1,6 @@
 #include "orchestrator/study/study_axes.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "orchestrator/study/canonical_json.hpp"
 
@@ -133,7 +135,49 @@ StudyAxis read_axis(const std::string& name, const Json& spec, std::vector<Schem
   return axis;
 }
 
+// The reference tokens of a valid JSON pointer, unescaped (RFC 6901 4).
+std::vector<std::string> pointer_tokens(const std::string& pointer) {
+  std::vector<std::string> tokens;
+  for (std::size_t begin = 1; begin <= pointer.size();) {
+    const std::size_t end = std::min(pointer.find('/', begin), pointer.size());
+    std::string token = pointer.substr(begin, end - begin);
+    for (std::size_t at = 0; (at = token.find('~', at)) != std::string::npos; ++at)
+      token.replace(at, 2, token[at + 1] == '1' ? "/" : "~");
+    tokens.push_back(std::move(token));
+    begin = end + 1;
+  }
+  return tokens;
+}
+
+bool is_array_index(const std::string& token) {
+  return token == "-" || (!token.empty() && token.find_first_not_of("0123456789") == std::string::npos);
+}
+
 }  // namespace
+
+std::string array_growth(const nlohmann::ordered_json& base, const std::string& pointer) {
+  const Json* at = &base;
+  std::string walked;
+  for (const auto& token : pointer_tokens(pointer)) {
+    if (at && at->is_array()) {
+      const bool inside = is_array_index(token) && token != "-" && token.size() <= 9 &&
+                          std::stoul(token) < at->size() && (token == "0" || token.front() != '0');
+      if (!inside)
+        return "indexes element \"" + token + "\" of the array at " + walked + ", which has " +
+               std::to_string(at->size()) + " elements: an axis may set only an element the base has";
+      at = &(*at)[std::stoul(token)];
+    } else if (at && at->is_object() && at->contains(token)) {
+      at = &(*at)[token];
+    } else {
+      if (is_array_index(token))
+        return "would create an array at " + (walked.empty() ? std::string("the top") : walked) + " (index " + token +
+               "): an axis may set only an element the base has";
+      at = nullptr;  // created as objects from here on
+    }
+    walked = pointer_child(walked, token);
+  }
+  return {};
+}
 
 std::string axis_pointer(const std::string& name) {
   if (const auto a = alias(name)) return std::string(a->pointer);

@@ -25,6 +25,11 @@ bool covers(const std::string& outer, const std::string& inner);
 void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations,
                       bool searching = false);
 
+// Why setting `pointer` in `base` would create or grow an array (empty when it would not):
+// nlohmann turns a missing "/x/5000000" into an array of 5,000,001 nulls. A case has no arrays
+// (schemas/case.schema.json), so an axis may index only an element the base already has.
+std::string array_growth(const nlohmann::ordered_json& base, const std::string& pointer);
+
 // The axes of a schema-valid "axes" object whose names passed check_axis_names, in key order.
 // Ranges give exactly `from` first and exactly `to` last; values that are integers are written as
 // integers. An integer field (primaries) refuses non-integral values.

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "engine/impact/impact_case.hpp"
+#include "orchestrator/worker/case_data_file.hpp"
 #include "orchestrator/worker/case_runner.hpp"
 
 namespace aerobreak {
@@ -16,11 +17,14 @@ nlohmann::ordered_json answer_assignment(const CaseAssignment& a, int rank) {
   };
   try {
     CaseRunOutcome outcome = run_case(a.document, a.wall_time, a.data_file);
-    return result_message(a.case_id, a.attempt, rank, outcome.seconds, std::move(outcome.result), outcome.data_file);
+    return result_message(a.case_id, a.attempt, rank, outcome.seconds, std::move(outcome.result), outcome.data_file,
+                          outcome.data_file_size, outcome.data_file_sha256);
   } catch (const CaseError& e) {
     return failed(FailureKind::invalid, e.what());
   } catch (const WallTimeExceeded& e) {
     return failed(FailureKind::wall_time, e.what());
+  } catch (const DataFileError& e) {
+    return failed(FailureKind::storage, e.what());
   } catch (const std::exception& e) {
     return failed(FailureKind::error, e.what());
   } catch (...) {

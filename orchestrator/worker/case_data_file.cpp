@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <system_error>
 
@@ -20,12 +21,26 @@ std::filesystem::path partial_path_of(const std::filesystem::path& path) {
   return partial;
 }
 
+// Runs a step that writes the file, turning its failure (HDF5, file system) into DataFileError.
+template <typename Step>
+void writing(const std::filesystem::path& path, Step step) {
+  try {
+    step();
+  } catch (const std::exception& error) {
+    std::string reason = error.what();  // HDF5's spans lines; the protocol and the logs take one
+    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    throw DataFileError("cannot write the data file " + path.string() + ": " + reason);
+  }
+}
+
 }  // namespace
 
 CaseDataFile::CaseDataFile(std::filesystem::path path)
     : path_(std::move(path)), partial_(partial_path_of(path_)) {
-  if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path());
-  writer_.emplace(partial_, version());
+  writing(path_, [this] {
+    if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path());
+    writer_.emplace(partial_, version());
+  });
 }
 
 CaseDataFile::~CaseDataFile() {
@@ -37,7 +52,7 @@ CaseDataFile::~CaseDataFile() {
 
 void CaseDataFile::record(const Simulation& simulation) {
   if (!first_step_) {
-    writer_->append(simulation.particles(), simulation.step_count(), simulation.time());
+    writing(path_, [&] { writer_->append(simulation.particles(), simulation.step_count(), simulation.time()); });
     first_step_ = simulation.step_count();
   }
   // The run does not say which snapshot is its last: keep each until the next replaces it. The
@@ -48,10 +63,12 @@ void CaseDataFile::record(const Simulation& simulation) {
 
 void CaseDataFile::commit() {
   if (!latest_) throw std::logic_error("case data file " + path_.string() + ": no state was recorded");
-  if (latest_->step != *first_step_) writer_->append(latest_->particles, latest_->step, latest_->time);
-  writer_->close();
-  write_fragments(*latest_);
-  std::filesystem::rename(partial_, path_);
+  writing(path_, [this] {
+    if (latest_->step != *first_step_) writer_->append(latest_->particles, latest_->step, latest_->time);
+    writer_->close();
+    write_fragments(*latest_);
+    std::filesystem::rename(partial_, path_);
+  });
   committed_ = true;
 }
 

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/core/particles.hpp"
@@ -11,7 +12,13 @@ namespace aerobreak {
 
 class Simulation;
 
-// The bulk arrays of one case (DESIGN.md: the store references HDF5 files for them), as an H5MD
+// The data file could not be created, written or renamed (disk full, no permission, I/O error).
+class DataFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The bulk arrays of one case (docs/ARCHITECTURE.md: the store references HDF5 files for them), as an H5MD
 // file (engine/io/h5md_writer.hpp) with two frames, the state when the impact starts and when it
 // ends (one frame if the run took no step), plus each primary's fragment at the end:
 //
@@ -19,7 +26,8 @@ class Simulation;
 //                             /fragments list, largest first; sampled at the last frame only)
 //
 // The file is written as "<path>.partial" (parent directories created) and renamed to `path` by
-// commit(), so that `path` only ever names a complete file; an uncommitted file is removed.
+// commit(), so that `path` only ever names a complete file; an uncommitted file is removed. Every
+// failure to create, write or rename it throws DataFileError.
 class CaseDataFile {
  public:
   explicit CaseDataFile(std::filesystem::path path);

@@ -8,6 +8,7 @@
 #include "engine/impact/impact_case.hpp"
 #include "engine/impact/impact_result.hpp"
 #include "engine/impact/impact_run.hpp"
+#include "orchestrator/study/sha256.hpp"
 #include "orchestrator/worker/case_data_file.hpp"
 
 namespace aerobreak {
@@ -71,6 +72,12 @@ CaseRunOutcome run_case(const nlohmann::ordered_json& document, double wall_time
   if (bulk) {
     bulk->commit();
     outcome.data_file = bulk->path().string();
+    try {
+      outcome.data_file_size = std::filesystem::file_size(bulk->path());
+      outcome.data_file_sha256 = sha256_hex_of_file(bulk->path());
+    } catch (const std::exception& error) {
+      throw DataFileError("cannot read back the data file " + outcome.data_file + ": " + error.what());
+    }
   }
   outcome.seconds = seconds_since(start);
   return outcome;

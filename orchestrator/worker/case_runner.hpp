@@ -15,6 +15,8 @@ class WallTimeExceeded : public std::runtime_error {
 struct CaseRunOutcome {
   nlohmann::ordered_json result;  // the result document, to_json(ImpactResult)
   std::string data_file;          // the bulk file written; empty when none was asked for
+  std::uintmax_t data_file_size = 0;
+  std::string data_file_sha256;   // hex, of the file as written
   double seconds = 0.0;           // wall-clock of the whole case: parse, preparation, run, bulk file
 };
 
@@ -30,9 +32,11 @@ struct CaseRunOutcome {
 // time overruns it by that much.
 //
 // A non-empty data_file receives the bulk arrays (case_data_file.hpp): written under
-// "<data_file>.partial", parent directories created, and renamed when complete.
+// "<data_file>.partial", parent directories created, and renamed when complete; then its size and
+// SHA-256 are taken, so that the store can tell later whether the file is still the one written.
 //
-// Throws CaseError for an invalid document, WallTimeExceeded, or what the engine throws.
+// Throws CaseError for an invalid document, WallTimeExceeded, DataFileError when the data file
+// cannot be written, or what the engine throws.
 CaseRunOutcome run_case(const nlohmann::ordered_json& document, double wall_time,
                         const std::filesystem::path& data_file);
 

@@ -60,6 +60,7 @@ std::string to_string(FailureKind kind) {
     case FailureKind::invalid: return "invalid";
     case FailureKind::error: return "error";
     case FailureKind::wall_time: return "wall_time";
+    case FailureKind::storage: return "storage";
   }
   return "error";
 }
@@ -129,9 +130,14 @@ Json started_message(std::int64_t case_id, int attempt, int rank, const std::str
 }
 
 Json result_message(std::int64_t case_id, int attempt, int rank, double seconds, Json result,
-                    const std::string& data_file) {
-  return Json{{"type", "result"},  {"case", case_id},           {"attempt", attempt},  {"rank", rank},
-              {"seconds", seconds}, {"result", std::move(result)}, {"data_file", data_file}};
+                    const std::string& data_file, std::uintmax_t data_file_size, const std::string& data_file_sha256) {
+  Json message{{"type", "result"},  {"case", case_id},           {"attempt", attempt},  {"rank", rank},
+               {"seconds", seconds}, {"result", std::move(result)}, {"data_file", data_file}};
+  if (!data_file.empty()) {
+    message["data_file_size"] = data_file_size;
+    message["data_file_sha256"] = data_file_sha256;
+  }
+  return message;
 }
 
 Json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,

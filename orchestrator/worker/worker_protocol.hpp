@@ -14,8 +14,9 @@
 // Job -> orchestrator (stdout of rank 0):
 //   {"type":"ready","ranks":K,"hosts":[...],"pid":P,"version":"V"}          once, first
 //   {"type":"started","case":ID,"attempt":A,"rank":R,"host":"H"}
-//   {"type":"result","case":ID,"attempt":A,"rank":R,"seconds":S,"result":{...},"data_file":"PATH"}
-//   {"type":"failed","case":ID,"attempt":A,"rank":R,"seconds":S,"kind":"invalid|error|wall_time","error":"..."}
+//   {"type":"result","case":ID,"attempt":A,"rank":R,"seconds":S,"result":{...},"data_file":"PATH",
+//    "data_file_size":BYTES,"data_file_sha256":"HEX"}      (the last two only with a data file)
+//   {"type":"failed","case":ID,"attempt":A,"rank":R,"seconds":S,"kind":"invalid|error|wall_time|storage","error":"..."}
 //   {"type":"protocol_error","message":"..."}                                a line that is no message
 // Every case assignment is answered by exactly one result or failed message.
 #include <cstdint>
@@ -58,7 +59,9 @@ class ProtocolError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class FailureKind { invalid, error, wall_time };
+// storage: the case's data file could not be written (disk full, no permission, I/O error): a
+// fault of the machine, not of the case.
+enum class FailureKind { invalid, error, wall_time, storage };
 std::string to_string(FailureKind kind);
 
 // The line for one message: prefix, compact JSON, '\n'. Invalid UTF-8 in strings (an error text
@@ -79,8 +82,10 @@ CaseAssignment assignment_from_json(const nlohmann::ordered_json& message);
 nlohmann::ordered_json ready_message(int ranks, const std::vector<std::string>& hosts, std::int64_t pid,
                                      std::string_view version);
 nlohmann::ordered_json started_message(std::int64_t case_id, int attempt, int rank, const std::string& host);
+// With a data file, its size in bytes and SHA-256 travel with it.
 nlohmann::ordered_json result_message(std::int64_t case_id, int attempt, int rank, double seconds,
-                                      nlohmann::ordered_json result, const std::string& data_file);
+                                      nlohmann::ordered_json result, const std::string& data_file,
+                                      std::uintmax_t data_file_size = 0, const std::string& data_file_sha256 = {});
 nlohmann::ordered_json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,
                                       const std::string& error);
 nlohmann::ordered_json protocol_error_message(const std::string& message);

@@ -11,7 +11,6 @@
 #include <thread>
 #include <cstdio>
 #include <filesystem>
-#include <set>
 #include <string>
 
 #include "orchestrator/fitting/correlation_set.hpp"
@@ -41,6 +40,7 @@ CaseOutcome draw_case(std::size_t point, double speed, double primaries, double 
   c.energy_per_contact = 3.0 * std::pow(speed / v50, 2.0) * (0.8 + 0.4 * uniform());
   c.retained_mass_fraction = c.outcome == Outcome::stick ? 1.0 : c.outcome == Outcome::bounce ? 0.0 : 0.2 + 0.6 * uniform();
   c.damage_ratio = 0.1 * uniform();
+  c.small_strain_exceeded = speed > 4.0 * v50;
   if (c.outcome == Outcome::break_up)
     for (int k = 0; k < 6; ++k) c.reentrained_sizes.push_back(1 + static_cast<std::int64_t>(std::pow(uniform(), -0.8)) % 20);
   return c;
@@ -105,21 +105,18 @@ StudySubmission submission_of(const CaseOutcomeTable& table) {
 // The results and fragments of every case, in one transaction (case ids are 1..n in table order).
 void write_results(const std::filesystem::path& file, const CaseOutcomeTable& table) {
   SqliteDatabase db(file);
-  std::set<std::string> columns;
-  for (auto info = db.prepare("SELECT name FROM pragma_table_info('results')"); info.step();) columns.insert(info.text(0));
-  const std::string retained = columns.count("retained_mass_fraction") ? "retained_mass_fraction" : "mass_fraction_on_wall";
-  const std::string energy = columns.count("energy_per_contact") ? ", energy_per_contact" : "";
   SqliteTransaction transaction(db);
   db.execute("UPDATE cases SET status = 'done'");
-  auto result = db.prepare("INSERT INTO results (case_id, attempt, outcome, restitution, " + retained + energy +
-                           ", document, committed_at) VALUES (?, 1, ?, ?, ?" + (energy.empty() ? "" : ", ?") + ", '{}', 0)");
+  auto result = db.prepare(
+      "INSERT INTO results (case_id, attempt, outcome, restitution, retained_mass_fraction, damage_ratio, "
+      "energy_per_contact, small_strain_exceeded, document, committed_at) VALUES (?, 1, ?, 0.2, ?, ?, ?, ?, '{}', 0)");
   auto fragment = db.prepare("INSERT INTO fragments (case_id, rank, primaries, mass, on_wall) VALUES (?, ?, ?, ?, 0)");
   for (std::size_t i = 0; i < table.cases.size(); ++i) {
     const CaseOutcome& c = table.cases[i];
     const auto id = static_cast<std::int64_t>(i + 1);
     result.reset();
-    result.bind_all(id, std::string(to_string(c.outcome)), 0.2, *c.retained_mass_fraction);
-    if (!energy.empty()) result.bind(5, *c.energy_per_contact);
+    result.bind_all(id, std::string(to_string(c.outcome)), *c.retained_mass_fraction, *c.damage_ratio, *c.energy_per_contact,
+                    static_cast<std::int64_t>(c.small_strain_exceeded));
     result.run();
     for (std::size_t k = 0; k < c.reentrained_sizes.size(); ++k) {
       fragment.reset();

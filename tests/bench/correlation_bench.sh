@@ -4,25 +4,40 @@
 #      then the same study written to a store: the first request (read, hash, fit, store) and a
 #      second one (from the store);
 #   2. GET /api/studies/1/correlations on that store under wrk (loopback, 2 threads, 16
-#      connections, 10 s): requests per second and latency percentiles, served from the store.
-# Usage: tests/bench/correlation_bench.sh [BUILD_DIR] [RESULTS]   (installs wrk if missing)
+#      connections, DURATION s per round, ROUNDS rounds after a warm-up): requests per second and
+#      the 99th percentile latency, served from the store; GET /api/health beside it in each round,
+#      the service's cheapest answer, to tell the endpoint's cost from the machine's load; and the
+#      same request with If-None-Match naming the current ETag (304, no body).
+# Usage: tests/bench/correlation_bench.sh [BUILD_DIR] [RESULTS]   (installs wrk and sqlite3 if missing)
+#   DURATION=seconds per round (10), ROUNDS=N (3)
 set -euo pipefail
 build=${1:-build}
 results=${2:-100000}
+rounds=${ROUNDS:-3}
 work=$(mktemp -d /tmp/aerobreak-correlation-bench.XXXXXX)
-trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
+server=
+stop_server() {
+  if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; server=; fi
+}
+trap 'stop_server; rm -rf "$work"' EXIT
 
-if ! command -v wrk >/dev/null; then
-  sudo=$([ "$(id -u)" -eq 0 ] && echo "" || echo sudo)
-  $sudo apt-get update -qq && $sudo apt-get install -y -qq wrk >/dev/null
-fi
+source "$(dirname "$0")/wrk_support.sh"
+install_bench_tools
 
 echo "== fitting"
 "$build/tests/correlation_bench" "$results" "$work/bench.sqlite"
 
-echo "== GET /api/studies/1/correlations from the store (wrk, 2 threads, 16 connections, 10 s)"
-"$build/aerobreak" serve --store "$work/bench.sqlite" --port 0 --port-file "$work/port" --ranks 1 >"$work/serve.log" 2>&1 &
-for _ in $(seq 100); do [ -s "$work/port" ] && break; sleep 0.1; done
+"$build/aerobreak" serve --store "$work/bench.sqlite" --port 0 --port-file "$work/port" --ranks 1 2>"$work/serve.log" &
+server=$!
+for _ in $(seq 300); do [ -s "$work/port" ] && break; sleep 0.1; done
 url="http://127.0.0.1:$(cat "$work/port")/api/studies/1/correlations"
-curl -sf "$url" >/dev/null
-wrk -t2 -c16 -d10s --latency "$url" | grep -E "Latency|50%|90%|99%|Requests/sec"
+etag=$(curl -sf -D - -o /dev/null "$url" | awk -F': ' 'tolower($1) == "etag" {print $2}' | tr -d '\r')
+# Warm-up, not reported: the server's threads open their pooled store connections.
+wrk -t2 -c16 -d2s "$url" >/dev/null
+
+echo "== GET /api/studies/1/correlations from the store (wrk, 2 threads, 16 connections, ${DURATION:-10} s a round)"
+for round in $(seq "$rounds"); do
+  wrk_figures "round $round: /api/studies/1/correlations" "$url"
+  wrk_figures "round $round: (If-None-Match, 304)" "$url" -H "If-None-Match: $etag"
+  wrk_figures "round $round: /api/health (reference)" "${url%/studies/1/correlations}/health"
+done

@@ -3,9 +3,16 @@
 // (0.003 to 0.3 d/tau, log), N = 16, 32, 64, 128, gamma/k_n = 0.001, 0.003, 0.01, 0.03, 0.1 and
 // four frictions, 50 replicates: 2,000 grid points. Outcomes are drawn from a logistic curve in
 // log speed around v50 = 0.02 (gamma/k_n / 0.001)^0.5 (N / 32)^0.1; a break-up leaves 2 to 9
-// fragments. The study and its cases go through Store::submit_study; the results and fragments are
-// written straight into their tables in one transaction (committing them one by one, with a sync
-// each, would take minutes). Usage: dashboard_store_fill STORE.sqlite
+// fragments. Each result has the outcome columns of the outcomes migration: N_c = N - 1 + N / 4
+// initial contacts, energy per contact 1/2 N v^2 / (N_c 1e-4), a damage ratio that grows with the
+// fragments, a crack on the wall for one stick in five above v50 / 2, the small-strain flag for
+// half the impacts faster than 0.1; and a result document of `--result-document-bytes` (default
+// 14,000: the mean of 640 results of the default study), since real documents, not the numbers,
+// make a results row large. The study and its cases go through Store::submit_study; the results and
+// fragments are written straight into their tables in one transaction (committing them one by one,
+// with a sync each, would take minutes).
+// Usage: dashboard_store_fill STORE.sqlite [--result-document-bytes B]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -48,6 +55,7 @@ aerobreak::StudySubmission synthetic_study() {
 struct Draw {
   std::string outcome;
   std::vector<int> fragments;  // sizes, largest first
+  double v50 = 0.0;
 };
 
 Draw draw_outcome(const Json& point, std::mt19937_64& random) {
@@ -56,8 +64,8 @@ Draw draw_outcome(const Json& point, std::mt19937_64& random) {
   const double v50 = 0.02 * std::sqrt(gamma / 0.001) * std::pow(n / 32.0, 0.1);
   const double p_break = 1.0 / (1.0 + std::exp(-4.0 * std::log(speed / v50)));
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  if (uniform(random) >= p_break) return {uniform(random) < 0.1 ? "bounce" : "stick", {n}};
-  Draw draw{"break-up", {}};
+  if (uniform(random) >= p_break) return {uniform(random) < 0.1 ? "bounce" : "stick", {n}, v50};
+  Draw draw{"break-up", {}, v50};
   int left = n;
   const int pieces = std::uniform_int_distribution<int>(2, 9)(random);
   for (int k = 1; k < pieces && left > 1; ++k) {
@@ -70,14 +78,34 @@ Draw draw_outcome(const Json& point, std::mt19937_64& random) {
   return draw;
 }
 
-void write_results(SqliteDatabase& db) {
+// The outcome columns of one result (docs/IMPACT.md section 5), synthetic but consistent with the draw.
+struct OutcomeColumns {
+  std::int64_t initial_contacts;
+  double energy_per_contact, damage_ratio;
+  int fractured_on_wall, small_strain_exceeded;
+};
+
+OutcomeColumns outcome_columns(const Json& point, const Draw& draw, std::mt19937_64& random) {
+  const int n = point["primaries"];
+  const double speed = point["impact_speed"];
+  const std::int64_t contacts = n - 1 + n / 4;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double broken = double(draw.fragments.size() - 1) + (draw.outcome == "break-up" ? uniform(random) * n / 8 : 0.0);
+  return {contacts, 0.5 * n * speed * speed / (double(contacts) * 1e-4), std::min(1.0, broken / double(contacts)),
+          draw.outcome == "stick" && speed > draw.v50 / 2 && uniform(random) < 0.2 ? 1 : 0,
+          speed > 0.1 && uniform(random) < 0.5 ? 1 : 0};
+}
+
+void write_results(SqliteDatabase& db, std::size_t document_bytes) {
   std::mt19937_64 random(2026);
   std::normal_distribution<double> normal(0.0, 1.0);
+  const std::string document = Json{{"synthetic", true}, {"padding", std::string(document_bytes, 'x')}}.dump();
   auto cases = db.prepare("SELECT c.id, sc.grid_point FROM study_cases sc JOIN cases c ON c.id = sc.case_id ORDER BY sc.position");
   auto result = db.prepare(
       "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
-      "retained_mass_fraction, impact_energy, wall_clock_seconds, data_file, document, committed_at) "
-      "VALUES (?, 1, ?, ?, ?, ?, ?, ?, 0.1, NULL, '{\"synthetic\":true}', 1.7e9)");
+      "retained_mass_fraction, reentrained_mass_fraction, impact_energy, wall_clock_seconds, data_file, document, "
+      "committed_at, initial_contacts, energy_per_contact, damage_ratio, fractured_on_wall, small_strain_exceeded) "
+      "VALUES (?, 1, ?, ?, ?, ?, ?, 1 - ?6, ?, 0.1, NULL, ?, 1.7e9, ?, ?, ?, ?, ?)");
   auto fragment = db.prepare(
       "INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity, radius_of_gyration) "
       "VALUES (?, ?, ?, ?, ?, ?, NULL)");
@@ -88,10 +116,13 @@ void write_results(SqliteDatabase& db) {
     const auto draw = draw_outcome(point, random);
     const int n = point["primaries"];
     const double on_wall = draw.outcome == "stick" ? 1.0 : draw.outcome == "bounce" ? 0.0 : double(draw.fragments[0]) / n;
+    const auto columns = outcome_columns(point, draw, random);
     result.reset();
     result.bind_all(id, draw.outcome, 0.1 * normal(random) + (draw.outcome == "bounce" ? 0.3 : 0.0),
                     double(draw.fragments[0]) / n, static_cast<std::int64_t>(draw.fragments.size()), on_wall,
-                    0.5 * n * std::pow(double(point["impact_speed"]), 2));
+                    0.5 * n * std::pow(double(point["impact_speed"]), 2), document, columns.initial_contacts,
+                    columns.energy_per_contact, columns.damage_ratio, columns.fractured_on_wall,
+                    columns.small_strain_exceeded);
     result.run();
     for (std::size_t rank = 0; rank < draw.fragments.size(); ++rank) {
       fragment.reset();
@@ -107,8 +138,10 @@ void write_results(SqliteDatabase& db) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: dashboard_store_fill STORE.sqlite (a new file)\n");
+  std::size_t document_bytes = 14000;
+  if (argc == 4 && std::string(argv[2]) == "--result-document-bytes") document_bytes = std::stoul(argv[3]);
+  if (argc != 2 && argc != 4) {
+    std::fprintf(stderr, "usage: dashboard_store_fill STORE.sqlite (a new file) [--result-document-bytes B]\n");
     return 2;
   }
   {
@@ -117,7 +150,7 @@ int main(int argc, char** argv) {
     std::printf("study %lld: %zu cases\n", static_cast<long long>(receipt.study_id), receipt.cases);
   }
   SqliteDatabase db(argv[1]);
-  write_results(db);
+  write_results(db, document_bytes);
   std::printf("results written\n");
   return 0;
 }

@@ -59,7 +59,7 @@ INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, repl
          replicate
   FROM n;
 INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count,
-                     mass_fraction_on_wall, impact_energy, wall_clock_seconds, data_file, document, committed_at)
+                     retained_mass_fraction, impact_energy, wall_clock_seconds, data_file, document, committed_at)
   SELECT k + 1, 1, outcome, 0.1, 0.9, 2, 1.0, 0.001, 0.2, NULL,
          json_object('outcome', json_object('class', outcome), 'padding', hex(randomblob(450))),
          unixepoch() - 7000 + k * 0.05 + 0.2

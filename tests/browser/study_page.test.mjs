@@ -1,6 +1,8 @@
 // A finished study's page in real Chromium: the plots hold the server's numbers (series and points
 // counted in the charts' own data), a plot choice and the case-table filters survive as a permalink,
-// a filter narrows the table, paging works, and a case's page offers its H5MD file for download.
+// a filter narrows the table, paging works; the outcome fields (damage ratio, flags, energy per
+// contact) are shown; the correlation service's fits are drawn over the points; a lookup table
+// downloads; and a case's page shows its outcome and offers its H5MD file for download.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -33,7 +35,8 @@ function chartContents(page, id) {
     const chart = document.getElementById(chartId);
     const u = chart.uplot;
     return {
-      curves: chart.curves.map((curve) => ({ label: curve.label, dashed: Boolean(curve.dashed), points: curve.points.map((p) => [p.x, p.y]) })),
+      curves: chart.curves.map((curve) => ({ label: curve.label, fit: curve.fit, dashed: curve.dashed,
+        points: curve.points.map((p) => [p.x, p.y]), band: curve.points.map((p) => [p.lo, p.hi]) })),
       seriesLabels: u ? u.series.slice(1).map((s) => s.label) : [],
       nonNull: u ? u.data.slice(1).map((column) => column.filter((v) => v !== null).length) : [],
       legend: chart.querySelectorAll('.legend li').length,
@@ -47,23 +50,20 @@ async function openStudy(page, search = '') {
   await page.waitForFunction(() => document.getElementById('plot-fragments').dataset.series !== undefined);
 }
 
-// Server-side numbers for one outcome: {label-free key 'N,gamma' -> [[speed, probability]...]}.
-function probabilities(outcome) {
+// Server-side numbers, one curve per N and gamma/k_n: [[speed, valueOf(row)]...] sorted by speed.
+function serverCurves(valueOf) {
   const curves = {};
   for (const row of grid.grid_points) {
     const key = `${row.grid_point.primaries},${row.grid_point.gamma_over_kn}`;
-    (curves[key] ||= []).push([row.grid_point.impact_speed, row.outcomes[outcome].probability]);
+    (curves[key] ||= []).push([row.grid_point.impact_speed, valueOf(row)]);
   }
   return Object.values(curves).map((points) => points.sort((a, b) => a[0] - b[0]));
 }
 
-// The per-group logistic fits of P in log impact speed that the page draws (docs/CORRELATIONS.md).
-async function speedFits(outcome) {
-  const summary = await service.get(`/api/studies/${studyId}/correlations`);
-  return summary.fits.filter((fit) => fit.kind === 'logistic' && fit.dose === 'impact_speed' &&
-    (!outcome || fit.response === outcome) && Object.keys(fit.group).length > 0 && fit.coefficients.length === 2);
-}
+const probabilities = (outcome) => serverCurves((row) => row.outcomes[outcome].probability);
 
+// The measured curves of a chart: neither a fit nor the small-strain rings.
+const measuredCurves = (chart) => chart.curves.filter((curve) => !curve.fit && !curve.label.startsWith('outside'));
 const sortedPoints = (curves) => curves.map((c) => c.points).sort((a, b) => JSON.stringify(a).localeCompare(JSON.stringify(b)));
 
 test('the plots hold one curve per N and gamma/k_n with a point per speed, and the server numbers', async () => {
@@ -71,29 +71,14 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
   await withScreenshot(page, 'study-plots', async () => {
     await openStudy(page);
     const probability = await chartContents(page, 'plot-probability');
-    const fits = await speedFits('break-up');
-    assert.ok(fits.length >= 1, 'break-up is fitted in at least one group');
-    assert.equal(probability.curves.length, 4 + fits.length);
-    assert.equal(probability.legend, 4 + fits.length);
-    // Each measured curve: its probability and the two bounds of its band, 3 values each; each
-    // fitted curve (dashed): 25 points over its fit's validity box.
-    assert.equal(probability.seriesLabels.length, 12 + fits.length);
-    assert.deepEqual(probability.nonNull, [...Array(12).fill(3), ...Array(fits.length).fill(25)]);
-    const measured = probability.curves.filter((curve) => !curve.dashed);
+    // The measured curves come first; the fitted ones and the small-strain rings (tested below) after.
+    const measured = measuredCurves(probability);
+    assert.equal(measured.length, 4);
+    assert.ok(probability.legend >= 4);
+    // Each curve: its probability and the two bounds of its band, 3 values each.
+    assert.equal(probability.seriesLabels.filter((label) => !/\(fit|^outside/.test(label)).length, 12);
+    assert.deepEqual(probability.nonNull.slice(0, 12), Array(12).fill(3));
     assert.deepEqual(sortedPoints(measured), sortedPoints(probabilities('break-up').map((points) => ({ points }))));
-    // The fitted curves are the fits' logistic(b0 + b1 ln v), from the slowest speed to the fastest.
-    const logistic = (eta) => 1 / (1 + Math.exp(-eta));
-    const ends = (points) => [points[0], points[points.length - 1]];
-    const drawn = probability.curves.filter((curve) => curve.dashed).map((curve) => ends(curve.points));
-    const expected = fits.map((fit) => ends([fit.validity.impact_speed.min, fit.validity.impact_speed.max]
-      .map((v) => [v, logistic(fit.coefficients[0] + fit.coefficients[1] * Math.log(v))])));
-    const byValue = (a, b) => a[0][1] - b[0][1] || a[1][1] - b[1][1];
-    drawn.sort(byValue);
-    expected.sort(byValue);
-    drawn.forEach((pair, i) => pair.forEach((point, k) => {
-      assert.ok(Math.abs(point[0] / expected[i][k][0] - 1) < 1e-12, 'speed');
-      assert.ok(Math.abs(point[1] - expected[i][k][1]) < 1e-12, 'probability');
-    }));
 
     for (const id of ['plot-retained', 'plot-restitution']) {
       const chart = await chartContents(page, id);
@@ -110,11 +95,6 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     const measuredCritical = critical.curves.filter((curve) => !curve.label.startsWith('fitted'));
     assert.equal(measuredCritical.flatMap((c) => c.points).length, crossing.length);
     assert.ok(crossing.length >= 1, 'break-up takes over somewhere between 0.005 and 0.3 d/tau');
-    // Fitted critical speeds: a point per fit and level with an estimate, at the fit's N.
-    const fittedCritical = critical.curves.filter((curve) => curve.label.startsWith('fitted')).flatMap((c) => c.points);
-    const estimates = fits.flatMap((fit) => fit.critical.filter((value) => typeof value.estimate === 'number')
-      .map((value) => [fit.group.primaries, value.estimate]));
-    assert.deepEqual(fittedCritical.sort(), estimates.sort());
     for (const [n, speed] of measuredCritical.flatMap((c) => c.points)) {
       assert.ok([8, 16].includes(n));
       assert.ok(speed > kSpeeds[0] && speed < kSpeeds[2]);
@@ -142,9 +122,7 @@ test('a plot choice is a permalink: the URL reproduces it', async () => {
     await again.locator('#case-table table').waitFor();
     assert.equal(await again.inputValue('#choose-outcome'), 'stick');
     const probability = await chartContents(again, 'plot-probability');
-    const measured = probability.curves.filter((curve) => !curve.dashed);
-    assert.deepEqual(sortedPoints(measured), sortedPoints(probabilities('stick').map((points) => ({ points }))));
-    assert.equal(probability.curves.length - measured.length, (await speedFits('stick')).length);
+    assert.deepEqual(sortedPoints(measuredCurves(probability)), sortedPoints(probabilities('stick').map((points) => ({ points }))));
   });
 });
 
@@ -178,29 +156,148 @@ test('filters narrow the case table, paging walks it, and both are kept in the U
   });
 });
 
-test("a case's page shows its fragments and attempts and downloads its H5MD file; absent services hide their panels", async () => {
+test("a case's page shows its outcome, validity, energy groups, fragments and attempts and downloads its H5MD file", async () => {
   const page = await openPage(browser, service);
   await withScreenshot(page, 'case-page', async () => {
     await openStudy(page);
-    // The export service is absent (404): no tables panel; the correlations list every speed fit.
-    assert.equal(await page.locator('#tables-panel').count(), 0);
-    assert.equal(await page.locator('#panel-correlations tbody tr').count(), (await speedFits()).length);
-    const caseId = Number(await page.locator('#case-table tbody tr').last().locator('a').textContent());
-    await page.locator('#case-table tbody tr').last().locator('a').click();
+    const row = page.locator('#case-table tbody tr').last();
+    const caseId = Number(await row.locator('a').textContent());
+    const listed = (await service.get(`/api/studies/${studyId}/case-table?limit=36`)).items.find((c) => c.id === caseId);
+    const flags = [listed.fractured_on_wall && 'fractured on wall', listed.small_strain_exceeded && 'small strain exceeded'].filter(Boolean);
+    assert.equal((await row.locator('td.flags').textContent()), flags.join(', '));
+    await row.locator('a').click();
     await page.locator('#case-title').waitFor();
     const detail = await service.get(`/api/cases/${caseId}`);
+    const { outcome, validity, dimensionless } = detail.result;
     assert.equal(await page.locator('#fragments-table tbody tr').count(), detail.fragments.length);
     assert.equal(await page.locator('#attempts-table tbody tr').count(), detail.attempt_history.length);
     assert.ok(await page.locator('#energy-shares tbody tr').count() >= 5);
-    const outcomeText = await page.locator('#outcome').textContent();
-    assert.match(outcomeText, new RegExp(`class${detail.result.outcome.class}`));
+    assert.equal(await page.locator('#outcome-class').textContent(), outcome.class);
+    const outcomeFacts = await facts(page, '#outcome-facts');
+    assert.equal(outcomeFacts['fractured on the wall'], outcome.fractured_on_wall ? 'yes' : 'no');
+    assert.equal(Number(outcomeFacts['retained mass fraction']), Number(outcome.retained_mass_fraction.toPrecision(4)));
+    assert.equal(Number(outcomeFacts['re-entrained mass fraction']), Number(outcome.reentrained_mass_fraction.toPrecision(4)));
+    const reentrained = page.locator('#reentrained-table tbody tr');
+    assert.equal(await reentrained.count(), outcome.reentrained_fragments.length);
+    for (const [i, fragment] of outcome.reentrained_fragments.entries())
+      assert.equal(Number(await reentrained.nth(i).locator('td').first().textContent()), fragment.primaries);
+    assert.match(await page.locator('#validity-verdict').textContent(), validity.small_strain ? /^Within/ : /^Outside/);
+    const groups = await facts(page, '#energy-groups-facts');
+    assert.equal(Number(groups['E_kin / (N_c E_break)']), Number(dimensionless.energy_per_contact.toPrecision(4)));
+    assert.equal(Number(groups['N_c, initial contacts']), dimensionless.initial_contacts);
     assert.doesNotMatch(await page.locator('#view').textContent(), /\[object /, 'every value shown as text, none as an object');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-h5')]);
-    const file = await download.path();
-    const bytes = readFileSync(file);
+    const bytes = readFileSync(await download.path());
     assert.deepEqual([...bytes.subarray(0, 8)], [0x89, 0x48, 0x44, 0x46, 0x0d, 0x0a, 0x1a, 0x0a], 'an HDF5 file');
     assert.equal(download.suggestedFilename(), `case-${caseId}.h5`);
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
   });
 });
+
+test('the outcome fields: damage ratio plot, flagged results, energy per contact along x', async () => {
+  const page = await openPage(browser, service);
+  await withScreenshot(page, 'study-outcome-fields', async () => {
+    await openStudy(page);
+    const damage = await chartContents(page, 'plot-damage');
+    assert.deepEqual(sortedPoints(damage.curves), sortedPoints(serverCurves((row) => row.damage_ratio?.mean).map((points) => ({ points }))));
+    assert.equal(damage.curves.flatMap((c) => c.points).length, 12);
+
+    const summary = await page.locator('#flags-summary').evaluate((node) => ({ ...node.dataset }));
+    for (const flag of ['fractured_on_wall', 'small_strain_exceeded', 'small_strain_unchecked'])
+      assert.equal(Number(summary[flag]), grid.grid_points.reduce((sum, row) => sum + row[flag], 0), flag);
+    const flaggedRows = grid.grid_points.filter((row) => row.fractured_on_wall + row.small_strain_exceeded + row.small_strain_unchecked > 0);
+    assert.equal(Number(await page.locator('#flags-table').getAttribute('data-rows')), flaggedRows.length);
+    const probability = await chartContents(page, 'plot-probability');
+    const rings = probability.curves.filter((curve) => curve.label.startsWith('outside the small-strain range'));
+    const exceeded = grid.grid_points.filter((row) => row.small_strain_exceeded > 0);
+    assert.equal(rings.length, exceeded.length > 0 ? 1 : 0);
+    assert.equal(rings.flatMap((curve) => curve.points).length, exceeded.length);
+
+    await page.selectOption('#choose-x', 'energy_per_contact');
+    await page.waitForURL(/x=energy_per_contact/);
+    await page.waitForFunction(() => document.getElementById('plot-probability').curves.length > 0);
+    const alongEnergy = await chartContents(page, 'plot-probability');
+    const expected = {};
+    for (const row of grid.grid_points)
+      (expected[`${row.grid_point.primaries},${row.grid_point.gamma_over_kn}`] ||= [])
+        .push([row.energy_per_contact_mean, row.outcomes['break-up'].probability]);
+    const measured = measuredCurves(alongEnergy);
+    assert.deepEqual(sortedPoints(measured), sortedPoints(Object.values(expected).map((points) => ({ points: points.sort((a, b) => a[0] - b[0]) }))));
+    assert.deepEqual(page.problems, []);
+  });
+});
+
+test('the correlations service: fitted curves with bands over the points, critical speeds against N, their table', async () => {
+  const page = await openPage(browser, service);
+  await withScreenshot(page, 'study-correlations', async () => {
+    await openStudy(page);
+    const summary = await service.get(`/api/studies/${studyId}/correlations`);
+    const groupFits = summary.fits.filter((fit) => fit.kind === 'logistic' && fit.response === 'break-up' &&
+      fit.dose === 'impact_speed' && !fit.name.endsWith('.pooled'));
+    assert.equal(groupFits.length, 4, 'one fit per N and gamma/k_n');
+    const documents = await Promise.all(groupFits.map((fit) => service.get(`/api/studies/${studyId}/correlations/${fit.name}`)));
+    const withCurves = documents.filter((document) => document.curves.length > 0);
+    assert.ok(withCurves.length >= 1, 'some group has a fitted curve');
+    await page.waitForFunction((n) => document.getElementById('plot-probability').dataset.fitted === String(n), withCurves.length,
+      { timeout: 60000 });
+    const probability = await chartContents(page, 'plot-probability');
+    const fitted = probability.curves.filter((curve) => curve.label.endsWith('(fit)'));
+    assert.equal(fitted.length, withCurves.length);
+    for (const document of withCurves) {
+      const drawn = probability.curves.find((curve) => curve.fit === document.name);
+      assert.ok(drawn, document.name);
+      assert.deepEqual(drawn.points, document.curves[0].points.map((point) => [point.dose, point.value]));
+      assert.deepEqual(drawn.band, document.curves[0].points.map((point) => point.ci95));
+      const measured = probability.curves.find((curve) => curve.label === drawn.label.replace(' (fit)', ''));
+      assert.ok(measured && measured.points.length === 3, 'drawn over its measured curve');
+    }
+    // Measured curves and their bands, fitted curves and their bands, in uPlot's data.
+    assert.equal(probability.seriesLabels.length, 12 + 3 * fitted.length + (probability.curves.length - 4 - fitted.length));
+
+    const critical = await chartContents(page, 'plot-critical');
+    const expected = [];
+    for (const fit of groupFits)
+      for (const value of fit.critical)
+        if (typeof value.estimate === 'number') expected.push([fit.group.primaries, value.estimate]);
+    const fittedCritical = critical.curves.filter((curve) => curve.label.startsWith('fitted'));
+    assert.deepEqual(fittedCritical.flatMap((curve) => curve.points).sort(), expected.sort());
+    // v50 with its 95 % interval as a band: the summary's intervals.
+    const v50 = groupFits.flatMap((fit) => fit.critical.filter((value) => value.level === 0.5 && typeof value.estimate === 'number')
+      .map((value) => [fit.group.primaries, ...value.ci95]));
+    const drawnV50 = fittedCritical.filter((curve) => curve.label.startsWith('fitted v50'))
+      .flatMap((curve) => curve.points.map(([n], i) => [n, ...curve.band[i]]));
+    assert.deepEqual(drawnV50.sort(), v50.sort());
+    assert.equal(await page.locator('#correlations-table tbody tr').count(), 4);
+    assert.deepEqual(page.foreignRequests, []);
+    assert.deepEqual(page.problems, []);
+  });
+});
+
+test('a table downloads', async () => {
+  const page = await openPage(browser, service);
+  await withScreenshot(page, 'study-table-download', async () => {
+    await openStudy(page);
+    await page.locator('#tables-panel a[data-format="csv"]').waitFor();
+    const link = page.locator('#tables-panel a[data-format="csv"]');
+    const [download] = await Promise.all([page.waitForEvent('download'), link.click()]);
+    const text = readFileSync(await download.path(), 'utf8');
+    const direct = await fetch(`${service.origin}${await link.getAttribute('href')}`);
+    assert.equal(text, await direct.text(), 'the file is what the service serves');
+    const lines = text.trim().split('\r\n');
+    const headerLines = Number(lines[0].split(',')[1]);
+    const names = lines[headerLines].split(',');
+    const rows = lines.slice(headerLines + 2).map((line) => line.split(','));
+    assert.equal(rows.length, grid.grid_points.length, 'one row per grid point');
+    const speed = names.indexOf('impact_speed');
+    assert.ok(speed >= 0 && names.includes('p_stick'));
+    assert.deepEqual([...new Set(rows.map((row) => Number(row[speed])))].sort((a, b) => a - b), kSpeeds);
+    assert.deepEqual(page.foreignRequests, []);
+  });
+});
+
+// A definition list's entries, by label.
+function facts(page, selector) {
+  return page.locator(selector).evaluate((list) => Object.fromEntries([...list.querySelectorAll('dt')]
+    .map((term) => [term.textContent, term.nextElementSibling.textContent])));
+}

@@ -74,7 +74,7 @@ TEST_CASE("force, overlap and radius of the law obey eq 1 in its general form") 
       const auto r = law.respond(delta, c);
       const double a = r.contact_radius;
       const double e = c.modulus, w = c.work_of_adhesion, rs = c.radius, pi = std::numbers::pi;
-      // DESIGN.md eq 1 (general form): F = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3)
+      // docs/MODEL.md section 2, eq 1 (general form): F = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3)
       CHECK_THAT(r.force, WithinRel(4.0 * e * a * a * a / (3.0 * rs) - std::sqrt(8.0 * pi * w * e * a * a * a), 1e-9));
       // eq 2 (general form): delta = a^2/R* - sqrt(2 pi w a / E*)
       CHECK(std::fabs(a * a / rs - std::sqrt(2.0 * pi * w * a / e) - delta) < 1e-12 * c.critical_overlap + 1e-15);

@@ -1,5 +1,5 @@
-// Ballistic (BCCA) clusters of lognormal primaries relax to JKR equilibrium (DESIGN.md "Clusters",
-// MODEL.md 11.1): every contact at the zero-load overlap of its own pair, no net force on any
+// Ballistic (BCCA) clusters of lognormal primaries relax to JKR equilibrium (docs/MODEL.md
+// 11.1): every contact at the zero-load overlap of its own pair, no net force on any
 // primary on the scale of its own pull-off force, at rest, in one piece, nothing broken. The
 // expectations are computed here from eqs 1, 2, 4 and 5, not taken from the engine.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // A cluster built at touching distance is relaxed to mechanical equilibrium before use
-// (DESIGN.md "Clusters"): contacts at the JKR equilibrium overlap a0^2/(3R*), at rest, intact.
+// (docs/MODEL.md 11.1): contacts at the JKR equilibrium overlap a0^2/(3R*), at rest, intact.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -4,7 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 
+#include "engine/impact/json_schema.hpp"
 #include "orchestrator/fitting/correlation_json.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/fragment_sizes.hpp"
@@ -34,7 +36,22 @@ CaseOutcomeTable study_of(const std::vector<double>& speeds, const std::vector<s
 CorrelationSet correlations_of(const CaseOutcomeTable& table) {
   CorrelationRequest request;
   request.speed_axis = "impact_speed";
-  return compute_correlations(table, request, {7, "hash", 1, "test"});
+  return compute_correlations(table, request, {7, std::string(64, 'a'), 1, "test"});
+}
+
+// The summary and every document of the set are valid against schemas/correlation.schema.json,
+// whatever their fits' status.
+void check_documents_against_schema(const CorrelationSet& set) {
+  std::ifstream file(std::string(AEROBREAK_SOURCE_DIR) + "/schemas/correlation.schema.json");
+  REQUIRE(file);
+  const JsonSchema schema(nlohmann::ordered_json::parse(file));
+  INFO(describe(schema.validate(correlation_summary_json(set))));
+  CHECK(schema.validate(correlation_summary_json(set)).empty());
+  for (const auto& name : fit_names(set)) {
+    const auto document = *fit_json(set, name);
+    INFO(name << ": " << describe(schema.validate(document)));
+    CHECK(schema.validate(document).empty());
+  }
 }
 
 const LogisticFit& logistic_named(const CorrelationSet& set, const std::string& name) {
@@ -70,6 +87,7 @@ TEST_CASE("Complete separation: Firth's estimate, a bounded v50 inside the brack
   const auto json = fit_json(set, fit.common.name);
   REQUIRE(json);
   CHECK(nlohmann::json::parse(json->dump()).at("separation").at("complete") == true);
+  check_documents_against_schema(set);
 }
 
 TEST_CASE("Quasi-complete separation is reported as such, with a bounded v50", "[fitting][separation]") {
@@ -82,6 +100,7 @@ TEST_CASE("Quasi-complete separation is reported as such, with a bounded v50", "
   REQUIRE(fit.critical[1].upper);
   CHECK(*fit.critical[1].lower >= 0.005);
   CHECK(*fit.critical[1].upper <= 0.08);
+  check_documents_against_schema(set);
 }
 
 TEST_CASE("A one-point grid says it has too few points, for every fit", "[fitting][edge]") {
@@ -95,6 +114,7 @@ TEST_CASE("A one-point grid says it has too few points, for every fit", "[fittin
   REQUIRE_FALSE(set.retained_fraction.empty());
   CHECK(set.retained_fraction[0].common.status == FitStatus::insufficient_data);
   CHECK(logistic_named(set, "break-up.speed.g1").common.detail.find("too few points") != std::string::npos);
+  check_documents_against_schema(set);
 }
 
 TEST_CASE("Grid points whose cases are all undetermined are counted, left out of the fits, and never guessed",
@@ -113,6 +133,7 @@ TEST_CASE("Grid points whose cases are all undetermined are counted, left out of
   const auto json = grid_points_json(set);
   CHECK(json.at("grid_points")[2].at("outcomes").at("stick").at("probability").is_null());
   CHECK(fit_json(set, "grid-points") == json);
+  check_documents_against_schema(set);
 }
 
 TEST_CASE("A study that is all undetermined, or has no transition, fits nothing and says why", "[fitting][edge]") {
@@ -125,6 +146,8 @@ TEST_CASE("A study that is all undetermined, or has no transition, fits nothing 
   REQUIRE(stick.common.validity.size() == 1);
   CHECK(stick.common.validity[0].min == 0.01);
   CHECK(stick.common.validity[0].max == 0.04);
+  check_documents_against_schema(undetermined);
+  check_documents_against_schema(all_stick);
 }
 
 TEST_CASE("Fragment sizes drawn from a power law give back its exponent, and the lognormal loses Vuong's test",

@@ -23,6 +23,17 @@ TEST_CASE("Wilson interval: textbook values and edge cases", "[statistics]") {
   CHECK_THROWS(wilson_interval(3, 2));
 }
 
+TEST_CASE("Wilson interval: the bound at k = 0 is exactly 0 and at k = n exactly 1, not round-off (issue 15 #12)",
+          "[statistics]") {
+  // Centre and half-width are equal in exact arithmetic there; in doubles their difference was
+  // 5.55e-17 for k = 0 of n = 20, printed in the outcome table.
+  for (std::size_t n = 1; n <= 1000; ++n) {
+    INFO("n = " << n);
+    CHECK(wilson_interval(0, n)->lower == 0.0);
+    CHECK(wilson_interval(n, n)->upper == 1.0);
+  }
+}
+
 TEST_CASE("Wilson interval narrows as 1/sqrt(n) at a fixed proportion", "[statistics]") {
   const auto small = wilson_interval(30, 100);
   const auto large = wilson_interval(3000, 10000);

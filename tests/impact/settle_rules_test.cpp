@@ -87,7 +87,7 @@ TEST_CASE("a break-up whose pieces in flight keep changing stops by the outcome-
 }
 
 TEST_CASE("on real impacts the outcome-fixed rule stops no later than the quiet rule, with the same outcome") {
-  // Ballistic clusters of 32 primaries breaking up on an adhesive wall (the default study's model
+  // Ballistic clusters of 32 primaries breaking up on an adhesive wall (the former default study's model
   // at gamma/k_n = 0.001); on this build the rule stops the first at 344 tau instead of 361 and
   // the second at 301 tau instead of 323 (the monitor does not act on the run, so both runs
   // follow the same trajectory up to the first stop).

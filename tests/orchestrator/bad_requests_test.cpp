@@ -1,8 +1,6 @@
 // Malformed, invalid, oversized and unauthorised requests get a 4xx whose JSON body says what was
 // wrong, and the service stays up and answers after each.
-#include <arpa/inet.h>
-#include <sys/socket.h>
-
+#include "tests/orchestrator/raw_http.hpp"
 #include "tests/orchestrator/service_process.hpp"
 #include "tests/support/run_command.hpp"
 
@@ -33,22 +31,6 @@ bool names_pointer(const Json& body, const std::string& pointer) {
   for (const auto& violation : body.at("violations"))
     if (violation.at("pointer").get<std::string>().rfind(pointer, 0) == 0) return true;
   return false;
-}
-
-// Bytes that are not HTTP at all, straight to the socket.
-void send_garbage(int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  REQUIRE(fd >= 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
-  const std::string garbage = "\x01\x02 NOT HTTP \xff\xfe\r\n\r\n";
-  CHECK(::send(fd, garbage.data(), garbage.size(), MSG_NOSIGNAL) > 0);
-  char buffer[256];
-  ::recv(fd, buffer, sizeof buffer, 0);
-  ::close(fd);
 }
 
 }  // namespace
@@ -116,7 +98,9 @@ TEST_CASE("Bad requests are refused with a JSON body naming the problem, and the
     CHECK(post(service, base + "/cancel", "").status == 409);
   }
   SECTION("bytes that are not HTTP") {
-    send_garbage(service.port());
+    RawConnection connection(service.port());
+    CHECK(connection.send("\x01\x02 NOT HTTP \xff\xfe\r\n\r\n"));
+    CHECK(status_of(connection.receive_all(std::chrono::seconds(5))) == 400);
   }
   CHECK(service.get("/api/health").at("status") == "ok");
 }

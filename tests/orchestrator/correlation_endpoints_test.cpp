@@ -83,6 +83,21 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   for (const auto& point : curve) CHECK(point.at("ci95")[0].get<double>() <= point.at("value").get<double>());
   CHECK(fit.at("validity").at("impact_speed").at("max") == 0.3);
 
+  // ETags: a client holding the current document gets 304 without a body; each document has its own.
+  auto client = service.client();
+  const auto tagged = client.Get("/api/studies/1/correlations");
+  REQUIRE(tagged);
+  const std::string etag = tagged->get_header_value("ETag");
+  CHECK(etag.size() == 34);
+  const auto unchanged = client.Get("/api/studies/1/correlations", httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(unchanged);
+  CHECK(unchanged->status == 304);
+  CHECK(unchanged->body.empty());
+  const auto other = client.Get("/api/studies/1/correlations/break-up.speed.g1", httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(other);
+  CHECK(other->status == 200);
+  CHECK(other->get_header_value("ETag") != etag);
+
   const Answer unknown = get(service, "/api/studies/1/correlations/break-up.speed.g9");
   CHECK(unknown.status == 404);
   CHECK(unknown.body.at("error").get<std::string>().find("no fit 'break-up.speed.g9'") != std::string::npos);

@@ -8,13 +8,6 @@
 namespace aerobreak::testing {
 namespace {
 
-// Cases of ~0.3-1 s each on one core: slow enough to kill something mid-study.
-Json slow_study(const std::string& name, int cases) {
-  Json speeds = Json::array();
-  for (int i = 0; i < cases; ++i) speeds.push_back(0.004 + 0.001 * i);
-  return small_study(name, speeds, 1, 128, 40000.0);
-}
-
 std::string study_path(std::int64_t study, const std::string& tail = {}) {
   return "/api/studies/" + std::to_string(study) + tail;
 }

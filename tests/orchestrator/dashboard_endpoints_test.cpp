@@ -40,6 +40,28 @@ std::int64_t finished_study(const ServiceProcess& service) {
   return id;
 }
 
+// A grid point's means of the outcome columns and its flag counts, against the results at `speed`.
+void check_outcome_columns(const Json& row, const Json& results, double speed) {
+  double damage = 0.0, energy = 0.0;
+  std::size_t n = 0, fractured = 0, exceeded = 0;
+  for (const auto& result : results)
+    if (result.at("grid_point").at("impact_speed") == speed) {
+      damage += result.at("damage_ratio").get<double>();
+      energy += result.at("energy_per_contact").get<double>();
+      fractured += result.at("fractured_on_wall").get<bool>();
+      exceeded += result.at("small_strain_exceeded").get<bool>();
+      ++n;
+    }
+  REQUIRE(n == 3);
+  CHECK(row.at("damage_ratio").at("n") == 3);
+  CHECK(row.at("damage_ratio").at("mean").get<double>() == Approx(damage / 3.0));
+  CHECK(row.at("damage_ratio_mean").get<double>() == Approx(damage / 3.0));
+  CHECK(row.at("energy_per_contact").at("mean").get<double>() == Approx(energy / 3.0));
+  CHECK(row.at("fractured_on_wall") == fractured);
+  CHECK(row.at("small_strain_exceeded") == exceeded);
+  CHECK(row.at("small_strain_unchecked") == 0);
+}
+
 }  // namespace
 
 TEST_CASE("Dashboard endpoints: grid statistics, case table, fragment sizes and case files", "[service][dashboard]") {
@@ -71,6 +93,7 @@ TEST_CASE("Dashboard endpoints: grid statistics, case table, fragment sizes and 
       // t(0.975, 2) = 4.303 (A&S table 26.10).
       const double sd = std::sqrt(std::max(0.0, (squares - sum * sum / 3.0) / 2.0));
       CHECK(retained.at("ci95")[1].get<double>() == Approx(sum / 3.0 + 4.3027 * sd / std::sqrt(3.0)).margin(1e-9));
+      check_outcome_columns(row, results, speed);
     }
   }
 
@@ -89,6 +112,11 @@ TEST_CASE("Dashboard endpoints: grid statistics, case table, fragment sizes and 
     REQUIRE(last.at("items").size() == 1);
     CHECK(last.at("items")[0].at("id") == all.at("items")[8].at("id"));
     CHECK(all.at("items")[0].contains("retained_mass_fraction"));
+    for (const auto& row : all.at("items"))
+      for (const auto& result : results)
+        if (result.at("case") == row.at("id"))
+          for (const char* column : {"damage_ratio", "fractured_on_wall", "small_strain_exceeded", "retained_mass_fraction"})
+            CHECK(row.at(column) == result.at(column));
 
     CHECK(get(service, study + "/case-table?axis.friction=0.3").status == 400);
     CHECK_THAT(get(service, study + "/case-table?axis.friction=0.3").body, Catch::Contains("no axis 'friction'"));

@@ -1,5 +1,6 @@
-// Progress and the outcome table over real HTTP: served from the store's summaries, the outcome
-// table with an ETag that follows the study's results, and 304 for a client that has it.
+// Progress, the outcome table and the grid statistics over real HTTP: served from the store's
+// summaries, the outcome table and the grid statistics with ETags that follow the study's results,
+// and 304 for a client that has them.
 #include "tests/orchestrator/service_process.hpp"
 
 namespace aerobreak::testing {
@@ -22,50 +23,59 @@ Answer get(const ServiceProcess& service, const std::string& path, const std::st
 
 }  // namespace
 
-TEST_CASE("The outcome table's ETag follows the study's results, and If-None-Match gets 304", "[service]") {
+// The outcome table and the dashboard's grid statistics are both kept by the study's versions
+// (VersionedDocuments): each carries an ETag that follows the study's results.
+TEST_CASE("The outcome table's and the grid statistics' ETags follow the study's results, and If-None-Match gets 304",
+          "[service]") {
   ScratchDirectory scratch("read-endpoints");
   ServiceProcess service(scratch.path());
   const auto study = submit(service, small_study("tagged", {0.005, 0.08}, 2)).at("id").get<std::int64_t>();
-  const std::string path = "/api/studies/" + std::to_string(study) + "/outcomes";
-  const Answer before = get(service, path);
-  REQUIRE(before.status == 200);
-  REQUIRE_FALSE(before.etag.empty());
-
+  const std::vector<std::string> paths{"/api/studies/" + std::to_string(study) + "/outcomes",
+                                       "/api/studies/" + std::to_string(study) + "/grid"};
+  std::vector<Answer> before;
+  for (const auto& path : paths) before.push_back(get(service, path));
   REQUIRE(eventually([&] { return study_complete(service, study); }, 120s));
-  const Answer after = get(service, path);
-  REQUIRE(after.status == 200);
-  CHECK(after.etag != before.etag);
-  const auto table = Json::parse(after.body);
-  REQUIRE(table.at("grid_points").size() == 2);
-  for (const auto& point : table.at("grid_points")) CHECK(point.at("finished") == 2);
   const auto progress = service.get("/api/studies/" + std::to_string(study) + "/progress");
   CHECK(progress.at("counts").at("done") == 4);
   CHECK(progress.at("complete") == true);
 
-  for (const std::string& tags : {after.etag, "W/" + after.etag, std::string("*"), "\"other\", " + after.etag}) {
-    INFO("If-None-Match: " << tags);
-    const Answer cached = get(service, path, tags);
-    CHECK(cached.status == 304);
-    CHECK(cached.body.empty());
-    CHECK(cached.etag == after.etag);
+  std::vector<Answer> after;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    INFO(paths[i]);
+    REQUIRE(before[i].status == 200);
+    REQUIRE_FALSE(before[i].etag.empty());
+    after.push_back(get(service, paths[i]));
+    REQUIRE(after[i].status == 200);
+    CHECK(after[i].etag != before[i].etag);
+    const auto table = Json::parse(after[i].body);
+    REQUIRE(table.at("grid_points").size() == 2);
+    for (const auto& point : table.at("grid_points")) CHECK(point.at("finished") == 2);
+    for (const std::string& tags : {after[i].etag, "W/" + after[i].etag, std::string("*"), "\"other\", " + after[i].etag}) {
+      INFO("If-None-Match: " << tags);
+      const Answer cached = get(service, paths[i], tags);
+      CHECK(cached.status == 304);
+      CHECK(cached.body.empty());
+      CHECK(cached.etag == after[i].etag);
+    }
+    const Answer outdated = get(service, paths[i], before[i].etag);
+    CHECK(outdated.status == 200);
+    CHECK(outdated.body == after[i].body);
   }
-  const Answer outdated = get(service, path, before.etag);
-  CHECK(outdated.status == 200);
-  CHECK(outdated.body == after.body);
+  CHECK(after[0].etag != after[1].etag);
 
   // Another study, even one sharing finished cases, changes nothing of this one.
   const auto other = submit(service, small_study("sharing", {0.08, 0.3}, 2)).at("id").get<std::int64_t>();
   REQUIRE(eventually([&] { return study_complete(service, other); }, 120s));
-  CHECK(get(service, path, after.etag).status == 304);
+  for (std::size_t i = 0; i < paths.size(); ++i) CHECK(get(service, paths[i], after[i].etag).status == 304);
   const auto shared = Json::parse(get(service, "/api/studies/" + std::to_string(other) + "/outcomes").body);
   CHECK(shared.at("grid_points")[0].at("finished") == 2);
   CHECK(service.kill(SIGTERM) == 0);
 }
 
-TEST_CASE("Progress and outcomes of a study that does not exist are 404 with a JSON body", "[service]") {
+TEST_CASE("Progress, outcomes and grid of a study that does not exist are 404 with a JSON body", "[service]") {
   ScratchDirectory scratch("read-endpoints-404");
   ServiceProcess service(scratch.path());
-  for (const char* path : {"/api/studies/999/progress", "/api/studies/999/outcomes"}) {
+  for (const char* path : {"/api/studies/999/progress", "/api/studies/999/outcomes", "/api/studies/999/grid"}) {
     INFO(path);
     const Answer answer = get(service, path);
     CHECK(answer.status == 404);

@@ -39,11 +39,13 @@ inline bool process_alive(pid_t pid) { return pid > 0 && ::kill(pid, 0) == 0; }
 
 class ServiceProcess {
  public:
-  ServiceProcess(const std::filesystem::path& directory, std::vector<std::string> extra_arguments = {})
-      : directory_(directory) {
+  // The store is DIRECTORY/store.sqlite unless `store_file` names another.
+  ServiceProcess(const std::filesystem::path& directory, std::vector<std::string> extra_arguments = {},
+                 std::filesystem::path store_file = {})
+      : directory_(directory), store_file_(store_file.empty() ? directory / "store.sqlite" : store_file) {
     const auto port_file = directory_ / "port";
     std::filesystem::remove(port_file);
-    std::vector<std::string> arguments{AEROBREAK_BINARY, "serve",  "--store", (directory_ / "store.sqlite").string(),
+    std::vector<std::string> arguments{AEROBREAK_BINARY, "serve",  "--store", store_file_.string(),
                                        "--port",         "0",      "--port-file", port_file.string(),
                                        "--idle-shutdown", "1"};
     // Two ranks unless the test chooses (an option may be given once).
@@ -75,7 +77,7 @@ class ServiceProcess {
   pid_t pid() const { return pid_; }
   int port() const { return port_; }
   std::string url() const { return "http://127.0.0.1:" + std::to_string(port_); }
-  std::filesystem::path store_file() const { return directory_ / "store.sqlite"; }
+  const std::filesystem::path& store_file() const { return store_file_; }
   std::string log() const {
     std::ifstream in(directory_ / "serve.log");
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -125,6 +127,7 @@ class ServiceProcess {
   }
 
   std::filesystem::path directory_;
+  std::filesystem::path store_file_;
   pid_t pid_ = -1;
   int port_ = 0;
   int exit_code_ = -1;
@@ -143,6 +146,13 @@ inline Json small_study(const std::string& name, Json speeds, int replicates, in
           {"axes", {{"impact_speed", {{"values", speeds}}}}},
           {"replicates", {{"count", replicates}, {"seed", 7}}},
           {"execution", {{"max_attempts", 3}, {"case_wall_time", 600}}}};
+}
+
+// Cases of ~0.3-1 s each on one core: slow enough to kill something, or fill a disk, mid-study.
+inline Json slow_study(const std::string& name, int cases) {
+  Json speeds = Json::array();
+  for (int i = 0; i < cases; ++i) speeds.push_back(0.004 + 0.001 * i);
+  return small_study(name, speeds, 1, 128, 40000.0);
 }
 
 inline Json submit(const ServiceProcess& service, const Json& study, int expected_status = 201) {

@@ -28,7 +28,7 @@ TEST_CASE("the default study parses, as a file and as a service would take it") 
   CHECK_FALSE(study.description.empty());
   REQUIRE(study.axes.size() == 3);
   CHECK(study.axes[0].name == "impact_speed");
-  CHECK(study.axes[1].name == "gamma_over_kn");
+  CHECK(study.axes[1].name == "/wall/adhesive");
   CHECK(study.axes[1].values.size() == 2);
   CHECK(study.axes[2].name == "primaries");
   CHECK(study.axes[2].values.size() == 2);
@@ -37,12 +37,15 @@ TEST_CASE("the default study parses, as a file and as a service would take it") 
   const auto cases = study.cases;
   CHECK(cases.size() == study.case_count());
   std::set<std::string> hashes;
+  std::set<bool> walls;
   for (const auto& c : cases) {
     hashes.insert(c.hash);
-    CHECK(c.document["wall"]["adhesive"] == true);
+    walls.insert(c.document["wall"]["adhesive"].get<bool>());
+    CHECK(c.document["units"] == "physical");
     CHECK(c.document["model"]["damping"]["law"] == "viscoelastic");
   }
   CHECK(hashes.size() == cases.size());
+  CHECK(walls == std::set<bool>{false, true});  // both walls: stick needs one, bounce the other
 
   // Over HTTP: no cluster files, tighter limits.
   StudyLimits service;

@@ -41,7 +41,8 @@ function seriesOptions(curves, { withBands, pointsOnly, data }) {
     series.push({
       label: curve.label, stroke: color, width: curve.dashed ? 1.5 : 2, dash: curve.dashed ? [6, 4] : undefined,
       spanGaps: true, paths: pointsOnly || curve.pointsOnly ? () => null : undefined,
-      points: { show: !curve.dashed, size: 6, fill: color },
+      points: curve.hollow ? { show: true, size: 12, width: 2, stroke: color, fill: 'transparent' }
+        : { show: !curve.dashed, size: 6, fill: color },
     });
     if (!withBands || !curve.points.some((point) => point.lo !== null && point.lo !== undefined)) return;
     columns.push(data.column(curve, 'hi'), data.column(curve, 'lo'));
@@ -60,7 +61,7 @@ function legend(curves) {
   }));
 }
 
-// Draws `curves` ([{label, points: [{x, y, lo, hi}], dashed, pointsOnly}]) into `container`.
+// Draws `curves` ([{label, points: [{x, y, lo, hi}], dashed, pointsOnly, hollow}]) into `container`.
 export function plotCurves(container, curves, { xLabel, yLabel, xLog = true, yLog = false, yRange, withBands = true, pointsOnly = false }) {
   if (container.uplot) container.uplot.destroy();
   container.uplot = null;

@@ -1,72 +1,98 @@
-// What the correlations and export services add to a study page, where they exist: fitted curves
-// (one more dashed series per curve), critical speeds v10/v50/v90 with their intervals (one more
-// series against N) and lookup-table downloads. Each is optional: an endpoint that answers 404
-// hides its part. The shape read here is documented in docs/WEB.md.
-import { getOptionalJson } from './api.js';
+// What the correlations service (docs/CORRELATIONS.md) adds to a study page: the per-group logistic
+// fits of an outcome against the impact speed or the energy per contact, drawn as dashed curves with
+// their 95 % bands over the measured points; the fitted critical speeds v10, v50, v90 against N with
+// their profile-likelihood intervals; a table of them and the scaling exponents of v50. The summary
+// (GET /api/studies/ID/correlations) names every fit with its group and critical values; a fit's
+// curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (no
+// such service, or no results yet) hides these parts; so does a 409, which older services gave for
+// a study without results.
+import { ApiError, getJson } from './api.js';
 import { valueKey } from './series.js';
 
-const kTableFormats = ['csv', 'json'];
-const kCurvePoints = 25;
-const kLevels = { 0.1: 'v10', 0.5: 'v50', 0.9: 'v90' };
+// The dose of a fit for each choice of x (series.js).
+const kDoseOfX = { impact_speed: 'impact_speed', energy_per_contact: 'energy_per_contact' };
+export const kLevelNames = { 0.1: 'v10', 0.5: 'v50', 0.9: 'v90' };
 
-const logistic = (eta) => 1 / (1 + Math.exp(-eta));
-
-// A per-group fit of P in log impact speed from the correlations summary (docs/CORRELATIONS.md):
-// its curve P(v) = logistic(b0 + b1 ln v) over its validity box, and its critical speeds.
-function speedFitItem(fit) {
-  const [b0, b1] = fit.coefficients;
-  const { min, max } = fit.validity.impact_speed;
-  const curve = Array.from({ length: kCurvePoints }, (_, i) => {
-    const speed = min * (max / min) ** (i / (kCurvePoints - 1));
-    return [speed, logistic(b0 + b1 * Math.log(speed))];
-  });
-  const criticalSpeeds = Object.fromEntries(fit.critical.filter((value) => kLevels[value.level])
-    .map((value) => [kLevels[value.level], { value: value.estimate, ci95: value.ci95 }]));
-  return { name: fit.name, outcome: fit.response, group: fit.group, status: fit.status, curve, critical_speeds: criticalSpeeds };
-}
-
-// The study's fitted speed curves, one item per group and outcome; null without the service.
-export async function loadCorrelations(studyId) {
-  const body = await getOptionalJson(`/api/studies/${studyId}/correlations`);
-  if (!body) return null;
-  return (body.fits || []).filter((fit) => fit.kind === 'logistic' && fit.dose === 'impact_speed' &&
-    Object.keys(fit.group || {}).length > 0 && (fit.coefficients || []).length === 2 && fit.validity?.impact_speed)
-    .map(speedFitItem);
-}
-
-// The fitted probability curves for `outcome`, keyed like the measured curves (series.js).
-export function fittedCurves(correlations, outcome, measured) {
-  if (!correlations) return [];
-  const wanted = new Map(measured.map((curve) => [valueKey(curve.groupValues), curve]));
-  return correlations
-    .filter((item) => item.outcome === outcome && Array.isArray(item.curve))
-    .map((item) => ({ item, curve: wanted.get(valueKey(item.group || {})) }))
-    .filter(({ curve }) => curve)
-    .map(({ item, curve }) => ({
-      label: `${curve.label} (fit)`, color: curve.color, dashed: true,
-      points: item.curve.map(([x, y]) => ({ x, y })),
-    }));
-}
-
-// Fitted critical speeds against N, one series per level (v10, v50, v90) and group.
-export function fittedCriticalCurves(correlations, outcome) {
-  if (!correlations) return [];
-  const series = new Map();
-  for (const item of correlations) {
-    if (item.outcome !== outcome || !item.critical_speeds || !item.group || !('primaries' in item.group)) continue;
-    const { primaries, ...rest } = item.group;
-    for (const [level, estimate] of Object.entries(item.critical_speeds)) {
-      if (!estimate || typeof estimate.value !== 'number') continue;
-      const key = `${level} ${valueKey(rest)}`;
-      if (!series.has(key)) series.set(key, { label: `fitted ${level} ${Object.values(rest).join(', ')}`.trim(), points: [] });
-      const [lo, hi] = estimate.ci95 || [null, null];
-      series.get(key).points.push({ x: primaries, y: estimate.value, lo, hi });
-    }
+export async function loadCorrelationSummary(studyId) {
+  try {
+    return await getJson(`/api/studies/${studyId}/correlations`);
+  } catch (error) {
+    if (error instanceof ApiError && (error.status === 404 || error.status === 409)) return null;
+    throw error;
   }
-  return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
 }
 
-// The lookup-table formats the export service offers for the study; [] when it has none.
+// Whether every axis value of a fit's group equals the grid point's.
+const groupMatches = (group, gridPoint) => Object.entries(group).every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
+// Whether the group lies in the slice ({axis: valueKey}) the plots show.
+const inSlice = (group, slice) => Object.entries(slice).every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
+const isGroupFit = (fit, outcome, dose) => fit.kind === 'logistic' && fit.response === outcome && fit.dose === dose &&
+  !fit.name.endsWith('.pooled');
+
+export class Correlations {
+  constructor(studyId, summary) {
+    this.studyId = studyId;
+    this.summary = summary;
+    this.documents = new Map();
+  }
+
+  document(name) {
+    if (!this.documents.has(name))
+      this.documents.set(name, getJson(`/api/studies/${this.studyId}/correlations/${encodeURIComponent(name)}`));
+    return this.documents.get(name);
+  }
+
+  // The per-group fits of `outcome` against the dose of `xAxis` in `slice`; [] when x has no fits.
+  groupFits(outcome, xAxis, slice) {
+    const dose = kDoseOfX[xAxis];
+    if (!dose) return [];
+    return this.summary.fits.filter((fit) => isGroupFit(fit, outcome, dose) && inSlice(fit.group, slice));
+  }
+
+  // One dashed curve with its band per measured curve (series.js curvesAlong) that has a fit.
+  async fittedCurves(measured, { outcome, xAxis, slice }) {
+    const fits = this.groupFits(outcome, xAxis, slice);
+    const pairs = measured.map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
+      .filter(({ fit }) => fit);
+    const documents = await Promise.all(pairs.map(({ fit }) => this.document(fit.name)));
+    return pairs.flatMap(({ curve, fit }, i) => (documents[i].curves || []).slice(0, 1).map((fitted) => ({
+      label: `${curve.label} (fit)`, color: curve.color, dashed: true, fit: fit.name,
+      points: fitted.points.map((point) => ({ x: point.dose, y: point.value, lo: point.ci95[0], hi: point.ci95[1] })),
+    })));
+  }
+
+  // Fitted critical values against N: per level and per value of the other series axes, the
+  // groups' estimates with their 95 % intervals. v50 carries its band; v10 and v90 are dashed.
+  criticalCurves(outcome, xAxis, slice) {
+    const series = new Map();
+    for (const fit of this.groupFits(outcome, xAxis, slice)) {
+      if (!('primaries' in fit.group)) continue;
+      const { primaries, ...rest } = fit.group;
+      const others = Object.entries(rest).filter(([axis]) => !(axis in slice));
+      for (const critical of fit.critical || []) {
+        if (typeof critical.estimate !== 'number') continue;
+        const level = kLevelNames[critical.level] || `p${critical.level}`;
+        const key = `${level} ${valueKey(others)}`;
+        if (!series.has(key)) series.set(key, {
+          label: `fitted ${level}${others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`).join('')}`,
+          dashed: level !== 'v50', points: [] });
+        const [lo, hi] = critical.ci95 || [null, null];
+        series.get(key).points.push({ x: primaries, y: critical.estimate, lo: level === 'v50' ? lo : null, hi: level === 'v50' ? hi : null });
+      }
+    }
+    return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
+  }
+
+  // The scaling fit of v50 for `outcome` (exponents per axis), or null.
+  scaling(outcome) {
+    return this.summary.fits.find((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5) || null;
+  }
+}
+
+// The lookup-table formats of the export service (docs/WEB.md), offered when it answers HEAD for
+// CSV; [] when it has no such endpoint.
+const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor'];
+
 export async function tableFormats(studyId) {
   const response = await fetch(`/api/studies/${studyId}/tables?format=${kTableFormats[0]}`, { method: 'HEAD' });
   return response.status === 404 ? [] : kTableFormats;

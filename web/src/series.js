@@ -1,13 +1,33 @@
 // Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM.
 
-const kAxisLabels = { impact_speed: 'impact speed v₀ (d/τ)', gamma_over_kn: 'γ/k_n', primaries: 'N' };
-const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N' };
+const kAxisLabels = {
+  impact_speed: 'impact speed v₀ (d/τ)', gamma_over_kn: 'γ/k_n', primaries: 'N',
+  energy_per_contact: 'energy per contact E_kin / (N_c E_break)',
+};
+const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N', energy_per_contact: 'E/(N_c E_b)' };
 // Axes that get one curve per value (the others are fixed by the slice choosers).
 export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
+// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
+// which varies along the named axis (each point of a curve is still one grid point).
+const kDerivedX = { energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean' } };
 
 export const axisLabel = (name) => kAxisLabels[name] || name;
 const shortLabel = (name) => kShortLabels[name] || name;
 export const valueKey = (value) => JSON.stringify(value);
+
+// The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
+export const alongAxis = (xAxis) => (kDerivedX[xAxis] ? kDerivedX[xAxis].along : xAxis);
+export const xValueOf = (xAxis) => (kDerivedX[xAxis]
+  ? (row) => row[kDerivedX[xAxis].field] ?? null : (row) => row.grid_point[xAxis]);
+
+// The derived quantities the grid offers along x: those whose axis is swept and that some grid
+// point has a value of.
+export function derivedXChoices(grid) {
+  return Object.entries(kDerivedX)
+    .filter(([, { along, field }]) => grid.axes.some((axis) => axis.name === along && axis.values.length > 1) &&
+      grid.grid_points.some((row) => typeof row[field] === 'number'))
+    .map(([name]) => name);
+}
 
 // The axis along x: impact_speed when swept, else the first numeric axis with several values.
 export function defaultXAxis(axes) {
@@ -18,7 +38,8 @@ export function defaultXAxis(axes) {
 
 // Axes with several values other than x and the series axes: each fixed to one value.
 export function sliceAxes(axes, xAxis) {
-  return axes.filter((axis) => axis.values.length > 1 && axis.name !== xAxis && !kSeriesAxes.includes(axis.name));
+  const along = alongAxis(xAxis);
+  return axes.filter((axis) => axis.values.length > 1 && axis.name !== along && !kSeriesAxes.includes(axis.name));
 }
 
 export function inSlice(gridPoint, slice) {
@@ -33,16 +54,19 @@ function curveLabel(groupValues) {
 // One curve per combination of the series axes, among the grid points in the slice: points
 // {x, y, lo, hi} sorted by x, from yOf(row) = {y, lo, hi} or null (no value there).
 export function curvesAlong(rows, { axes, xAxis, slice, yOf }) {
-  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== xAxis && axis.values.length > 1);
+  const along = alongAxis(xAxis);
+  const xOf = xValueOf(xAxis);
+  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along && axis.values.length > 1);
   const curves = new Map();
   for (const row of rows) {
     if (!inSlice(row.grid_point, slice)) continue;
     const value = yOf(row);
-    if (!value || value.y === null || value.y === undefined) continue;
+    const x = xOf(row);
+    if (!value || value.y === null || value.y === undefined || x === null) continue;
     const groupValues = Object.fromEntries(seriesAxes.map((axis) => [axis.name, row.grid_point[axis.name]]));
     const key = valueKey(groupValues);
     if (!curves.has(key)) curves.set(key, { key, groupValues, label: curveLabel(groupValues), points: [] });
-    curves.get(key).points.push({ x: row.grid_point[xAxis], ...value });
+    curves.get(key).points.push({ x, ...value, row });
   }
   const sorted = [...curves.values()];
   for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);
@@ -97,12 +121,22 @@ export function criticalSpeedCurves(curves, level = 0.5) {
 // Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
 // per result.
 export function fragmentCurves(response, xAxis) {
+  const along = alongAxis(xAxis);
   return response.grid_points
     .filter((point) => point.results > 0)
-    .sort((a, b) => a.grid_point[xAxis] - b.grid_point[xAxis])
+    .sort((a, b) => a.grid_point[along] - b.grid_point[along])
     .map((point) => ({
-      key: valueKey(point.grid_point[xAxis]),
-      label: `${shortLabel(xAxis)} = ${point.grid_point[xAxis]} (${point.results} results)`,
+      key: valueKey(point.grid_point[along]),
+      label: `${shortLabel(along)} = ${point.grid_point[along]} (${point.results} results)`,
       points: point.sizes.map(([primaries, count]) => ({ x: primaries, y: count / point.results })),
     }));
+}
+
+// Grid points of the curves whose results carry a flag (e.g. small_strain_exceeded): one series of
+// markers at the curves' points, labelled with the number of flagged results.
+export function flaggedPoints(curves, flag, label) {
+  const points = curves.flatMap((curve) => curve.points.filter((point) => point.row[flag] > 0));
+  const results = points.reduce((sum, point) => sum + point.row[flag], 0);
+  return { label: `${label} (${results} results at ${points.length} grid points)`, pointsOnly: true, hollow: true,
+    color: '#b3261e', points: points.map(({ x, y, row }) => ({ x, y, count: row[flag] })) };
 }

@@ -1,29 +1,42 @@
 #!/usr/bin/env bash
-# Speed of aerobreak and LAMMPS side by side on the same clusters, model and time step.
+# Speed of aerobreak and LAMMPS side by side on the same clusters, model and time step, through
+# `aerobreak bench` (the stepping alone) and through `aerobreak impact` (a whole impact case run
+# as a user runs it: the cluster read from the file bench exported, relaxed, turned, placed, with
+# the settle check; its result's particle-steps/s count the stepping of the run loop).
 #
-# usage: compare.sh [SIZES] [STEPS]       e.g. compare.sh 1000,4000 20000 (the defaults)
+# usage: compare.sh [SIZES] [STEPS] [BENCH_OPTIONS]   e.g. compare.sh 1000,4000 20000 (the defaults)
+#        compare.sh 1024 20000 "--damping 0 --no-rolling --no-twisting --time-step 0.0158"
 # env:   AEROBREAK (default build/aerobreak)
-# Both codes run the full model (JKR, visco-elastic damping, Mindlin, rolling, twisting) with
-# LAMMPS's break rule (F = -F_c) and a wall without adhesion; see README.md for the mapping.
+# By default both codes run the full model (JKR, visco-elastic damping, Mindlin, rolling,
+# twisting); BENCH_OPTIONS change it, and the LAMMPS and impact runs follow. Always LAMMPS's
+# break rule (F = -F_c) and a wall without adhesion; see README.md for the mapping.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 sizes=${1:-1000,4000}
 steps=${2:-20000}
+read -r -a extra <<< "${3:-}"
 aerobreak=${AEROBREAK:-$here/../../../build/aerobreak}
 work=$(mktemp -d /tmp/aerobreak_compare.XXXXXX)
 
 "$aerobreak" bench --sizes "$sizes" --steps "$steps" --separation force --no-wall-adhesion --export "$work" \
-  | tee "$work/aerobreak.txt"
-printf '\n%9s %22s %22s %8s\n' N "aerobreak p-steps/s" "LAMMPS p-steps/s" ratio
+  "${extra[@]}" | tee "$work/aerobreak.txt"
+printf '\n%9s %18s %18s %18s %10s %10s\n' N "bench p-steps/s" "impact p-steps/s" "LAMMPS p-steps/s" \
+  "bench/L" "impact/L"
 for n in ${sizes//,/ }; do
-  ours=$(awk -v n="$n" '$1 == n { print $6 }' "$work/aerobreak.txt")
-  read -r dt gamma mu xi damping speed < <(python3 -c "
+  bench=$(awk -v n="$n" '$1 == n { print $6 }' "$work/aerobreak.txt")
+  python3 "$here/make_impact_case.py" "$work/bench_N$n.json" "$work/bench_N$n.xyz" > "$work/impact_N$n.case.json"
+  "$aerobreak" impact "$work/impact_N$n.case.json" -q -o "$work/impact_N$n.result.json"
+  impact=$(python3 -c "import json; print(json.load(open('$work/impact_N$n.result.json'))['run']['particle_steps_per_second'])")
+  read -r dt gamma mu xi damping speed rolling twisting < <(python3 -c "
 import json; p = json.load(open('$work/bench_N$n.json'))
-print(p['time_step'], p['gamma_over_kn'], p['friction'], p['critical_rolling'], p['dissipative_time'], p['speed'])")
+on = lambda key: 'on' if p.get(key, True) else 'off'
+print(p['time_step'], p['gamma_over_kn'], p['friction'], p['critical_rolling'], p['dissipative_time'], p['speed'],
+      on('rolling'), on('twisting'))")
   theirs=$(LAMMPS_PEER_WORKDIR="$work/lammps_N$n" "$here/run_lammps_peer.sh" "$work/bench_N$n.xyz" \
              --gamma-over-kn "$gamma" --mu "$mu" --xi-crit "$xi" --damping-A "$damping" --speed "$speed" \
              --dt "$dt" --steps "$steps" --gap 0.01 --wall-adhesion off --separation force \
+             --rolling "$rolling" --twisting "$twisting" \
            | awk '/^lammps_particle_steps_per_second/ { print $3 }')
-  python3 -c "print('%9d %22.4g %22.4g %8.2f' % ($n, $ours, $theirs, $ours / $theirs))"
+  python3 -c "print('%9d %18.4g %18.4g %18.4g %10.2f %10.2f' % ($n, $bench, $impact, $theirs, $bench / $theirs, $impact / $theirs))"
 done
 echo "(work files: $work)"

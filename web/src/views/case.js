@@ -1,24 +1,10 @@
-// One case: what it is, its outcome, energy budget, fragments, attempts and errors, and its H5MD
-// file to download.
+// One case: what it is, its outcome (class, cracks, re-entrained fragments), validity, energy groups
+// and budget, fragments, attempts and errors, and its H5MD file to download.
 import { getJson } from '../api.js';
 import { el, formatNumber, formatTime, replaceChildren, table } from '../dom.js';
 import { plotCurves } from '../charts.js';
+import { energyGroupsSection, facts, outcomeSection, validitySection } from './case_outcome.js';
 
-function facts(entries) {
-  return el('dl', { class: 'facts' }, entries.filter(([, value]) => value !== undefined)
-    .map(([label, value]) => [el('dt', {}, label), el('dd', {}, value === null ? '–' : value)]));
-}
-
-// Scalars of an object, one level of nested objects flattened ("restitution normal").
-function scalars(object, prefix = '') {
-  if (!object || typeof object !== 'object') return [];
-  return Object.entries(object).flatMap(([key, value]) => {
-    const label = `${prefix}${key.replaceAll('_', ' ')}`;
-    if (value !== null && typeof value === 'object' && !Array.isArray(value)) return prefix ? [] : scalars(value, `${label} `);
-    if (Array.isArray(value)) return [];
-    return [[label, typeof value === 'number' ? formatNumber(value, 4) : String(value)]];
-  });
-}
 
 function energySection(energy) {
   if (!energy) return null;
@@ -73,8 +59,7 @@ export async function showCase(view, parameters) {
     detail.data_file ? el('p', {}, el('a', { href: `/api/cases/${id}/data`, download: `case-${id}.h5`, id: 'download-h5' },
       'Download the H5MD file'), ' (start and end states; OVITO reads it)') : el('p', { class: 'note' }, 'No H5MD file: the case has no result.'),
     el('div', { class: 'grid' },
-      result.outcome && el('section', { class: 'panel', id: 'outcome' }, el('h2', {}, 'Outcome'),
-        facts([...scalars(result.outcome), ...scalars(result.validity, 'validity ')])),
+      outcomeSection(result.outcome), validitySection(result.validity), energyGroupsSection(result.dimensionless, result.si),
       energySection(result.energy), fragments.section, attemptsSection(detail)));
   fragments.draw();
   return null;

@@ -8,6 +8,15 @@ const kPageSize = 25;
 const kStatuses = ['queued', 'running', 'done', 'failed', 'cancelled'];
 const kOutcomes = ['stick', 'bounce', 'break-up', 'undetermined'];
 
+// A result's flags in words (docs/IMPACT.md section 5); empty without a result.
+function flagsText(c) {
+  const flags = [];
+  if (c.fractured_on_wall) flags.push('fractured on wall');
+  if (c.small_strain_exceeded) flags.push('small strain exceeded');
+  if (c.outcome && c.small_strain_exceeded === null) flags.push('small strain unchecked');
+  return flags.join(', ');
+}
+
 function columns(axes) {
   return [
     { label: 'Case', value: (c) => el('a', { href: `/?case=${c.id}`, 'data-nav': true }, String(c.id)) },
@@ -18,6 +27,8 @@ function columns(axes) {
     { label: 'Restitution', value: (c) => formatNumber(c.restitution), numeric: true },
     { label: 'Retained', value: (c) => formatNumber(c.retained_mass_fraction), numeric: true },
     { label: 'Fragments', value: (c) => formatNumber(c.fragment_count), numeric: true },
+    { label: 'Damage', value: (c) => formatNumber(c.damage_ratio), numeric: true },
+    { label: 'Flags', value: flagsText, className: 'flags' },
     { label: 'Attempts', value: (c) => c.attempts, numeric: true },
     { label: 'Error', value: (c) => c.error || '', className: 'error' },
   ];

@@ -3,10 +3,11 @@
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
-import { axisLabel, defaultXAxis, sliceAxes, valueKey } from '../series.js';
-import { loadCorrelations, tableFormats } from '../correlations.js';
+import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
+import { Correlations, loadCorrelationSummary, tableFormats } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
+import { tablesPanel } from './study_tables.js';
 
 const kRefreshMs = 3000;
 const kOutcomes = ['break-up', 'stick', 'bounce', 'undetermined'];
@@ -62,9 +63,11 @@ function header(study, { onCancel }) {
   };
 }
 
-function controls(state, axes, onChange) {
+function controls(state, grid, onChange) {
+  const { axes } = grid;
   const xAxis = state.get('x', defaultXAxis(axes));
-  const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'));
+  const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
+    .concat(derivedXChoices(grid).map((name) => ({ name })));
   const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${axisLabel(axis.name)} `,
     select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]), state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
@@ -76,14 +79,20 @@ function controls(state, axes, onChange) {
     slices);
 }
 
-async function optionalPanels(studyId) {
-  const [correlations, formats] = await Promise.all([
-    loadCorrelations(studyId).catch(() => null), tableFormats(studyId).catch(() => [])]);
-  const tables = formats.length === 0 ? null : el('section', { class: 'panel', id: 'tables-panel' },
-    el('h2', {}, 'Lookup tables'),
-    el('p', {}, formats.map((format) => [el('a', { href: `/api/studies/${studyId}/tables?format=${format}`, download: true,
-      dataset: { format } }, format.toUpperCase()), ' '])));
-  return { correlations, tables };
+// The parts other services add (correlations, lookup tables), asked for once the page is drawn:
+// fitting a large study the first time takes seconds, and the page does not wait for it.
+// A study without results has nothing to fit or tabulate (the services answer 404 or 409): neither
+// is asked then.
+function loadOptionalParts(id, { hasResults, plots, tablesHolder, redraw, stopped }) {
+  if (!hasResults) return;
+  loadCorrelationSummary(id).then((summary) => {
+    if (!summary || stopped()) return;
+    plots.setCorrelations(new Correlations(id, summary));
+    redraw();
+  }).catch(() => {});
+  tableFormats(id).then((formats) => {
+    if (!stopped()) replaceChildren(tablesHolder, tablesPanel(id, formats));
+  }).catch(() => {});
 }
 
 export async function showStudy(view, parameters, { showNotice }) {
@@ -92,8 +101,7 @@ export async function showStudy(view, parameters, { showNotice }) {
   const caseTable = createCaseTable({ state, studyId: id });
   const firstCases = caseTable.fetchPage();
   firstCases.catch(() => {});
-  const [study, grid, { correlations, tables }] = await Promise.all([
-    getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`), optionalPanels(id)]);
+  const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
   let current = { study, grid };
   let timer = null;
   let stopped = false;
@@ -107,9 +115,10 @@ export async function showStudy(view, parameters, { showNotice }) {
     }
   };
   let top = header(study, { onCancel });
-  const plots = createPlots({ state, correlations });
+  const plots = createPlots({ state });
+  const tablesHolder = el('div');
   const controlsHolder = el('div');
-  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid.axes, (changes) => {
+  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, (changes) => {
     state.set(changes);
     drawControls();
     plots.draw(current.grid);
@@ -117,10 +126,11 @@ export async function showStudy(view, parameters, { showNotice }) {
   const headerHolder = el('div', {}, top.node);
   replaceChildren(view, headerHolder,
     el('h2', {}, 'Axes'), axesTable(grid.axes),
-    el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tables,
+    el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tablesHolder,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
+  loadOptionalParts(id, { hasResults: study.progress.counts.done > 0, plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);

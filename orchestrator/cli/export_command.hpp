@@ -1,0 +1,25 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak {
+
+// `aerobreak export`: a study's lookup tables for system codes (docs/EXPORT.md) from a store file,
+// with the parameters of GET /api/studies/ID/tables as options. Exit status 0, 1 when the store
+// or the study cannot be read, 2 for a request the study cannot serve (the message names the
+// parameter).
+void add_export_command(CLI::App& app, int& exit_code);
+
+// The default set of tables of a study written into `directory` (grid as CSV, .dat, JSON, HDF5 and
+// MELCOR tabular functions, sections as CSV, .dat, JSON and HDF5, fit as CSV and .dat when the
+// study has fits in impact speed); returns the files written. What `aerobreak run` leaves after a
+// study.
+std::vector<std::filesystem::path> write_default_tables(Store& store, std::int64_t study_id,
+                                                        const std::filesystem::path& directory);
+
+}  // namespace aerobreak

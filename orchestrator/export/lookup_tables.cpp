@@ -1,0 +1,120 @@
+// What an export tabulates: the table of the request's kind, in the request's units, with its
+// provenance and validity (docs/EXPORT.md).
+#include "orchestrator/export/lookup_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/version.hpp"
+
+namespace aerobreak {
+namespace {
+
+nlohmann::ordered_json provenance(const StudyExportData& data) {
+  return {{"study_id", data.study.id},
+          {"study_name", data.study.name},
+          {"study_hash", data.study.hash},
+          {"result_set_version", data.versions.result_set},
+          {"aerobreak_version", std::string(version())},
+          {"aerobreak_commit", std::string(git_commit())}};
+}
+
+nlohmann::ordered_json column_range(const LookupTable& table, const char* name) {
+  const auto* column = table.find(name);
+  if (!column) return nullptr;
+  double low = INFINITY, high = -INFINITY;
+  for (const double value : column->values)
+    if (!std::isnan(value)) low = std::min(low, value), high = std::max(high, value);
+  if (low > high) return nullptr;
+  return nlohmann::ordered_json::array({low, high});
+}
+
+nlohmann::ordered_json validity(const LookupTable& table, const StudyExportData& data) {
+  std::size_t flagged = 0, results = 0;
+  for (const auto& [key, statistics] : data.statistics) {
+    flagged += statistics.outcomes.small_strain_exceeded;
+    results += statistics.outcomes.finished();
+  }
+  nlohmann::ordered_json json{{"impact_speed", column_range(table, "impact_speed")},
+                              {"gamma_over_kn", column_range(table, "gamma_over_kn")},
+                              {"primaries", column_range(table, "primaries")},
+                              {"results", results},
+                              {"results_outside_small_strain", flagged},
+                              {"note", "tabulated values hold inside these ranges only; nothing is extrapolated"}};
+  if (!json["primaries"].is_array()) json.erase("primaries");
+  return json;
+}
+
+double material_gamma_over_kn(const ExportMaterial& material) {
+  return PhysicalScaling{material.material, material.diameter, 1.0}.reduced().surface_energy;
+}
+
+nlohmann::ordered_json material_json(const ExportMaterial& material) {
+  return {{"youngs_modulus_pa", material.material.youngs_modulus}, {"poisson_ratio", material.material.poisson_ratio},
+          {"density_kg_m3", material.material.density},            {"surface_energy_j_m2", material.material.surface_energy},
+          {"diameter_m", material.diameter},                       {"gamma_over_kn", material_gamma_over_kn(material)}};
+}
+
+// SI for every row from one scaling (the export's material), or from the study's own material
+// (physical study): nullopt when the rows have none.
+std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& table, const StudyExportData& data,
+                                                         const ExportRequest& request) {
+  if (request.material)
+    return std::vector<PhysicalScaling>(table.rows(), PhysicalScaling{request.material->material, request.material->diameter, 1.0});
+  if (data.inputs.empty() || !data.inputs.front().scaling) return std::nullopt;
+  const auto& first = *data.inputs.front().scaling;
+  for (const auto& inputs : data.inputs)
+    if (!inputs.scaling || inputs.scaling->diameter != first.diameter ||
+        inputs.scaling->speed_unit() != first.speed_unit())
+      return std::nullopt;  // a study sweeping the material: SI only with an export material
+  return std::vector<PhysicalScaling>(table.rows(), first);
+}
+
+// d/tau in the study's speed unit: a physical study's speeds (and its fits' doses) are in m/s.
+double study_speed_unit(const StudyExportData& data) {
+  if (data.inputs.empty() || !data.inputs.front().scaling) return 1.0;
+  return data.inputs.front().scaling->speed_unit();
+}
+
+// A fit table of a study that does not sweep gamma/k_n has no such group axis: its one value, so
+// that a material can be checked against it.
+void add_constant_gamma(LookupTable& table, const StudyExportData& data) {
+  if (table.find("gamma_over_kn") || data.inputs.empty()) return;
+  const double gamma = data.inputs.front().gamma_over_kn;
+  for (const auto& inputs : data.inputs)
+    if (inputs.gamma_over_kn != gamma) return;
+  table.add("gamma_over_kn", "1", "adhesion-to-stiffness ratio gamma/k_n (the study's one value)", ColumnRole::input)
+      .values.assign(table.rows(), gamma);
+}
+
+}  // namespace
+
+LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
+  if (request.kind == TableKind::fit && !fits) throw ExportError(500, "kind", "kind=fit without the study's fits");
+  const auto data = read_study_export_data(store, study_id);
+  LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
+                      : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
+                                                            : fit_table(*fits, request, study_speed_unit(data));
+  add_constant_gamma(table, data);
+  if (request.material)
+    table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material), request.interpolate_gamma);
+  else if (request.gamma_over_kn)
+    table = rows_for_gamma(table, reduced_material(*request.gamma_over_kn, data.inputs.front().poisson_ratio),
+                           *request.gamma_over_kn, request.interpolate_gamma);
+  const auto scalings = row_scalings(table, data, request);
+  if (scalings) add_si_columns(table, *scalings);
+  const auto sections = table.metadata.is_object() ? table.metadata["sections"] : nlohmann::ordered_json();
+  table.metadata = {{"table", table.kind},
+                    {"provenance", provenance(data)},
+                    {"units", scalings ? "reduced and SI" : "reduced"},
+                    {"reduced_units", "d = primary diameter, m = primary mass, tau = sqrt(m/k_n) (docs/MODEL.md 1.1)"}};
+  if (request.material) table.metadata["material"] = material_json(*request.material);
+  else if (scalings) table.metadata["material"] = "the study's own (physical units)";
+  if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
+  table.metadata["validity"] = validity(table, data);
+  if (!sections.is_null()) table.metadata["sections"] = sections;
+  table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
+  return table;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,45 @@
+#pragma once
+#include <cstdint>
+
+#include "orchestrator/export/export_request.hpp"
+#include "orchestrator/export/lookup_table.hpp"
+#include "orchestrator/export/study_export_data.hpp"
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak {
+
+// The fitted correlations of a study (orchestrator/fitting/correlation_set.hpp, which brings Eigen:
+// not included here, so that this header can follow cpp-httplib's, whose <resolv.h> defines _res).
+struct CorrelationSet;
+
+// Table (a): one row per grid point of the study, inputs and outcome statistics (reduced units).
+LookupTable grid_table(const StudyExportData& data);
+
+// Table (c): the sectional fragment matrix for geometric sections of mass ratio `section_ratio`
+// (reduced units): one row per impact condition and source section, the mass fractions that end
+// on the wall and in each section (a column of the matrix; they sum to 1).
+LookupTable sections_table(const StudyExportData& data, double section_ratio);
+
+// Table (b): P(stick) and P(break-up) from the per-group logistic fits in impact speed, at the
+// request's speeds (default: 25 log-spaced over each fit's validity box) and sizes, with their 95 %
+// bands and a validity flag; strict refuses a row outside a fit's validity box (ExportError 422).
+// `speed_unit_of_study`: d/tau in the study's speed unit (m/s for a physical study, 1 for a reduced one).
+LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, double speed_unit_of_study);
+
+// The rows of a material's gamma/k_n (docs/EXPORT.md "Units"): those at the study's value within
+// a relative 1e-3, or interpolated linearly in ln(gamma/k_n) between the two bracketing values when
+// `interpolate`; ExportError 422 naming surface_energy otherwise.
+// `material` gives nu for lambda (eq 19) of interpolated rows.
+LookupTable rows_for_gamma(const LookupTable& table, const Material& material, double gamma_over_kn, bool interpolate);
+
+// Adds after each column in d/tau its value in m/s, after each in d its value in m, with the
+// scaling of each row.
+void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scalings);
+
+// What the export of `request` from study `study_id` tabulates, units applied and metadata filled
+// in; kind fit needs the study's fitted correlations (`fits`). ExportError on a request the study
+// cannot serve.
+LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request,
+                               const CorrelationSet* fits = nullptr);
+
+}  // namespace aerobreak

@@ -1,0 +1,42 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "orchestrator/export/export_request.hpp"
+#include "orchestrator/export/lookup_table.hpp"
+
+namespace aerobreak {
+
+// A lookup table written in one format (docs/EXPORT.md, "Formats").
+struct RenderedTable {
+  std::string content;       // bytes
+  std::string content_type;  // of the HTTP answer
+  std::string file_name;     // suggested: studyID_KIND[_QUANTITY].EXT
+};
+
+// RFC 4180 CSV (CRLF line ends, quoted where needed): "#key,value" metadata records padded to the
+// column count, of which the first gives header_lines (records before the names), the column
+// names, their units, the rows.
+std::string csv_text(const LookupTable& table);
+// Whitespace-separated columns for Fortran list-directed input: comment lines start with '#',
+// no quotes, no empty field (NaN for missing), the column order in the header.
+std::string dat_text(const LookupTable& table);
+// schemas/lookup.schema.json.
+nlohmann::ordered_json table_json(const LookupTable& table);
+// An HDF5 file image: one dataset per column (attributes units, description, role), the metadata
+// as attributes of the root group.
+std::string hdf5_image(const LookupTable& table);
+// MELCOR 2 tabular functions (TF_INPUT / TF_ID / TF_TAB): one function per quantity and impact
+// condition, x = impact speed (m/s when SI, else d/tau), ascending.
+std::string melcor_text(const LookupTable& table);
+// OpenFOAM interpolation2DTable of `quantity` over (impact speed, volume-equivalent diameter), the
+// CSV data of a Function1 csvFile (speed, then one column per size), or the Function1 entries
+// that read that CSV file. ExportError 422 when the table holds more than one impact condition
+// besides speed and size (choose one with a material or gamma_over_kn).
+std::string openfoam_table2d(const LookupTable& table, const std::string& quantity);
+std::string openfoam_csv(const LookupTable& table, const std::string& quantity);
+std::string openfoam_dictionary(const LookupTable& table, const std::string& quantity, const std::string& csv_file);
+
+RenderedTable render_table(const LookupTable& table, const ExportRequest& request, std::int64_t study_id);
+
+}  // namespace aerobreak

@@ -1,0 +1,183 @@
+#include "orchestrator/service/bounded_server.hpp"
+
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace aerobreak {
+namespace {
+
+// Threads that answer connections beyond max_connections with a 503 (a few microseconds each).
+constexpr std::size_t kOverflowThreads = 8;
+// A connection closed before its request was read whole (refused early) is drained for this long,
+// at most this much, so that the client reads the answer instead of a reset (RFC 9112 9.6).
+constexpr auto kLingerTime = std::chrono::seconds(2);
+constexpr std::size_t kLingerBytes = 4 << 20;
+
+// A thread per connection, started when every thread is busy, up to `max_threads` (then the
+// connection waits for one); threads are kept for later connections until shutdown.
+class ConnectionThreads final : public httplib::TaskQueue {
+ public:
+  explicit ConnectionThreads(std::size_t max_threads) : max_threads_(max_threads) {}
+
+  void enqueue(std::function<void()> job) override {
+    std::lock_guard lock(mutex_);
+    jobs_.push_back(std::move(job));
+    if (idle_ < jobs_.size() && threads_.size() < max_threads_) threads_.emplace_back([this] { work(); });
+    wake_.notify_one();
+  }
+
+  void shutdown() override {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    for (auto& thread : threads_) thread.join();
+  }
+
+ private:
+  // Every queued connection is served (a job closes its socket), even while stopping.
+  void work() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      ++idle_;
+      wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+      --idle_;
+      if (jobs_.empty()) return;
+      auto job = std::move(jobs_.front());
+      jobs_.pop_front();
+      lock.unlock();
+      job();
+      lock.lock();
+    }
+  }
+
+  const std::size_t max_threads_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::function<void()>> jobs_;
+  std::vector<std::thread> threads_;
+  std::size_t idle_ = 0;
+  bool stopping_ = false;
+};
+
+// SO_REUSEADDR only (a restart may bind while old connections linger in TIME_WAIT); cpp-httplib's
+// default adds SO_REUSEPORT, with which a second service binds a port that one already listens on.
+void reuse_address_only(socket_t socket) {
+  int yes = 1;
+  ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+}
+
+const char* reason_phrase(int status) {
+  switch (status) {
+    case 408: return "Request Timeout";
+    case 431: return "Request Header Fields Too Large";
+    case 503: return "Service Unavailable";
+    default: return "Error";
+  }
+}
+
+// Sends FIN, then reads and drops what the client still sends until it closes (or the time or
+// byte allowance is spent): closing with unread bytes would send a reset that can destroy the
+// answer before the client reads it.
+void linger_close(socket_t socket, std::chrono::steady_clock::duration allowance) {
+  ::shutdown(socket, SHUT_WR);
+  const auto deadline = std::chrono::steady_clock::now() + allowance;
+  std::size_t drained = 0;
+  char sink[16384];
+  while (drained < kLingerBytes) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd watched{socket, POLLIN, 0};
+    if (left.count() < 0 || ::poll(&watched, 1, static_cast<int>(left.count())) <= 0) break;
+    const ssize_t n = ::recv(socket, sink, sizeof sink, MSG_DONTWAIT);
+    if (n <= 0) break;
+    drained += static_cast<std::size_t>(n);
+  }
+}
+
+struct CurrentConnection {
+  ConnectionStream* stream = nullptr;
+  bool close_after_response = false;
+};
+
+thread_local CurrentConnection* current_connection = nullptr;
+
+}  // namespace
+
+BoundedServer::BoundedServer(ConnectionLimits limits, std::function<void(const std::string&)> refusals)
+    : limits_(limits), refusals_(std::move(refusals)) {
+  const std::size_t threads = limits_.max_connections + kOverflowThreads;
+  new_task_queue = [threads] { return new ConnectionThreads(threads); };
+  set_socket_options(reuse_address_only);
+  // What the library advertises in Keep-Alive headers; the loop below enforces it.
+  set_keep_alive_max_count(limits_.requests_per_connection);
+  set_keep_alive_timeout(std::chrono::duration_cast<std::chrono::seconds>(limits_.idle_timeout).count());
+}
+
+bool BoundedServer::process_and_close_socket(socket_t socket) {
+  if (++active_ > limits_.max_connections) {
+    answer_directly(socket, 503,
+                    "the service is serving its limit of " + std::to_string(limits_.max_connections) +
+                        " connections; try again shortly");
+    linger_close(socket, std::chrono::milliseconds(0));
+  } else {
+    ConnectionStream stream(socket, limits_, svr_sock_);
+    if (serve_requests(stream)) linger_close(socket, kLingerTime);
+  }
+  --active_;
+  ::shutdown(socket, SHUT_RDWR);
+  ::close(socket);
+  return true;
+}
+
+bool BoundedServer::serve_requests(ConnectionStream& stream) {
+  CurrentConnection connection{&stream};
+  current_connection = &connection;
+  for (std::size_t served = 0; served < limits_.requests_per_connection && stream.await_request(); ++served) {
+    bool client_closes = false;
+    const bool last = served + 1 == limits_.requests_per_connection;
+    const bool answered = process_request(stream, last, client_closes, nullptr);
+    // A request line that never completed leaves the library nothing to answer.
+    if (stream.fault() && stream.bytes_written() == 0)
+      answer_directly(stream.socket(), stream.fault()->status, stream.fault()->message);
+    if (!answered || client_closes || connection.close_after_response || stream.fault()) break;
+  }
+  current_connection = nullptr;
+  return connection.close_after_response || stream.fault();
+}
+
+void BoundedServer::answer_directly(socket_t socket, int status, const std::string& message) {
+  const std::string body = nlohmann::json{{"error", message}, {"violations", nlohmann::json::array()}}.dump();
+  const std::string answer = "HTTP/1.1 " + std::to_string(status) + " " + reason_phrase(status) +
+                             "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+                             "\r\nConnection: close\r\n\r\n" + body;
+  // One non-blocking send: a client that does not read its answer gets none.
+  ::send(socket, answer.data(), answer.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+  if (refusals_) refusals_("- " + std::to_string(status) + " " + message);
+}
+
+void close_connection_after_response(httplib::Response& response) {
+  response.set_header("Connection", "close");
+  if (current_connection) current_connection->close_after_response = true;
+}
+
+const RequestFault* current_request_fault() {
+  if (!current_connection || !current_connection->stream->fault()) return nullptr;
+  return &*current_connection->stream->fault();
+}
+
+std::optional<std::chrono::steady_clock::time_point> current_request_started() {
+  if (!current_connection) return std::nullopt;
+  return current_connection->stream->request_started();
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,49 @@
+#pragma once
+#include <httplib.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "orchestrator/service/connection_stream.hpp"
+
+namespace aerobreak {
+
+// cpp-httplib's Server with every connection bounded (ConnectionLimits). Debian's cpp-httplib
+// 0.11 gives each connection a fixed pool thread for as long as the client keeps it (a header byte
+// every few seconds holds it for good, and idle sockets queue everyone else behind them) and reads
+// any number of headers. Here each connection gets a thread of its own, up to max_connections
+// (beyond, an immediate 503), and runs its requests through ConnectionStream, which ends a
+// request that is too slow or has too many header bytes or lines while it arrives.
+// It binds without SO_REUSEPORT, so that a port another process listens on is refused.
+class BoundedServer : public httplib::Server {
+ public:
+  // `refusals` gets a line for each connection answered without a request (over the connection
+  // limit, or a request line that never completed); null: none.
+  BoundedServer(ConnectionLimits limits, std::function<void(const std::string&)> refusals);
+
+ private:
+  bool process_and_close_socket(socket_t socket) override;
+  // Serves the connection's requests; true when it ends with a request refused before it was read
+  // whole (bytes the client sent may be unread).
+  bool serve_requests(ConnectionStream& stream);
+  void answer_directly(socket_t socket, int status, const std::string& message);
+
+  ConnectionLimits limits_;
+  std::function<void(const std::string&)> refusals_;
+  std::atomic<std::size_t> active_{0};
+};
+
+// For handlers on a BoundedServer's connection thread (elsewhere they do nothing or return null):
+// answer this request with "Connection: close" and close the connection after it (a request refused
+// before its body was read must not leave the body to be read as the next request).
+void close_connection_after_response(httplib::Response& response);
+// Why the request being answered could not be read (408, 431), when that is why.
+const RequestFault* current_request_fault();
+// When the first byte of the request being answered arrived.
+std::optional<std::chrono::steady_clock::time_point> current_request_started();
+
+}  // namespace aerobreak

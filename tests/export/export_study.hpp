@@ -1,0 +1,106 @@
+#pragma once
+// A study in a real store file for the export tests: speeds 0.01, 0.02, 0.05 d/tau x gamma/k_n
+// 0.001, 0.01 x N = 8, 32, four replicates, with results written through the store's own commit
+// (as a worker's would be). Each replicate's fragments are chosen so that every class occurs and
+// every number of the tables can be computed by hand from `fragments_of`.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "orchestrator/store/store.hpp"
+
+namespace aerobreak::testing {
+
+struct Fragment {
+  int size;
+  bool on_wall;
+};
+
+inline const std::vector<double> kSpeeds{0.01, 0.02, 0.05};
+inline const std::vector<double> kGammas{0.001, 0.01};
+inline const std::vector<int> kSizes{8, 32};
+inline constexpr int kReplicates = 4;
+
+// Replicate r at speed index s: s = 0 sticks whole; s = 1 loses r monomers (r = 0: stick);
+// s = 2 breaks: a dimer and two monomers leave, r = 3 bounces (everything but one monomer leaves).
+inline std::vector<Fragment> fragments_of(int size, std::size_t speed_index, int replicate) {
+  if (speed_index == 0) return {{size, true}};
+  if (speed_index == 1) {
+    std::vector<Fragment> fragments{{size - replicate, true}};
+    for (int i = 0; i < replicate; ++i) fragments.push_back({1, false});
+    return fragments;
+  }
+  if (replicate == 3) return {{size - 1, false}, {1, true}};
+  return {{size - 4, true}, {2, false}, {1, false}, {1, false}};
+}
+
+inline std::string outcome_of(const std::vector<Fragment>& fragments, int size) {
+  double off = 0.0, largest_off = 0.0;
+  for (const auto& f : fragments)
+    if (!f.on_wall) off += f.size, largest_off = std::max(largest_off, static_cast<double>(f.size));
+  if (off == 0.0) return "stick";
+  return largest_off >= 0.9 * size ? "bounce" : "break-up";
+}
+
+inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, int size) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  double retained = 0.0;
+  for (const auto& f : fragments) {
+    list.push_back({{"size", f.size}, {"mass", static_cast<double>(f.size)}, {"on_wall", f.on_wall}, {"normal_velocity", 0.001}});
+    if (f.on_wall) retained += f.size;
+  }
+  retained /= size;
+  return {{"dimensionless", {{"initial_contacts", size - 1}, {"energy_per_contact", 1.0}}},
+          {"outcome",
+           {{"class", outcome_of(fragments, size)},
+            {"fractured_on_wall", false},
+            {"retained_mass_fraction", retained},
+            {"reentrained_mass_fraction", 1.0 - retained},
+            {"damage_ratio", 1.0 - retained},
+            {"largest_fragment_share", 1.0},
+            {"fragment_count", fragments.size()},
+            {"restitution", {{"normal", 0.1}}}}},
+          {"validity", {{"small_strain", true}}},
+          {"fragments", {{"list", list}}}};
+}
+
+inline StudySubmission export_submission() {
+  StudySubmission study;
+  study.hash = std::string(64, 'e');
+  study.name = "export";
+  study.document = {{"name", study.name}};
+  for (const double speed : kSpeeds)
+    for (const double gamma : kGammas)
+      for (const int size : kSizes)
+        for (int r = 0; r < kReplicates; ++r) {
+          StudySubmission::Case c;
+          c.grid_point = {{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", size}};
+          c.grid_key = c.grid_point.dump();
+          c.replicate = r;
+          c.hash = c.grid_key + "/" + std::to_string(r);
+          c.document = {{"units", "reduced"},
+                        {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", size}, {"seed", r}}}}},
+                        {"material", {{"gamma_over_kn", gamma}, {"poisson_ratio", 0.3}}},
+                        {"impact", {{"speed", speed}, {"angle", 0}}}};
+          study.cases.push_back(std::move(c));
+        }
+  return study;
+}
+
+// Submits the study and commits every case's result; returns the study's id.
+inline std::int64_t fill_export_study(Store& store) {
+  const auto receipt = store.submit_study(export_submission());
+  const auto job = store.start_job("export test", 1);
+  while (const auto claimed = store.claim_next_case(job)) {
+    const auto& document = claimed->document;
+    const int size = document.at("cluster").at("generator").at("primaries");
+    const int replicate = document.at("cluster").at("generator").at("seed");
+    const double speed = document.at("impact").at("speed");
+    const auto s = static_cast<std::size_t>(std::find(kSpeeds.begin(), kSpeeds.end(), speed) - kSpeeds.begin());
+    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result_of(fragments_of(size, s, replicate), size), "", 0.1));
+  }
+  return receipt.study_id;
+}
+
+}  // namespace aerobreak::testing

@@ -1,0 +1,209 @@
+// The lookup tables (docs/EXPORT.md) of a study in a real store file: every number checked against
+// a hand computation from the fragments the results left (export_study.hpp), the sectional
+// columns summing to 1, SI against the unit formulas, and the material rules.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "orchestrator/export/lookup_tables.hpp"
+#include "orchestrator/fitting/proportion.hpp"
+#include "tests/export/export_study.hpp"
+#include "tests/support/scratch_directory.hpp"
+
+namespace aerobreak::testing {
+namespace {
+
+// The row whose columns have these values.
+std::size_t row_of(const LookupTable& table, std::initializer_list<std::pair<const char*, double>> where) {
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    bool match = true;
+    for (const auto& [name, value] : where) match = match && std::abs(table.find(name)->values[row] - value) <= 1e-12 * std::abs(value);
+    if (match) return row;
+  }
+  FAIL("no such row");
+  return 0;
+}
+
+double at(const LookupTable& table, const char* column, std::size_t row) {
+  REQUIRE(table.find(column));
+  return table.find(column)->values[row];
+}
+
+ExportMaterial material_with_gamma_over_kn(double gamma_over_kn) {
+  ExportMaterial material;
+  material.material = {1e10, 0.3, 1725.0, 0.0};
+  material.diameter = 2e-8;
+  const double k_n = material.material.youngs_modulus * material.diameter / (3.0 * (1.0 - 0.09));  // eq 7
+  material.material.surface_energy = gamma_over_kn * k_n;
+  return material;
+}
+
+struct ExportFixture {
+  ScratchDirectory directory{"lookup_tables"};
+  Store store{directory.path() / "store.sqlite"};
+  std::int64_t study = fill_export_study(store);
+  LookupTable table(ExportRequest request) { return study_lookup_table(store, study, request); }
+};
+
+}  // namespace
+
+TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments from the results", "[export]") {
+  ExportFixture fixture;
+  const auto table = fixture.table({});
+  REQUIRE(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
+  // Speed 0.02, N = 8: replicate r loses r monomers: one stick, three break-ups.
+  const auto row = row_of(table, {{"impact_speed", 0.02}, {"gamma_over_kn", 0.001}, {"primaries", 8}});
+  const auto wilson = *wilson_interval(1, 4);
+  CHECK(at(table, "results", row) == 4);
+  CHECK(at(table, "p_stick", row) == 0.25);
+  CHECK(at(table, "p_stick_lo", row) == Approx(wilson.lower).epsilon(1e-12));
+  CHECK(at(table, "p_stick_hi", row) == Approx(wilson.upper).epsilon(1e-12));
+  CHECK(at(table, "p_break_up", row) == 0.75);
+  CHECK(at(table, "p_bounce", row) == 0.0);
+  CHECK(at(table, "reentrained_m0", row) == Approx((0 + 1 + 2 + 3) / 4.0));
+  CHECK(at(table, "reentrained_m1", row) == Approx((0 + 1 + 2 + 3) / 4.0));
+  CHECK(at(table, "monomer_mass_fraction", row) == Approx(6.0 / 32.0));
+  CHECK(at(table, "retained_mass_fraction", row) == Approx((8 + 7 + 6 + 5) / 32.0));
+  CHECK(at(table, "d_ve", row) == Approx(2.0));
+  CHECK(at(table, "d_mob", row) == Approx(std::pow(8.0, 1.0 / 2.16)));
+  // lambda of eq 19 in the closed form of docs/MODEL.md 1.3: 5.7855 (gamma/k_n)^(5/3) / v^2.
+  CHECK(at(table, "lambda", row) == Approx(5.7855 * std::pow(0.001, 5.0 / 3.0) / (0.02 * 0.02)).epsilon(1e-4));
+  // Speed 0.05, N = 32: three break-ups (a dimer and two monomers leave) and one bounce.
+  const auto fast = row_of(table, {{"impact_speed", 0.05}, {"gamma_over_kn", 0.01}, {"primaries", 32}});
+  CHECK(at(table, "p_bounce", fast) == 0.25);
+  CHECK(at(table, "reentrained_m2", fast) == Approx((3 * (4 + 1 + 1) + 31 * 31) / 4.0));
+  CHECK(at(table, "reentrained_m3", fast) == Approx((3 * (8 + 1 + 1) + 31.0 * 31 * 31) / 4.0));
+  CHECK(std::isnan(at(table, "fractal_dimension", fast)));
+}
+
+TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {
+  ExportFixture fixture;
+  for (const double ratio : {2.0, 3.0, 1.5}) {
+    ExportRequest request;
+    request.kind = TableKind::sections;
+    request.section_ratio = ratio;
+    const auto table = fixture.table(request);
+    REQUIRE(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
+    const int sections = table.metadata.at("sections").at("count");
+    CHECK(sections == 1 + static_cast<int>(std::floor(std::log(32.0) / std::log(ratio) + 1e-12)));
+    for (std::size_t row = 0; row < table.rows(); ++row) {
+      double sum = at(table, "to_wall", row);
+      for (int k = 1; k <= sections; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "to_section_%02d", k);
+        CHECK(at(table, name, row) >= 0.0);
+        sum += at(table, name, row);
+      }
+      CHECK(sum == Approx(1.0).margin(1e-12));
+    }
+  }
+  ExportRequest request;
+  request.kind = TableKind::sections;
+  const auto table = fixture.table(request);
+  // Speed 0.05, N = 32 (source section 6 = [32, 64)): three impacts leave 28 on the wall and a
+  // dimer (section 2) and two monomers (section 1) leave; one leaves 1 on the wall and 31 (section 5).
+  const auto row = row_of(table, {{"impact_speed", 0.05}, {"gamma_over_kn", 0.001}, {"source_section", 6}});
+  CHECK(at(table, "to_wall", row) == Approx(85.0 / 128.0));
+  CHECK(at(table, "to_section_01", row) == Approx(6.0 / 128.0));
+  CHECK(at(table, "to_section_02", row) == Approx(6.0 / 128.0));
+  CHECK(at(table, "to_section_05", row) == Approx(31.0 / 128.0));
+  CHECK(at(table, "to_section_06", row) == 0.0);
+  CHECK(at(table, "p_break_up", row) == 0.75);
+  CHECK(at(table, "source_d_ve_lower", row) == Approx(std::cbrt(32.0)));
+}
+
+TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by hand", "[export]") {
+  ExportFixture fixture;
+  ExportRequest request;
+  request.material = material_with_gamma_over_kn(0.01);
+  const auto table = fixture.table(request);
+  REQUIRE(table.rows() == kSpeeds.size() * kSizes.size());  // the rows of gamma/k_n = 0.01 only
+  // By hand: k_n = E d / (3 (1 - nu^2)) = 1e10 * 2e-8 / 2.73 = 73.2601 N/m (eq 7);
+  // m = rho pi d^3 / 6 = 1725 pi 8e-24 / 6 = 7.2257e-21 kg; tau = sqrt(m / k_n) = 9.9313e-12 s;
+  // d / tau = 2013.84 m/s.
+  const double k_n = 1e10 * 2e-8 / 2.73;
+  const double mass = 1725.0 * std::numbers::pi * 8e-24 / 6.0;
+  const double speed_unit = 2e-8 / std::sqrt(mass / k_n);
+  CHECK(speed_unit == Approx(2013.84).epsilon(1e-5));
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    CHECK(at(table, "gamma_over_kn", row) == 0.01);
+    CHECK(at(table, "impact_speed_m_s", row) == Approx(at(table, "impact_speed", row) * speed_unit).epsilon(1e-12));
+    CHECK(at(table, "d_ve_m", row) == Approx(2e-8 * std::cbrt(at(table, "primaries", row))).epsilon(1e-12));
+    CHECK(at(table, "d_mob_m", row) == Approx(2e-8 * at(table, "d_mob", row)).epsilon(1e-12));
+  }
+  CHECK(table.find("impact_speed_m_s")->unit == "m/s");
+  CHECK(table.find("d_ve_m")->unit == "m");
+  CHECK(table.metadata.at("units") == "reduced and SI");
+}
+
+TEST_CASE("A material outside the study's gamma/k_n range is refused, and one between two values is taken only when interpolated", "[export]") {
+  ExportFixture fixture;
+  ExportRequest request;
+  for (const double outside : {0.02, 0.0005}) {
+    request.material = material_with_gamma_over_kn(outside);
+    try {
+      fixture.table(request);
+      FAIL("a material outside the range was accepted");
+    } catch (const ExportError& error) {
+      CHECK(error.status == 422);
+      CHECK(error.field == "surface_energy");
+      CHECK_THAT(error.what(), Catch::Contains("outside the study's range"));
+    }
+  }
+  request.material = material_with_gamma_over_kn(0.003);
+  CHECK_THROWS_AS(fixture.table(request), ExportError);
+  request.interpolate_gamma = true;
+  const auto table = fixture.table(request);
+  REQUIRE(table.rows() == kSpeeds.size() * kSizes.size());
+  ExportRequest plain;
+  const auto grid = fixture.table(plain);
+  const double w = std::log(3.0) / std::log(10.0);  // ln(0.003/0.001) / ln(0.01/0.001)
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    CHECK(at(table, "interpolated", row) == 1.0);
+    CHECK(at(table, "gamma_over_kn", row) == Approx(0.003));
+    const double speed = at(table, "impact_speed", row), size = at(table, "primaries", row);
+    const auto low = row_of(grid, {{"impact_speed", speed}, {"gamma_over_kn", 0.001}, {"primaries", size}});
+    const auto high = row_of(grid, {{"impact_speed", speed}, {"gamma_over_kn", 0.01}, {"primaries", size}});
+    CHECK(at(table, "energy_per_contact", row) ==
+          Approx((1 - w) * at(grid, "energy_per_contact", low) + w * at(grid, "energy_per_contact", high)));
+    CHECK(at(table, "lambda", row) == Approx(5.7855 * std::pow(0.003, 5.0 / 3.0) / (speed * speed)).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("Export parameters: unknown, malformed or half a material are refused naming the parameter", "[export]") {
+  const auto field_of = [](std::vector<std::pair<std::string, std::string>> parameters) {
+    try {
+      parse_export_request(parameters);
+    } catch (const ExportError& error) {
+      CHECK(error.status == 400);
+      return error.field;
+    }
+    return std::string("(accepted)");
+  };
+  CHECK(field_of({{"format", "xlsx"}}) == "format");
+  CHECK(field_of({{"kind", "everything"}}) == "kind");
+  CHECK(field_of({{"colour", "red"}}) == "colour");
+  CHECK(field_of({{"section_ratio", "1.0"}}) == "section_ratio");
+  CHECK(field_of({{"youngs_modulus", "1e10"}}) == "poisson_ratio");
+  CHECK(field_of({{"youngs_modulus", "-1"}, {"poisson_ratio", "0.3"}, {"density", "1"}, {"surface_energy", "1"}, {"diameter", "1"}}) ==
+        "youngs_modulus");
+  CHECK(field_of({{"speeds", "1,x"}}) == "speeds");
+  CHECK(field_of({{"format", "csv"}, {"format", "dat"}}) == "format");
+  CHECK(field_of({{"format", "melcor"}, {"kind", "sections"}, {"section_ratio", "4"}}) == "(accepted)");
+}
+
+TEST_CASE("A study without results cannot be tabulated (409)", "[export]") {
+  ScratchDirectory directory("lookup_empty");
+  Store store(directory.path() / "store.sqlite");
+  const auto receipt = store.submit_study(export_submission());
+  try {
+    study_lookup_table(store, receipt.study_id, {});
+    FAIL("an empty study was tabulated");
+  } catch (const ExportError& error) {
+    CHECK(error.status == 409);
+    CHECK(error.field == "study");
+  }
+}
+
+}  // namespace aerobreak::testing

@@ -1,0 +1,315 @@
+// Each format of docs/EXPORT.md read back by a consumer: a strict RFC 4180 reader, a Fortran
+// program compiled by gfortran with list-directed input, the HDF5 C API, the project's JSON Schema
+// validator, and the grammars of MELCOR tabular functions and OpenFOAM tables.
+#include <catch2/catch.hpp>
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "engine/impact/json_schema.hpp"
+#include "engine/io/hdf5_attributes.hpp"
+#include "orchestrator/export/lookup_tables.hpp"
+#include "orchestrator/export/table_formats.hpp"
+#include "tests/export/export_study.hpp"
+#include "tests/support/run_command.hpp"
+#include "tests/support/scratch_directory.hpp"
+
+namespace aerobreak::testing {
+namespace {
+
+using Records = std::vector<std::vector<std::string>>;
+
+// RFC 4180 section 2 as a grammar: records end in CRLF, a field is escaped ("...", quotes doubled,
+// may hold commas and line breaks) or not (no comma, quote, CR or LF). Anything else fails.
+Records strict_csv(const std::string& text) {
+  Records records(1, std::vector<std::string>(1));
+  std::size_t i = 0;
+  bool field_start = true;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (field_start && c == '"') {
+      std::string& field = records.back().back();
+      for (++i;; ++i) {
+        REQUIRE(i < text.size());
+        if (text[i] != '"') field += text[i];
+        else if (i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
+        else break;
+      }
+      ++i;
+      REQUIRE((i == text.size() || text[i] == ',' || text[i] == '\r'));
+      field_start = false;
+    } else if (c == ',') {
+      records.back().emplace_back();
+      field_start = true, ++i;
+    } else if (c == '\r') {
+      REQUIRE(text.substr(i, 2) == "\r\n");
+      i += 2;
+      if (i < text.size()) records.emplace_back(1);
+      field_start = true;
+    } else {
+      REQUIRE(c != '"');
+      REQUIRE(c != '\n');
+      records.back().back() += c, ++i, field_start = false;
+    }
+  }
+  return records;
+}
+
+struct FormatsFixture {
+  ScratchDirectory directory{"table_formats"};
+  Store store{directory.path() / "store.sqlite"};
+  std::int64_t study = fill_export_study(store);
+  LookupTable table(ExportRequest request = {}) { return study_lookup_table(store, study, request); }
+};
+
+ExportRequest with_material() {
+  ExportRequest request;
+  request.material = ExportMaterial{{1e10, 0.3, 1725.0, 0.001 * 1e10 * 2e-8 / 2.73}, 2e-8};
+  return request;
+}
+
+void check_value(double read, double written) {
+  if (std::isnan(written)) {
+    CHECK(std::isnan(read));
+    return;
+  }
+  // Written with 10 significant digits (%.9e): read back within half a unit of the last one.
+  CHECK(read == Approx(written).epsilon(5.1e-10).margin(1e-300));
+}
+
+}  // namespace
+
+TEST_CASE("CSV: a strict RFC 4180 reader finds the header block, names, units and every value", "[export][formats]") {
+  FormatsFixture fixture;
+  for (const auto& request : {ExportRequest{}, with_material()}) {
+    const auto table = fixture.table(request);
+    const auto records = strict_csv(csv_text(table));
+    for (const auto& record : records) CHECK(record.size() == table.columns.size());
+    REQUIRE(records[0][0] == "#header_lines");
+    const std::size_t header = std::stoul(records[0][1]);
+    for (std::size_t r = 0; r < header; ++r) CHECK(records[r][0].starts_with("#"));
+    REQUIRE(records.size() == header + 2 + table.rows());
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      CHECK(records[header][c] == table.columns[c].name);
+      CHECK(records[header + 1][c] == table.columns[c].unit);
+      for (std::size_t row = 0; row < table.rows(); ++row) {
+        const auto& field = records[header + 2 + row][c];
+        if (std::isnan(table.columns[c].values[row])) CHECK(field.empty());
+        else check_value(std::stod(field), table.columns[c].values[row]);
+      }
+    }
+    bool hash_found = false;
+    for (std::size_t r = 0; r < header; ++r) hash_found = hash_found || records[r][0] == "#provenance.study_hash";
+    CHECK(hash_found);
+  }
+}
+
+TEST_CASE(".dat: a Fortran program (gfortran, list-directed input) reads every value to the printed precision", "[export][formats]") {
+  const std::string gfortran = AEROBREAK_GFORTRAN;
+  INFO("gfortran is needed (scripts/setup.sh installs it)");
+  REQUIRE_FALSE(gfortran.empty());
+  FormatsFixture fixture;
+  const auto reader = fixture.directory.file("read_lookup_dat");
+  const auto compiled = run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90");
+  INFO(compiled.text);
+  REQUIRE(compiled.exit_code == 0);
+  for (const char* kind : {"grid", "sections"}) {
+    const auto dat = fixture.directory.file(std::string(kind) + ".dat");
+    const auto exported = run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
+                                      " --kind " + kind + " --format dat --youngs-modulus 1e10 --poisson-ratio 0.3 --density 1725" +
+                                      " --surface-energy " + std::to_string(0.001 * 1e10 * 2e-8 / 2.73) + " --diameter 2e-8 -o " + dat);
+    INFO(exported.text);
+    REQUIRE(exported.exit_code == 0);
+    auto request = with_material();
+    request.kind = std::string(kind) == "grid" ? TableKind::grid : TableKind::sections;
+    const auto table = fixture.table(request);
+    const auto read = run_command(reader + " " + dat, true);
+    REQUIRE(read.exit_code == 0);
+    std::istringstream lines(read.text);
+    for (std::size_t row = 0; row < table.rows(); ++row)
+      for (const auto& column : table.columns) {
+        std::string line;
+        REQUIRE(std::getline(lines, line));
+        check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
+      }
+    std::string last;
+    std::getline(lines, last);
+    CHECK(last == "rows " + std::to_string(table.rows()));
+  }
+}
+
+TEST_CASE("JSON: valid against schemas/lookup.schema.json, values as in the table", "[export][formats]") {
+  FormatsFixture fixture;
+  std::ifstream file(AEROBREAK_SOURCE_DIR "/schemas/lookup.schema.json");
+  const JsonSchema schema(nlohmann::ordered_json::parse(file));
+  for (const auto kind : {TableKind::grid, TableKind::sections}) {
+    auto request = with_material();
+    request.kind = kind;
+    const auto table = fixture.table(request);
+    const auto document = nlohmann::ordered_json::parse(table_json(table).dump());
+    CHECK(describe(schema.validate(document)).empty());
+    REQUIRE(document.at("columns").size() == table.columns.size());
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      for (std::size_t row = 0; row < table.rows(); ++row) {
+        const auto& value = document.at("columns")[c].at("values")[row];
+        if (std::isnan(table.columns[c].values[row])) CHECK(value.is_null());
+        else CHECK(value.get<double>() == table.columns[c].values[row]);
+      }
+  }
+  auto broken = table_json(fixture.table());
+  broken["columns"][0].erase("unit");
+  CHECK_FALSE(schema.validate(nlohmann::ordered_json::parse(broken.dump())).empty());
+}
+
+TEST_CASE("HDF5: the C API reads one dataset per column with its units, and the provenance", "[export][formats]") {
+  FormatsFixture fixture;
+  const auto table = fixture.table(with_material());
+  const auto path = fixture.directory.path() / "table.h5";
+  std::ofstream(path, std::ios::binary) << hdf5_image(table);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  CHECK(read_string_attribute(file, "provenance.study_hash") == std::vector<std::string>{std::string(64, 'e')});
+  CHECK(read_string_attribute(file, "units") == std::vector<std::string>{"reduced and SI"});
+  for (const auto& column : table.columns) {
+    const hid_t dataset = H5Dopen2(file, column.name.c_str(), H5P_DEFAULT);
+    REQUIRE(dataset >= 0);
+    std::vector<double> values(table.rows());
+    REQUIRE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0);
+    for (std::size_t row = 0; row < values.size(); ++row)
+      CHECK((values[row] == column.values[row] || (std::isnan(values[row]) && std::isnan(column.values[row]))));
+    CHECK(read_string_attribute(dataset, "units") == std::vector<std::string>{column.unit});
+    H5Dclose(dataset);
+  }
+  H5Fclose(file);
+}
+
+namespace {
+
+// The text without comments (from `marker` to the end of a line), as whitespace-separated tokens.
+std::vector<std::string> tokens(const std::string& text, const std::string& marker) {
+  std::vector<std::string> words;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words_of(line.substr(0, line.find(marker)));
+    for (std::string word; words_of >> word;) words.push_back(word);
+  }
+  return words;
+}
+
+double finite_number(const std::string& word) {
+  char* end = nullptr;
+  const double value = std::strtod(word.c_str(), &end);
+  INFO(word);
+  REQUIRE(*end == '\0');
+  REQUIRE(std::isfinite(value));
+  return value;
+}
+
+}  // namespace
+
+TEST_CASE("MELCOR: TF_INPUT, then per function TF_ID 'name' scale and TF_TAB n with n rows i x y, x ascending", "[export][formats]") {
+  FormatsFixture fixture;
+  const auto words = tokens(melcor_text(fixture.table(with_material())), "!");
+  REQUIRE(words.at(0) == "TF_INPUT");
+  std::set<std::string> names;
+  std::size_t i = 1;
+  while (i < words.size()) {
+    REQUIRE(words.at(i) == "TF_ID");
+    const std::string name = words.at(i + 1);
+    CHECK((name.front() == '\'' && name.back() == '\'' && name.size() <= 18));
+    CHECK(names.insert(name).second);
+    CHECK(finite_number(words.at(i + 2)) == 1.0);
+    REQUIRE(words.at(i + 3) == "TF_TAB");
+    const int n = std::stoi(words.at(i + 4));
+    CHECK(n == static_cast<int>(kSpeeds.size()));
+    i += 5;
+    double previous = -INFINITY;
+    for (int k = 1; k <= n; ++k, i += 3) {
+      CHECK(std::stoi(words.at(i)) == k);
+      const double x = finite_number(words.at(i + 1));
+      CHECK(x > previous);
+      previous = x;
+      const double y = finite_number(words.at(i + 2));
+      CHECK((y >= 0.0 && y <= 1.0));
+    }
+  }
+  CHECK(names.size() == 3 * kSizes.size());  // P(stick), P(break-up), retained; one condition per size
+}
+
+TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and entries that match it", "[export][formats]") {
+  FormatsFixture fixture;
+  const auto table = fixture.table(with_material());
+  const auto words = tokens(openfoam_table2d(table, "p_break_up"), "//");
+  // ( (x ( (y v) (y v) )) ... ): parentheses as tokens of their own after spacing them out.
+  std::string spaced;
+  for (const auto& word : words) spaced += word + " ";
+  std::vector<std::string> parts;
+  std::string current;
+  for (const char c : spaced) {
+    if (c == '(' || c == ')' || c == ' ') {
+      if (!current.empty()) parts.push_back(current), current.clear();
+      if (c != ' ') parts.emplace_back(1, c);
+    } else current += c;
+  }
+  std::size_t i = 0;
+  REQUIRE(parts.at(i++) == "(");
+  double previous_x = -INFINITY;
+  std::size_t rows = 0;
+  while (parts.at(i) == "(") {
+    ++i;
+    const double x = finite_number(parts.at(i++));
+    CHECK(x > previous_x);
+    previous_x = x;
+    REQUIRE(parts.at(i++) == "(");
+    double previous_y = -INFINITY;
+    std::size_t entries = 0;
+    while (parts.at(i) == "(") {
+      const double y = finite_number(parts.at(i + 1));
+      finite_number(parts.at(i + 2));
+      REQUIRE(parts.at(i + 3) == ")");
+      CHECK(y > previous_y);
+      previous_y = y;
+      i += 4, ++entries;
+    }
+    CHECK(entries == kSizes.size());
+    REQUIRE(parts.at(i++) == ")");
+    REQUIRE(parts.at(i++) == ")");
+    ++rows;
+  }
+  REQUIRE(parts.at(i++) == ")");
+  CHECK(i == parts.size());
+  CHECK(rows == kSpeeds.size());
+
+  const auto csv = openfoam_csv(table, "restitution");
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  const auto columns = static_cast<std::size_t>(std::count(line.begin(), line.end(), ',') + 1);
+  CHECK(columns == 1 + kSizes.size());
+  double previous = -INFINITY;
+  std::size_t data_rows = 0;
+  while (std::getline(lines, line)) {
+    CHECK(static_cast<std::size_t>(std::count(line.begin(), line.end(), ',') + 1) == columns);
+    const double x = finite_number(line.substr(0, line.find(',')));
+    CHECK(x > previous);
+    previous = x, ++data_rows;
+  }
+  CHECK(data_rows == kSpeeds.size());
+  const auto dictionary = openfoam_dictionary(table, "restitution", "r.csv");
+  CHECK(std::count(dictionary.begin(), dictionary.end(), '{') == static_cast<long>(kSizes.size()));
+  CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size()) + ");") != std::string::npos);
+  CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size() + 1) + ");") == std::string::npos);
+
+  try {
+    openfoam_table2d(fixture.table(), "p_stick");  // both gamma/k_n: two conditions
+    FAIL("an OpenFOAM table of two conditions was written");
+  } catch (const ExportError& error) {
+    CHECK(error.status == 422);
+  }
+}
+
+}  // namespace aerobreak::testing

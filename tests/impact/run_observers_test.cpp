@@ -1,0 +1,171 @@
+// The impact run loop: observers see the simulation exactly at the steps they ask for, in their
+// order, one can stop the run, the stepping in stretches gives the trajectory of one
+// uninterrupted run to the last bit, snapshots are never taken twice at a step, progress reports
+// follow their wall-clock interval and come at every stop, the schedule follows the case, and a whole impact ends in the
+// state of the plain Simulation run for as many steps.
+#include <catch2/catch.hpp>
+
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "engine/dem/simulation.hpp"
+#include "engine/impact/impact_case.hpp"
+#include "engine/impact/impact_run.hpp"
+#include "engine/impact/run_observers.hpp"
+#include "engine/impact/settle.hpp"
+#include "impact_support.hpp"
+
+using namespace aerobreak;
+
+namespace {
+
+PreparedImpact small_impact() { return prepare_impact(parse_impact_case(testing::minimal_case())); }
+
+// Records the steps it looks at (into a log shared with other observers) and stops at `stop_at`.
+class Recorder final : public IntervalObserver {
+ public:
+  Recorder(int id, std::int64_t interval, std::vector<std::pair<int, std::int64_t>>& log, std::int64_t stop_at = -1)
+      : IntervalObserver(interval, 0), id_(id), log_(log), stop_at_(stop_at) {}
+
+ private:
+  bool look(const Simulation& sim) override {
+    log_.emplace_back(id_, sim.step_count());
+    return sim.step_count() == stop_at_;
+  }
+  int id_;
+  std::vector<std::pair<int, std::int64_t>>& log_;
+  std::int64_t stop_at_;
+};
+
+void require_same_particles(const Simulation& a, const Simulation& b) {
+  REQUIRE(a.step_count() == b.step_count());
+  for (std::size_t i = 0; i < a.particles().size(); ++i) {
+    CHECK(a.particles().position[i] == b.particles().position[i]);
+    CHECK(a.particles().velocity[i] == b.particles().velocity[i]);
+    CHECK(a.particles().angular_velocity[i] == b.particles().angular_velocity[i]);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("observers see the simulation at each of their own steps, in their order, up to the limit") {
+  PreparedImpact run = small_impact();
+  std::vector<std::pair<int, std::int64_t>> log;
+  Recorder every3(1, 3, log), every5(2, 5, log);
+  CHECK_FALSE(run_observed(*run.simulation, 16, {&every3, &every5}));
+  CHECK(run.simulation->step_count() == 16);
+  const std::vector<std::pair<int, std::int64_t>> expected{{1, 3}, {2, 5}, {1, 6}, {1, 9}, {2, 10}, {1, 12}, {1, 15}, {2, 15}};
+  CHECK(log == expected);
+}
+
+TEST_CASE("an observer stops the run at its step, and those after it in the list do not look then") {
+  PreparedImpact run = small_impact();
+  std::vector<std::pair<int, std::int64_t>> log;
+  Recorder stopper(1, 5, log, 10), other(2, 5, log);
+  CHECK(run_observed(*run.simulation, 100, {&stopper, &other}));
+  CHECK(run.simulation->step_count() == 10);
+  const std::vector<std::pair<int, std::int64_t>> expected{{1, 5}, {2, 5}, {1, 10}};
+  CHECK(log == expected);
+}
+
+TEST_CASE("stepping in stretches between observers gives the uninterrupted run to the last bit") {
+  PreparedImpact observed = small_impact(), plain = small_impact();
+  std::vector<std::pair<int, std::int64_t>> log;
+  Recorder a(1, 7, log), b(2, 11, log), c(3, 1, log);
+  run_observed(*observed.simulation, 500, {&a, &b, &c});
+  plain.simulation->run(500);
+  require_same_particles(*observed.simulation, *plain.simulation);
+  CHECK(observed.simulation->energy().mechanical() == plain.simulation->energy().mechanical());
+}
+
+TEST_CASE("snapshots come at their interval and never twice at one step; an interval of 0 means none") {
+  PreparedImpact run = small_impact();
+  std::vector<std::int64_t> steps;
+  SnapshotObserver snapshots([&](const Simulation& s) { steps.push_back(s.step_count()); }, 4);
+  snapshots.take(*run.simulation);
+  run_observed(*run.simulation, 12, {&snapshots});
+  snapshots.take(*run.simulation);  // the end falls on a snapshot step: not taken again
+  CHECK(steps == std::vector<std::int64_t>{0, 4, 8, 12});
+  CHECK(snapshots.taken() == 4);
+  SnapshotObserver never([&](const Simulation&) { FAIL("no snapshot expected"); }, 0);
+  CHECK(never.next_step() == std::numeric_limits<std::int64_t>::max());
+}
+
+TEST_CASE("progress is reported at its step interval once its wall-clock interval has passed") {
+  PreparedImpact run = small_impact();
+  std::vector<ImpactProgress> reports;
+  ProgressObserver always([&](const ImpactProgress& p) { reports.push_back(p); }, 0.0, 100.0, 10);
+  ProgressObserver rarely([&](const ImpactProgress&) { FAIL("no report expected within an hour"); }, 3600.0, 100.0, 10);
+  run_observed(*run.simulation, 30, {&always, &rarely});
+  REQUIRE(reports.size() == 3);
+  CHECK(reports.back().steps == 30);
+  CHECK(reports.back().time == run.simulation->time());
+  CHECK(reports.back().time_limit == 100.0);
+  CHECK(reports.back().fragments >= 1);
+  CHECK(always.reports() == 3);
+  CHECK(rarely.reports() == 0);
+}
+
+TEST_CASE("progress also looks whenever the run stops for another observer") {
+  PreparedImpact run = small_impact();
+  std::vector<std::pair<int, std::int64_t>> log;
+  Recorder every4(1, 4, log);
+  std::vector<std::int64_t> reported;
+  ProgressObserver progress([&](const ImpactProgress& p) { reported.push_back(p.steps); }, 0.0, 100.0, 100);
+  run_observed(*run.simulation, 12, {&every4, &progress});
+  CHECK(reported == std::vector<std::int64_t>{4, 8, 12});
+}
+
+TEST_CASE("the settle check stops the run when the monitor finds the outcome settled") {
+  PreparedImpact run = small_impact();
+  const ImpactResult& r = run.result;
+  SettleMonitor monitor(r.quiet_window, r.rest_speed, r.impact_case.thresholds);
+  const ImpactSchedule schedule = impact_schedule(r, run.simulation->particles().size());
+  SettleObserver settle(monitor, schedule.check_steps);
+  monitor.update(*run.simulation);
+  CHECK(run_observed(*run.simulation, schedule.limit_steps, {&settle}));
+  CHECK(monitor.settled());
+  CHECK(run.simulation->step_count() % schedule.check_steps == 0);
+  CHECK(run.simulation->time() == monitor.settled_at());
+}
+
+TEST_CASE("the schedule follows the case: time limit, 20 checks per quiet window, snapshot interval") {
+  auto document = testing::minimal_case();
+  document["run"]["snapshot_interval"] = 10.0;
+  document["run"]["time_step"] = 0.05;
+  PreparedImpact run = prepare_impact(parse_impact_case(document));
+  const ImpactSchedule s = impact_schedule(run.result, 8);
+  CHECK(s.limit_steps == 100000);  // 5000 / 0.05
+  CHECK(s.check_steps == static_cast<std::int64_t>(run.result.quiet_window / 0.05 / 20.0));
+  CHECK(s.snapshot_steps == 200);
+  CHECK(s.progress_steps == 125000);  // 10^6 particle-steps of 8 primaries
+}
+
+TEST_CASE("a whole impact ends in the state of the plain simulation run for as many steps") {
+  auto document = testing::minimal_case();
+  document["run"]["snapshot_interval"] = 50.0;
+  const ImpactCase impact_case = parse_impact_case(document);
+  ImpactRunOptions options;
+  Particles last;
+  std::size_t frames = 0;
+  options.snapshot = [&](const Simulation& s) {
+    last = s.particles();
+    ++frames;
+  };
+  options.progress = [](const ImpactProgress&) {};
+  options.progress_seconds = 0.0;
+  const ImpactResult result = run_impact(impact_case, options);
+  REQUIRE(result.settled);
+  CHECK(result.snapshots == frames);
+  PreparedImpact plain = prepare_impact(impact_case);
+  plain.simulation->run(result.steps);
+  const Particles& p = plain.simulation->particles();
+  REQUIRE(last.size() == p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    CHECK(last.position[i] == p.position[i]);
+    CHECK(last.velocity[i] == p.velocity[i]);
+    CHECK(last.angular_velocity[i] == p.angular_velocity[i]);
+  }
+  CHECK(result.final_energy.mechanical() == plain.simulation->energy().mechanical());
+}
