@@ -49,7 +49,7 @@ CorrelationSet study_correlations(Store& store, const StudyRecord& study, const 
 class CorrelationCache {
  public:
   explicit CorrelationCache(Store& store) : store_(store) {}
-  StoredCorrelations current(const StudyRecord& study, const CorrelationRequest& request);
+  std::shared_ptr<const StoredCorrelations> current(const StudyRecord& study, const CorrelationRequest& request);
 
  private:
   std::shared_ptr<std::mutex> study_lock(std::int64_t study_id);
@@ -60,7 +60,7 @@ class CorrelationCache {
   // The set kept in memory for (study, request) if it was fitted to result-set version `version`.
   std::shared_ptr<const StoredCorrelations> remembered(std::int64_t study_id, const std::string& key,
                                                        std::int64_t version) const;
-  StoredCorrelations remember(std::int64_t study_id, const std::string& key, StoredCorrelations set);
+  std::shared_ptr<const StoredCorrelations> remember(std::int64_t study_id, const std::string& key, StoredCorrelations set);
 
   static constexpr std::size_t kMaxRemembered = 64;
   Store& store_;
