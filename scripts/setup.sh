@@ -11,6 +11,7 @@ packages=(
   libhdf5-dev hdf5-tools
   libsqlite3-dev
   libssl-dev
+  zlib1g-dev
   nlohmann-json3-dev
   libcpp-httplib-dev
   catch2

@@ -57,8 +57,8 @@ int run_export(const ExportOptions& options) {
     std::cerr << "aerobreak export: no store file " << options.store << "\n";
     return 1;
   }
-  Store store(options.store);
   try {
+    Store store(options.store, Store::Access::reader);
     const std::int64_t study = options.study > 0 ? options.study : only_study(store);
     const auto request = parse_export_request({options.parameters.begin(), options.parameters.end()});
     const auto record = store.study(study);
@@ -75,6 +75,9 @@ int run_export(const ExportOptions& options) {
   } catch (const ExportError& error) {
     std::cerr << "aerobreak export: " << error.what() << (error.field.empty() ? "" : " [parameter " + error.field + "]") << "\n";
     return error.status == 404 ? 1 : 2;
+  } catch (const std::runtime_error& error) {
+    std::cerr << "aerobreak export: " << error.what() << "\n";
+    return 1;
   }
 }
 

@@ -126,7 +126,7 @@ void print_critical_speeds(Store& store, std::int64_t study_id) {
     const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
     std::cout << "\nCritical speeds: logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
                  "intervals (docs/CORRELATIONS.md)\n\n"
-              << format_critical_table(nlohmann::ordered_json::parse(set.summary));
+              << format_critical_table(nlohmann::ordered_json::parse(set->summary));
   } catch (const CorrelationRequestError& error) {
     std::cout << "\nNo critical speeds: " << error.what() << "\n";
   }

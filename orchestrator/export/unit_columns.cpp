@@ -59,6 +59,9 @@ LookupTable interpolated_rows(const LookupTable& table, double target, const std
     const auto low = low_rows.find(condition(table, row));
     if (low != low_rows.end()) append_interpolated(out, table, low->second, row, w);
   }
+  // The rows stand for the material's gamma/k_n itself, not for a linear mean of the two values.
+  auto& gamma_out = out.find("gamma_over_kn")->values;
+  std::fill(gamma_out.begin(), gamma_out.end(), target);
   auto& interpolated = out.add("interpolated", "1", "1: interpolated in ln(gamma/k_n) between two study values", ColumnRole::output);
   interpolated.values.assign(out.rows(), 1.0);
   return out;

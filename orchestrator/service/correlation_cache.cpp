@@ -136,16 +136,35 @@ std::int64_t CorrelationCache::result_set_version(std::int64_t study_id) {
   return versions ? versions->result_set : 0;
 }
 
-StoredCorrelations CorrelationCache::current(const StudyRecord& study, const CorrelationRequest& request) {
+std::shared_ptr<const StoredCorrelations> CorrelationCache::current(const StudyRecord& study,
+                                                                   const CorrelationRequest& request) {
   const std::string key = request_key(request);
+  if (auto kept = remembered(study.id, key, result_set_version(study.id))) return kept;
   auto stored = store_.stored_correlations(study.id, key);
-  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
+  if (stored && stored->result_set_version == result_set_version(study.id)) return remember(study.id, key, *stored);
   const auto lock = study_lock(study.id);
   std::lock_guard guard(*lock);
   // Another request may have refitted while this one waited.
   stored = store_.stored_correlations(study.id, key);
-  if (stored && stored->result_set_version == result_set_version(study.id)) return *stored;
-  return refit(study, request, key, stored);
+  if (stored && stored->result_set_version == result_set_version(study.id)) return remember(study.id, key, *stored);
+  return remember(study.id, key, refit(study, request, key, stored));
+}
+
+std::shared_ptr<const StoredCorrelations> CorrelationCache::remembered(std::int64_t study_id, const std::string& key,
+                                                                       std::int64_t version) const {
+  std::lock_guard guard(memory_mutex_);
+  const auto found = memory_.find({study_id, key});
+  if (found == memory_.end() || found->second->result_set_version != version) return nullptr;
+  return found->second;
+}
+
+std::shared_ptr<const StoredCorrelations> CorrelationCache::remember(std::int64_t study_id, const std::string& key,
+                                                                    StoredCorrelations set) {
+  auto kept = std::make_shared<const StoredCorrelations>(std::move(set));
+  std::lock_guard guard(memory_mutex_);
+  if (memory_.size() >= kMaxRemembered) memory_.clear();
+  memory_[{study_id, key}] = kept;
+  return kept;
 }
 
 StoredCorrelations CorrelationCache::refit(const StudyRecord& study, const CorrelationRequest& request,

@@ -43,11 +43,13 @@ CorrelationSet study_correlations(Store& store, const StudyRecord& study, const 
 // The fits of a study, stored and served from the store while its result set is unchanged: a
 // request checks one row (the study's result-set version, Store::study_versions); a changed result set is read, its hash
 // compared with the stored set's, and refitted only when it differs. Fitting runs outside the
-// store's write lock, one study at a time; the new set is stored in one short transaction.
+// store's write lock, one study at a time; the new set is stored in one short transaction. The
+// latest set of each study and request is also kept in memory, so that a request served from the
+// cache reads one row, not the stored summary.
 class CorrelationCache {
  public:
   explicit CorrelationCache(Store& store) : store_(store) {}
-  StoredCorrelations current(const StudyRecord& study, const CorrelationRequest& request);
+  std::shared_ptr<const StoredCorrelations> current(const StudyRecord& study, const CorrelationRequest& request);
 
  private:
   std::shared_ptr<std::mutex> study_lock(std::int64_t study_id);
@@ -55,8 +57,15 @@ class CorrelationCache {
   std::int64_t result_set_version(std::int64_t study_id);
   StoredCorrelations refit(const StudyRecord& study, const CorrelationRequest& request, const std::string& key,
                            const std::optional<StoredCorrelations>& stored);
+  // The set kept in memory for (study, request) if it was fitted to result-set version `version`.
+  std::shared_ptr<const StoredCorrelations> remembered(std::int64_t study_id, const std::string& key,
+                                                       std::int64_t version) const;
+  std::shared_ptr<const StoredCorrelations> remember(std::int64_t study_id, const std::string& key, StoredCorrelations set);
 
+  static constexpr std::size_t kMaxRemembered = 64;
   Store& store_;
+  mutable std::mutex memory_mutex_;
+  std::map<std::pair<std::int64_t, std::string>, std::shared_ptr<const StoredCorrelations>> memory_;
   std::mutex locks_mutex_;
   std::map<std::int64_t, std::shared_ptr<std::mutex>> study_locks_;
 };

@@ -34,7 +34,7 @@ std::optional<std::vector<std::string>> covariates_parameter(const httplib::Requ
 }
 
 struct CurrentSet {
-  StoredCorrelations set;
+  std::shared_ptr<const StoredCorrelations> set;
   std::string request_key;
 };
 
@@ -62,9 +62,10 @@ std::string document_tag(const StoredCorrelations& set, const std::string& reque
   return tag;
 }
 
-// The document with its ETag, or 304 when the request's If-None-Match names it.
+// The document with its ETag, or 304 when the request's If-None-Match names it. The document is
+// sent from where it is kept (`owner` keeps it alive), without a copy per request.
 void send_document(const httplib::Request& request, httplib::Response& response, const std::string& etag,
-                   const std::string& document) {
+                   std::shared_ptr<const void> owner, const std::string& document) {
   response.set_header("ETag", etag);
   response.set_header("Cache-Control", "no-cache");
   if (names_current_tag(request, etag)) {
@@ -72,7 +73,10 @@ void send_document(const httplib::Request& request, httplib::Response& response,
     return;
   }
   response.status = 200;
-  response.set_content(document, "application/json");
+  response.set_content_provider(document.size(), "application/json",
+                                [owner, &document](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                  return sink.write(document.data() + offset, length);
+                                });
 }
 
 std::string fit_list(const std::vector<std::string>& names) {
@@ -88,17 +92,18 @@ void register_correlation_endpoints(httplib::Server& server, Store& store) {
   server.Get(R"(/api/studies/(\d+)/correlations)",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
                const auto [set, key] = current(store, *cache, request);
-               send_document(request, response, document_tag(set, key, ""), set.summary);
+               send_document(request, response, document_tag(*set, key, ""), set, set->summary);
              }));
   server.Get(R"(/api/studies/(\d+)/correlations/([^/]{1,200}))",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
                const auto [set, key] = current(store, *cache, request);
                const std::string name = request.matches[2];
-               const auto document = store.stored_fit(set.set_id, name);
+               const auto document = store.stored_fit(set->set_id, name);
                if (!document)
                  throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
-                                             " (fits: " + fit_list(store.stored_fit_names(set.set_id)) + ")"};
-               send_document(request, response, document_tag(set, key, name), *document);
+                                             " (fits: " + fit_list(store.stored_fit_names(set->set_id)) + ")"};
+               auto kept = std::make_shared<const std::string>(std::move(*document));
+               send_document(request, response, document_tag(*set, key, name), kept, *kept);
              }));
 }
 

@@ -1,11 +1,51 @@
 #include "orchestrator/service/versioned_documents.hpp"
 
 #include <random>
+#include <stdexcept>
 #include <utility>
+
+#include <zlib.h>
 
 #include "orchestrator/service/http_support.hpp"
 
 namespace aerobreak {
+
+namespace {
+
+// RFC 1952 gzip of `text` (zlib's deflate with a gzip wrapper: window bits 15 + 16).
+std::string gzip(const std::string& text) {
+  z_stream stream{};
+  if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw std::runtime_error("zlib: deflateInit2 failed");
+  std::string out(deflateBound(&stream, static_cast<uLong>(text.size())), '\0');
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+  stream.avail_in = static_cast<uInt>(text.size());
+  stream.next_out = reinterpret_cast<Bytef*>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  const int status = deflate(&stream, Z_FINISH);
+  out.resize(stream.total_out);
+  deflateEnd(&stream);
+  if (status != Z_STREAM_END) throw std::runtime_error("zlib: deflate did not finish");
+  return out;
+}
+
+bool accepts_gzip(const httplib::Request& request) {
+  return request.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
+}
+
+// Sends `body` with a known length through a content provider, which cpp-httplib does not compress.
+void send_as_is(httplib::Response& response, std::shared_ptr<const VersionedDocument> document, bool gzipped) {
+  const std::string& body = gzipped ? document->gzip_body : document->body;
+  if (gzipped) response.set_header("Content-Encoding", "gzip");
+  response.set_header("Vary", "Accept-Encoding");
+  response.set_content_provider(
+      body.size(), "application/json",
+      [document, &body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        return sink.write(body.data() + offset, length);
+      });
+}
+
+}  // namespace
 
 VersionedDocuments::VersionedDocuments(Build build)
     : build_(std::move(build)), instance_(std::to_string(std::random_device{}())) {}
@@ -23,11 +63,13 @@ std::shared_ptr<const VersionedDocument> VersionedDocuments::find(std::int64_t s
 std::shared_ptr<const VersionedDocument> VersionedDocuments::make(std::int64_t study, const StudyVersions& versions) {
   // The versions were read before the document: a document may be newer than its tag, never older,
   // so that a client holding the tag is never told an out-of-date document is current.
+  std::string body = build_(study);
+  std::string compressed = gzip(body);
   auto document = std::make_shared<const VersionedDocument>(VersionedDocument{
       versions,
       "\"" + instance_ + "-" + std::to_string(study) + "-" + std::to_string(versions.case_states) + "-" +
           std::to_string(versions.result_set) + "\"",
-      build_(study)});
+      std::move(body), std::move(compressed)});
   std::lock_guard lock(mutex_);
   if (documents_.size() >= kMaxStudies) documents_.clear();
   documents_[study] = document;
@@ -47,7 +89,7 @@ void VersionedDocuments::serve(Store& store, std::int64_t study, const httplib::
     return;
   }
   response.status = 200;
-  response.set_content(document->body, "application/json");
+  send_as_is(response, document, accepts_gzip(request));
 }
 
 }  // namespace aerobreak

@@ -14,7 +14,11 @@ double unix_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-Store::Store(const std::filesystem::path& file) : file_(file) {
+Store::Store(const std::filesystem::path& file, Access access) : file_(file) {
+  if (access == Access::reader) {
+    open_for_reading();
+    return;
+  }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   lock_.emplace(file);
   writer_ = std::make_unique<SqliteDatabase>(file);
@@ -24,6 +28,17 @@ Store::Store(const std::filesystem::path& file) : file_(file) {
   writer_->execute("PRAGMA journal_mode = WAL");
   writer_->execute("PRAGMA synchronous = FULL");
   opened_at_version_ = migrate_store(*writer_);
+}
+
+void Store::open_for_reading() {
+  if (!std::filesystem::exists(file_)) throw std::runtime_error("no store file " + file_.string());
+  writer_ = std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only);
+  opened_at_version_ = schema_version();
+  if (opened_at_version_ != latest_store_version())
+    throw std::runtime_error("the store " + file_.string() + " has schema version " +
+                             std::to_string(opened_at_version_) + ", this aerobreak reads version " +
+                             std::to_string(latest_store_version()) +
+                             ": open it once with `aerobreak serve` or `aerobreak run` of this version to upgrade it");
 }
 
 Store::~Store() = default;

@@ -19,11 +19,15 @@ namespace aerobreak {
 // on the writer connection under one mutex, each as one transaction, so that a crash at any point
 // leaves either all or none of a change. Readers use connections of their own (WAL lets them read
 // while the writer writes), so that the REST service never waits for the scheduler. One process
-// at a time: a Store holds the store's lock (store_lock.hpp) while it lives.
+// at a time: a Store holds the store's lock (store_lock.hpp) while it lives. A reader (e.g.
+// `aerobreak export` beside a running service) takes no lock and changes nothing.
 class Store {
  public:
-  // Throws StoreInUse when another Store, in this process or another, has the file open.
-  explicit Store(const std::filesystem::path& file);
+  enum class Access { orchestrator, reader };
+  // As orchestrator: throws StoreInUse when another orchestrator Store, in this process or
+  // another, has the file open. As reader: opens an existing store of the current schema version
+  // read-only (std::runtime_error otherwise); any writer method then fails with an SQLite error.
+  explicit Store(const std::filesystem::path& file, Access access = Access::orchestrator);
   ~Store();
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;
@@ -155,6 +159,7 @@ class Store {
 
   std::filesystem::path file_;
   std::optional<StoreLock> lock_;
+  void open_for_reading();
   int opened_at_version_ = 0;
   std::mutex write_mutex_;
   std::unique_ptr<SqliteDatabase> writer_;

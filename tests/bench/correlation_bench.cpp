@@ -145,7 +145,7 @@ int bench_store(const CaseOutcomeTable& table, const std::filesystem::path& file
   cache.current(study, ask);
   std::printf("store %s: first request (read, hash, fit, store) %.3f s, of which fitting %.3f s; "
               "second request (from the store) %.2f ms; summary %zu bytes\n",
-              file.c_str(), cold, first.fit_seconds, 1e3 * seconds_since(start), first.summary.size());
+              file.c_str(), cold, first->fit_seconds, 1e3 * seconds_since(start), first->summary.size());
   return 0;
 }
 

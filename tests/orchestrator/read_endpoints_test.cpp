@@ -63,6 +63,22 @@ TEST_CASE("The outcome table's and the grid statistics' ETags follow the study's
   }
   CHECK(after[0].etag != after[1].etag);
 
+  // A client that accepts gzip gets the body compressed once per version (not by cpp-httplib on
+  // every request); the client library inflates it back to the same document.
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    INFO(paths[i]);
+    auto client = service.client();
+    const auto compressed = client.Get(paths[i].c_str(), httplib::Headers{{"Accept-Encoding", "gzip"}});
+    REQUIRE(compressed);
+    CHECK(compressed->status == 200);
+    CHECK(compressed->get_header_value("Content-Encoding") == "gzip");
+    CHECK(compressed->body == after[i].body);
+    const auto plain = client.Get(paths[i].c_str(), httplib::Headers{{"Accept-Encoding", "identity"}});
+    REQUIRE(plain);
+    CHECK(plain->get_header_value("Content-Encoding").empty());
+    CHECK(plain->body == after[i].body);
+  }
+
   // Another study, even one sharing finished cases, changes nothing of this one.
   const auto other = submit(service, small_study("sharing", {0.08, 0.3}, 2)).at("id").get<std::int64_t>();
   REQUIRE(eventually([&] { return study_complete(service, other); }, 120s));

@@ -46,7 +46,7 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   CHECK(request.covariates[0].axis == "primaries");
   CorrelationCache cache(store);
 
-  const StoredCorrelations first = cache.current(study, request);
+  const StoredCorrelations first = *cache.current(study, request);
   CHECK(first.result_set_version == 64);
   CHECK(first.result_set_hash.size() == 64);
   const auto summary = nlohmann::json::parse(first.summary);
@@ -55,14 +55,14 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   CHECK_FALSE(store.stored_fit(first.set_id, "no-such-fit"));
 
   SECTION("unchanged: the same stored set") {
-    const StoredCorrelations again = cache.current(study, request);
+    const StoredCorrelations again = *cache.current(study, request);
     CHECK(again.set_id == first.set_id);
     CHECK(again.computed_at == first.computed_at);
   }
   SECTION("a version bump with the same results: confirmed, not refitted") {
     SqliteDatabase db(file.path());
     db.execute("UPDATE results SET outcome = outcome WHERE case_id = 1");
-    const StoredCorrelations again = cache.current(study, request);
+    const StoredCorrelations again = *cache.current(study, request);
     CHECK(again.result_set_version == 65);
     CHECK(again.computed_at == first.computed_at);
     CHECK(again.result_set_hash == first.result_set_hash);
@@ -70,7 +70,7 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   SECTION("a changed result: refitted, with a new hash") {
     SqliteDatabase db(file.path());
     db.execute("UPDATE results SET outcome = 'undetermined' WHERE case_id = 1");
-    const StoredCorrelations again = cache.current(study, request);
+    const StoredCorrelations again = *cache.current(study, request);
     CHECK(again.result_set_version == 65);
     CHECK(again.result_set_hash != first.result_set_hash);
     CHECK(again.computed_at > first.computed_at);
