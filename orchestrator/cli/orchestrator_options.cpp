@@ -27,6 +27,10 @@ void OrchestratorOptions::add_to(CLI::App& command) {
   command.add_option("--idle-shutdown", idle_shutdown, "Seconds an idle worker job waits for work before it stops")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command.add_option("--worker-program", worker_program,
+                     "The program worker jobs run as PROGRAM worker [default: this aerobreak]; the tests' engine "
+                     "double build/tests/aerobreak_synthetic_worker answers from a synthetic law (docs/ADAPTIVE.md)")
+      ->check(CLI::ExistingFile);
   web_directory = default_web_directory().string();
   command.add_option("--web-dir", web_directory, "The dashboard's folder, served at / (empty: the API only)")
       ->capture_default_str();
@@ -51,7 +55,7 @@ SchedulerOptions OrchestratorOptions::scheduler_options(std::function<void(const
   options.launcher.ranks =
       ranks > 0 ? ranks : (launcher == "direct" ? 1 : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   options.launcher.arguments = launcher_arguments;
-  options.launcher.program = current_executable();
+  options.launcher.program = worker_program.empty() ? current_executable() : std::filesystem::absolute(worker_program);
   options.data_directory = std::filesystem::absolute(data_directory());
   options.idle_shutdown = std::chrono::milliseconds(static_cast<long>(idle_shutdown * 1000.0));
   options.log = std::move(log);

@@ -14,7 +14,9 @@
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
+#include "orchestrator/cli/search_table.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
@@ -183,8 +185,12 @@ int run(RunOptions options) {
   bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n"
-            << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
+  std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n";
+  // A search's outcome table has a row per value it placed: its groups' crossings say more.
+  if (study.search)
+    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
+  else
+    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, receipt.study_id);

@@ -33,7 +33,10 @@ std::string overdue_text(double seconds, double limit) {
 }  // namespace
 
 Scheduler::Scheduler(Store& store, SchedulerOptions options)
-    : store_(store), options_(std::move(options)), storage_(options_.max_storage_retry_delay) {
+    : store_(store),
+      options_(std::move(options)),
+      searches_(store, options_.log),
+      storage_(options_.max_storage_retry_delay) {
   status_.launcher_command = join_command(worker_job_command(options_.launcher));
 }
 
@@ -70,6 +73,24 @@ void Scheduler::note(const std::string& line) {
   if (options_.log) options_.log(line);
 }
 
+// A round the store refuses for a storage fault is not lost: it is decided again, from the same
+// stored results, once storage works.
+void Scheduler::advance_searches() {
+  if (!searches_due_ || storage_.holding()) return;
+  try {
+    searches_.advance();
+  } catch (const SqliteError& error) {
+    if (error.storage_fault()) {
+      storage_.note(error.what());
+      return;
+    }
+    note(std::string("adaptive search: ") + error.what());
+  } catch (const std::exception& error) {
+    note(std::string("adaptive search: ") + error.what());
+  }
+  searches_due_ = false;
+}
+
 void Scheduler::run() {
   while (!stopping_) {
     try {
@@ -87,6 +108,7 @@ void Scheduler::run() {
 void Scheduler::step() {
   const bool writes_waiting = storage_.status() && storage_.status()->waiting_writes > 0;
   if (storage_.retry_when_due() && writes_waiting) storage_.clear();
+  advance_searches();
   if (job_) {
     // Wait for one message at most 50 ms, then take the ones already there without waiting:
     // each may free a rank, and the freed rank gets its next case right after.
@@ -107,6 +129,7 @@ void Scheduler::step() {
     std::unique_lock lock(wake_mutex_);
     wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return woken_ || stopping_.load(); });
     woken_ = false;
+    searches_due_ = true;
   }
 }
 
@@ -217,6 +240,7 @@ void Scheduler::handle(const nlohmann::json& message) {
     });
     return;
   }
+  searches_due_ = true;
   if (type == "result") {
     if (storage_.write([this, case_id, attempt, message] { commit_result(case_id, attempt, message); }))
       storage_.clear();
@@ -323,6 +347,7 @@ void Scheduler::reap_job() {
   storage_.write([this, job_id, code, note_text] { store_.end_job(job_id, code, note_text); });
   job_.reset();
   in_flight_.clear();
+  searches_due_ = true;
 
   std::lock_guard lock(status_mutex_);
   status_.job_running = false;

@@ -17,6 +17,7 @@
 #include "orchestrator/scheduler/launcher.hpp"
 #include "orchestrator/scheduler/storage_faults.hpp"
 #include "orchestrator/scheduler/worker_job.hpp"
+#include "orchestrator/search/search_driver.hpp"
 #include "orchestrator/store/store.hpp"
 
 namespace aerobreak {
@@ -63,6 +64,8 @@ struct SchedulerStatus {
 // (store.hpp). All of it on one thread, the store's one writer besides submissions and cancels.
 // Storage that fails (disk full, read-only, I/O errors) fails no case and stops nothing: the
 // scheduler holds its writes and new work until storage works again (storage_faults.hpp).
+// Between messages it decides the adaptive searches' next rounds (search_driver.hpp) as their
+// last rounds finish, so that their cases join the queue the moment they can be chosen.
 class Scheduler {
  public:
   Scheduler(Store& store, SchedulerOptions options);
@@ -103,6 +106,7 @@ class Scheduler {
   void check_hard_limits();
   void stop_idle_job();
   void reap_job();
+  void advance_searches();
   void note(const std::string& line);
 
   Store& store_;
@@ -114,6 +118,8 @@ class Scheduler {
   bool woken_ = false;
 
   // Scheduling thread only.
+  SearchDriver searches_;
+  bool searches_due_ = true;  // a case of a search may have finished: look for rounds to decide
   std::unique_ptr<WorkerJob> job_;
   std::map<std::int64_t, InFlight> in_flight_;
   std::optional<OverdueCase> overdue_case_;

@@ -34,6 +34,8 @@ nlohmann::ordered_json to_json(const StudyProgress& progress) {
           {"total", progress.total},
           {"counts", counts},
           {"complete", progress.complete},
+          {"search_groups", progress.search_groups},
+          {"searching_groups", progress.searching_groups},
           {"cases_per_hour", progress.cases_per_hour},
           {"seconds_left", optional_json(progress.seconds_left)},
           {"first_started_at", optional_json(progress.first_started_at)},

@@ -32,6 +32,8 @@ std::vector<std::string> study_axes(const StudyRecord& study) {
   std::vector<std::string> axes;
   if (study.document.contains("axes") && study.document["axes"].is_object())
     for (const auto& [name, spec] : study.document["axes"].items()) axes.push_back(name);
+  // An adaptive search's axis varies across the cases like any axis (docs/ADAPTIVE.md).
+  if (study.document.contains("search")) axes.push_back(study.document["search"]["axis"].get<std::string>());
   return axes;
 }
 

@@ -17,6 +17,7 @@
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/summary_endpoints.hpp"
 #include "orchestrator/service/table_endpoints.hpp"
 #include "orchestrator/service/web_endpoints.hpp"
@@ -135,6 +136,7 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
              }));
   register_summary_endpoints(server, store);
   register_correlation_endpoints(server, store);
+  register_search_endpoints(server, store);
   register_table_endpoints(server, store);
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {

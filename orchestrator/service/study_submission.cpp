@@ -1,6 +1,32 @@
 #include "orchestrator/service/study_submission.hpp"
 
 namespace aerobreak {
+namespace {
+
+// A search's round 0: the cases of each group (`initial` of them, in group order) are linked to
+// their group, and each group starts with the record of its first round.
+void add_search_groups(const Study& study, StudySubmission& submission) {
+  const auto per_group = static_cast<std::size_t>(study.search->initial);
+  for (std::size_t k = 0; k < submission.cases.size(); ++k) {
+    auto& c = submission.cases[k];
+    const auto position = static_cast<std::int64_t>(k / per_group);
+    c.search_group = position;
+    c.search_round = 0;
+    if (k % per_group == 0) {
+      nlohmann::ordered_json group = c.grid_point;
+      group.erase(study.search->axis);
+      submission.search_groups.push_back({position, group, {{"round", 0}, {"results", 0}, {"estimates", nlohmann::ordered_json::array()},
+                                                            {"values", nlohmann::ordered_json::array()},
+                                                            {"reasons", nlohmann::ordered_json::array()}},
+                                          static_cast<int>(per_group)});
+    }
+    auto& round_zero = submission.search_groups.back().round_zero;
+    round_zero["values"].push_back(c.grid_point[study.search->axis]);
+    round_zero["reasons"].push_back("initial");
+  }
+}
+
+}  // namespace
 
 StudySubmission make_submission(const Study& study) {
   StudySubmission submission;
@@ -14,6 +40,7 @@ StudySubmission make_submission(const Study& study) {
   for (const auto& study_case : study.cases)
     submission.cases.push_back(
         {study_case.hash, study_case.document, study_case.grid_point, study_case.grid_key, study_case.replicate});
+  if (study.search) add_search_groups(study, submission);
   return submission;
 }
 

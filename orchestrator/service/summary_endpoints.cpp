@@ -5,6 +5,7 @@
 
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/http_support.hpp"
+#include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/versioned_documents.hpp"
 
 namespace aerobreak {
@@ -15,7 +16,9 @@ void register_summary_endpoints(httplib::Server& server, Store& store) {
                const auto id = path_id(request);
                const auto progress = store.progress(id);
                if (!progress) throw RequestError{404, "no study " + std::to_string(id)};
-               send_json(response, 200, to_json(*progress));
+               auto json = to_json(*progress);
+               if (progress->search_groups > 0) json["search"] = search_groups_json(store.search_groups(id, false));
+               send_json(response, 200, json);
              }));
   const auto tables = std::make_shared<VersionedDocuments>([&store](std::int64_t study) {
     auto json = outcome_table_json(store.outcomes(study));

@@ -200,6 +200,37 @@ CREATE INDEX results_statistics ON results (case_id, outcome, retained_mass_frac
   largest_fragment_share, damage_ratio, energy_per_contact, fractured_on_wall, small_strain_exceeded);
 )sql";
 
+// Adaptive boundary searches (docs/ADAPTIVE.md): each group of a search study with its state,
+// current estimates and every round it placed; each case linked to its group and round.
+constexpr std::string_view kVersion7 = R"sql(
+ALTER TABLE study_cases ADD COLUMN search_group INTEGER;
+ALTER TABLE study_cases ADD COLUMN search_round INTEGER;
+CREATE INDEX study_cases_by_search_group ON study_cases (study_id, search_group) WHERE search_group IS NOT NULL;
+
+CREATE TABLE search_groups (
+  study_id    INTEGER NOT NULL REFERENCES studies (id),
+  position    INTEGER NOT NULL,
+  group_point TEXT NOT NULL,
+  state       TEXT NOT NULL CHECK (state IN ('searching', 'converged', 'budget_spent', 'out_of_range', 'error')),
+  rounds      INTEGER NOT NULL,
+  cases       INTEGER NOT NULL,
+  estimates   TEXT NOT NULL DEFAULT '[]',
+  note        TEXT,
+  updated_at  REAL NOT NULL,
+  PRIMARY KEY (study_id, position)
+) WITHOUT ROWID;
+
+CREATE TABLE search_rounds (
+  study_id   INTEGER NOT NULL,
+  position   INTEGER NOT NULL,
+  round      INTEGER NOT NULL,
+  decided_at REAL NOT NULL,
+  plan       TEXT NOT NULL,
+  PRIMARY KEY (study_id, position, round),
+  FOREIGN KEY (study_id, position) REFERENCES search_groups (study_id, position)
+) WITHOUT ROWID;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -208,6 +239,7 @@ constexpr std::array kMigrations{
     Migration{4, "size and SHA-256 of each result's data file", kVersion4},
     Migration{5, "stored correlation sets and fits", kVersion5},
     Migration{6, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion6},
+    Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
 };
 
 int user_version(SqliteDatabase& db) {

@@ -5,6 +5,7 @@
 
 #include "orchestrator/store/migrations.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
+#include "orchestrator/store/store_search_rows.hpp"
 #include "orchestrator/store/store_summaries.hpp"
 
 namespace aerobreak {
@@ -146,41 +147,9 @@ void Store::insert_study(const StudySubmission& submission, double now, Submissi
   insert_study.run();
   receipt.study_id = writer_->last_insert_id();
 
-  auto find_case = writer_->prepare("SELECT id, status FROM cases WHERE hash = ?");
-  auto insert_case = writer_->prepare(
-      "INSERT INTO cases (hash, document, status, max_attempts, wall_time_limit, queued_at) "
-      "VALUES (?, ?, 'queued', ?, ?, ?)");
-  auto requeue_case = writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE id = ?");
-  auto link = writer_->prepare(
-      "INSERT OR IGNORE INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
-      "VALUES (?, ?, ?, ?, ?, ?)");
-  std::size_t position = 0;
-  for (const auto& study_case : submission.cases) {
-    std::int64_t case_id = 0;
-    find_case.reset();
-    find_case.bind_all(study_case.hash);
-    if (find_case.step()) {
-      case_id = find_case.integer(0);
-      const std::string status = find_case.text(1);
-      if (status == "done") ++receipt.already_done;
-      if (status == "cancelled") {
-        requeue_case.reset();
-        requeue_case.bind_all(now, case_id).run();
-        ++receipt.requeued;
-      }
-    } else {
-      insert_case.reset();
-      insert_case.bind_all(study_case.hash, study_case.document.dump(), submission.max_attempts,
-                           submission.case_wall_time, now);
-      insert_case.run();
-      case_id = writer_->last_insert_id();
-      ++receipt.new_cases;
-    }
-    link.reset();
-    link.bind_all(receipt.study_id, case_id, position++, study_case.grid_point.dump(), study_case.grid_key,
-                  study_case.replicate);
-    link.run();
-  }
+  link_study_cases(*writer_, receipt.study_id, submission.cases, 0,
+                   {submission.max_attempts, submission.case_wall_time, now}, receipt);
+  insert_search_groups(*writer_, receipt.study_id, submission.search_groups, now);
 }
 
 std::optional<ClaimedCase> Store::claim_next_case(std::int64_t job_id, const std::string& worker) {

@@ -91,6 +91,16 @@ class Store {
   // Running cases finish (their results are kept). False when there is no such active study.
   bool cancel_study(std::int64_t study_id);
 
+  // --- Adaptive searches (docs/ADAPTIVE.md) ------------------------------------------------------
+
+  // The searching groups of active studies whose last round has finished (none of its cases
+  // queued or running), with their results: each is due its next round.
+  std::vector<SearchGroupWork> search_work();
+  // Stores a decision in one transaction: the round's record and cases, linked to the study, and
+  // the group's state and estimates. Only when the group still stands at that round (a decision
+  // made again after a restart changes nothing): returns whether it was stored.
+  bool record_search_decision(const SearchDecision& decision);
+
   // Recomputes the per-study and per-grid-point summaries from the cases and results
   // (store_summaries.hpp). Never needed in operation (triggers keep them, migrations rebuild them);
   // for checks and repairs.
@@ -127,6 +137,8 @@ class Store {
   // fragments its determined results left, by wall contact and size (store_grid_queries.cpp).
   std::vector<GridPointFragmentMasses> fragment_masses(std::int64_t study_id);
   std::optional<CaseDetail> case_detail(std::int64_t case_id);
+  // A study's search groups in order, with every round's record when `history` (empty: no search).
+  std::vector<SearchGroupRecord> search_groups(std::int64_t study_id, bool history);
   std::vector<JobRecord> jobs(std::size_t limit);
   // The data files, with their recorded size and checksum, of the done cases among `hashes`.
   std::vector<StoredDataFile> data_files(const std::vector<std::string>& hashes);

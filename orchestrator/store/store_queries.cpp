@@ -171,7 +171,14 @@ std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
   progress.first_started_at = statement.optional_real(5);
   progress.last_finished_at = statement.optional_real(6);
   const std::size_t remaining = progress.by_status["queued"] + progress.by_status["running"];
-  progress.complete = remaining == 0;
+  auto groups = db->prepare(
+      "SELECT count(*), count(*) FILTER (WHERE g.state = 'searching' AND s.status = 'active') "
+      "FROM search_groups g JOIN studies s ON s.id = g.study_id WHERE g.study_id = ?");
+  groups.bind_all(study_id);
+  groups.step();
+  progress.search_groups = static_cast<std::size_t>(groups.integer(0));
+  progress.searching_groups = static_cast<std::size_t>(groups.integer(1));
+  progress.complete = remaining == 0 && progress.searching_groups == 0;
   // The rate counts the cases finished for this study since it was created; a case finished for an
   // earlier study costs nothing here and is left out.
   const auto finished = static_cast<std::size_t>(statement.integer(7));

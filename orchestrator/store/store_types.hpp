@@ -35,10 +35,64 @@ struct StudySubmission {
     nlohmann::ordered_json grid_point;
     std::string grid_key;
     int replicate = 0;
+    std::optional<std::int64_t> search_group{};  // an adaptive search's case: its group and round
+    std::optional<int> search_round{};
   };
   std::vector<Case> cases;
+  // An adaptive search's groups (docs/ADAPTIVE.md), each with its round 0 (its cases are among
+  // `cases`).
+  struct SearchGroup {
+    std::int64_t position = 0;
+    nlohmann::ordered_json group_point;
+    nlohmann::ordered_json round_zero;  // the round's record: values and why
+    int cases = 0;
+  };
+  std::vector<SearchGroup> search_groups;
   // Hashes of done cases to compute again (their data files were lost or damaged).
   std::vector<std::string> recompute;
+};
+
+// A search group whose last round has finished (no case of it queued or running): what the next
+// round is decided from.
+struct SearchGroupWork {
+  std::int64_t study_id = 0;
+  std::int64_t position = 0;
+  nlohmann::ordered_json study_document;
+  nlohmann::ordered_json group_point;
+  int rounds = 0;  // rounds placed; the next is round number `rounds`
+  int cases = 0;   // cases placed, failed ones included
+  // The group's cases in placement order: grid point and outcome class (empty: no result).
+  std::vector<std::pair<nlohmann::ordered_json, std::string>> finished;
+};
+
+// A round's record, or a group's outcome, as the search decided it.
+struct SearchDecision {
+  std::int64_t study_id = 0;
+  std::int64_t position = 0;
+  int round = 0;                          // the round this decides (SearchGroupWork::rounds)
+  std::string state;                      // the group's state after it
+  nlohmann::ordered_json estimates;       // the crossings the decision rests on
+  nlohmann::ordered_json plan;            // the round's record (stored when it places cases)
+  std::vector<StudySubmission::Case> cases;  // the round's cases (none: the group has ended)
+  std::string note;                       // why a group ended in error
+};
+
+struct SearchRoundRecord {
+  int round = 0;
+  double decided_at = 0.0;
+  nlohmann::ordered_json plan;
+};
+
+struct SearchGroupRecord {
+  std::int64_t position = 0;
+  nlohmann::ordered_json group_point;
+  std::string state;
+  int rounds = 0;
+  int cases = 0;
+  nlohmann::ordered_json estimates;
+  std::optional<std::string> note;
+  double updated_at = 0.0;
+  std::vector<SearchRoundRecord> history;  // filled on request
 };
 
 struct SubmissionReceipt {
@@ -88,7 +142,9 @@ struct StudyProgress {
   std::optional<double> last_finished_at;
   double cases_per_hour = 0.0;                    // finished cases over the time since the first start
   std::optional<double> seconds_left;             // remaining / rate, when there is a rate
-  bool complete = false;                          // nothing queued or running
+  std::size_t search_groups = 0;                  // groups of an adaptive search, all states
+  std::size_t searching_groups = 0;               // of which still searching
+  bool complete = false;                          // nothing queued or running, no group searching
 };
 
 // Versions of what a study's read endpoints show (store_summaries.hpp); both only grow within a

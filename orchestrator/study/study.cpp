@@ -82,14 +82,27 @@ void check_base(const Json& base, const std::vector<StudyAxis>& axes, const Stud
   }
 }
 
-// "16 x 3 x 2 replicates = 96".
+// "16 x 3 x 2 replicates = 96", or "16 x 3 x a budget of 200 = 9600".
 std::string count_text(const Study& study) {
   std::string text;
   for (const auto& axis : study.axes) text += std::to_string(axis.values.size()) + " x ";
-  text += std::to_string(study.replicates) + " replicate" + (study.replicates > 1 ? "s" : "") + " = ";
-  const std::size_t count = study.case_count();
+  if (study.search)
+    text += "a budget of " + std::to_string(study.search->budget) + " = ";
+  else
+    text += std::to_string(study.replicates) + " replicate" + (study.replicates > 1 ? "s" : "") + " = ";
+  const std::size_t count = study.case_limit();
   return text + (count == std::numeric_limits<std::size_t>::max() ? "more than " + std::to_string(count)
                                                                   : std::to_string(count));
+}
+
+// The search block: its axis is none of the axes, and each of its cases is a replicate of its own.
+void read_search(Study& study, const Json& search, std::vector<SchemaViolation>& violations) {
+  std::vector<std::string> pointers;
+  for (const auto& axis : study.axes) pointers.push_back(axis.pointer);
+  study.search = read_search_spec(search, pointers, violations);
+  if (study.replicates != 1)
+    violations.push_back({"/replicates/count", "must be 1 (the default) in a search: each case of a group draws a "
+                                               "cluster and orientation of its own"});
 }
 
 }  // namespace
@@ -105,21 +118,36 @@ const JsonSchema& study_schema() {
   return schema;
 }
 
-std::size_t Study::case_count() const {
+namespace {
+
+std::size_t saturating_product(std::size_t a, std::size_t b) {
   constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
-  std::size_t count = replicates > 0 ? static_cast<std::size_t>(replicates) : 0;
-  for (const auto& axis : axes) {
-    const std::size_t size = axis.values.size();
-    count = size != 0 && count > kMax / size ? kMax : count * size;
-  }
+  return b != 0 && a > kMax / b ? kMax : a * b;
+}
+
+}  // namespace
+
+std::size_t Study::group_count() const {
+  std::size_t count = 1;
+  for (const auto& axis : axes) count = saturating_product(count, axis.values.size());
   return count;
+}
+
+std::size_t Study::case_count() const {
+  const int per_group = search ? search->initial : replicates;
+  return saturating_product(group_count(), per_group > 0 ? static_cast<std::size_t>(per_group) : 0);
+}
+
+std::size_t Study::case_limit() const {
+  return search ? saturating_product(group_count(), static_cast<std::size_t>(search->budget)) : case_count();
 }
 
 Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
                   const std::filesystem::path& base_directory) {
   std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
+  const bool searching = document.is_object() && document.contains("search");
   if (document.is_object() && document.contains("axes") && document["axes"].is_object())
-    check_axis_names(document["axes"], violations);
+    check_axis_names(document["axes"], violations, searching);
   if (!violations.empty()) throw StudyError(std::move(violations));
 
   if (!base_directory.empty()) make_cluster_paths_absolute(document, base_directory);
@@ -131,10 +159,12 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
   study.max_attempts = document["execution"]["max_attempts"].get<int>();
   study.case_wall_time = document["execution"]["case_wall_time"].get<double>();
   study.axes = read_axes(document["axes"], violations);
+  if (searching) read_search(study, document["search"], violations);
   check_base(document["base"], study.axes, limits, violations);
   // Counted before anything is expanded: a study of 10^20 cases is refused in microseconds.
-  if (study.case_count() > limits.max_cases)
-    violations.push_back({"/axes", "expands to " + count_text(study) + " cases (axis sizes x replicates); the limit here is " +
+  if (study.case_limit() > limits.max_cases)
+    violations.push_back({"/axes", "expands to " + count_text(study) + " cases (axis sizes x " +
+                                       (searching ? "the search's budget" : "replicates") + "); the limit here is " +
                                        std::to_string(limits.max_cases) + " cases"});
   if (!violations.empty()) throw StudyError(std::move(violations));
 

@@ -2,12 +2,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "engine/impact/json_schema.hpp"
+#include "orchestrator/study/study_search.hpp"
 
 namespace aerobreak {
 
@@ -46,9 +48,16 @@ struct Study {
   int max_attempts = 3;
   double case_wall_time = 3600.0;  // seconds
   std::string hash;                // sha256 of the canonical completed study document (identifies a resubmission)
-  std::size_t case_count() const;  // product of axis sizes x replicates (saturating)
+  // An adaptive boundary search (docs/ADAPTIVE.md): its axis is not among `axes`, which then
+  // name the groups it searches in (none: one group).
+  std::optional<BoundarySearchSpec> search;
+  std::size_t group_count() const;  // product of axis sizes (saturating; 1 without axes)
+  // Cases at submission: groups x replicates, or groups x the search's initial cases (saturating).
+  std::size_t case_count() const;
+  // The most cases the study can ever have: case_count(), or groups x the search's budget.
+  std::size_t case_limit() const;
   // The cases, expanded and validated once by parse_study: the first axis varies slowest, the
-  // replicates fastest.
+  // replicates (or a search's round-0 values) fastest.
   std::vector<StudyCase> cases;
 };
 
@@ -91,5 +100,10 @@ std::string case_hash(const nlohmann::ordered_json& completed_case_document);
 // masked to 53 bits so that JSON readers in double precision keep it exact.
 std::uint64_t replicate_seed(std::uint64_t study_seed, const std::string& stream, int replicate,
                              const std::string& sample_key);
+
+// A case of an adaptive search: the group's axis values, the search axis at `value`, seeds of
+// replicate `replicate` (each case of a group has its own, so that its cases are independent
+// samples). Validated and hashed as parse_study does; throws StudyError naming what is wrong.
+StudyCase search_case(const Study& study, const nlohmann::ordered_json& group_point, double value, int replicate);
 
 }  // namespace aerobreak

@@ -194,10 +194,13 @@ bool covers(const std::string& outer, const std::string& inner) {
   return inner == outer || inner.rfind(outer + "/", 0) == 0;
 }
 
-void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations) {
-  if (axes.empty()) violations.push_back({"/axes", "must name at least 1 axis"});
-  if (axes.size() > kMaxAxes)
-    violations.push_back({"/axes", "must name at most " + std::to_string(kMaxAxes) + " axes (got " +
+void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations,
+                      bool searching) {
+  const std::size_t most = searching ? kMaxAxes - 1 : kMaxAxes;
+  if (axes.empty() && !searching) violations.push_back({"/axes", "must name at least 1 axis"});
+  if (axes.size() > most)
+    violations.push_back({"/axes", "must name at most " + std::to_string(most) + " axes" +
+                                       (searching ? " beside the search axis" : "") + " (got " +
                                        std::to_string(axes.size()) + ")"});
   std::vector<std::pair<std::string, std::string>> named;  // (axis name, pointer)
   for (const auto& [name, unused] : axes.items()) {

@@ -20,8 +20,10 @@ bool covers(const std::string& outer, const std::string& inner);
 
 // The rules on axis names that the schema cannot state: 1 to 8 axes, each an alias or a valid JSON
 // pointer into the case, no label swept, no two axes setting the same field (or one inside the
-// other). Needs only "axes" to be an object, so that its answer can join the schema's.
-void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations);
+// other). Needs only "axes" to be an object, so that its answer can join the schema's. A study with
+// a search may have no axes (its search then has one group) and at most 7.
+void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations,
+                      bool searching = false);
 
 // Why setting `pointer` in `base` would create or grow an array (empty when it would not):
 // nlohmann turns a missing "/x/5000000" into an array of 5,000,001 nulls. A case has no arrays

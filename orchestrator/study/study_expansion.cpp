@@ -1,6 +1,7 @@
 #include "orchestrator/study/study_expansion.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -59,6 +60,7 @@ std::string study_pointer(const Study& study, const std::string& case_pointer) {
   for (const auto& axis : study.axes)
     if (covers(axis.pointer, case_pointer))
       return pointer_child("/axes", axis.name);
+  if (study.search && covers(study.search->pointer, case_pointer)) return "/search/axis";
   return "/base" + case_pointer;
 }
 
@@ -133,11 +135,15 @@ Json case_document(const Study& study, const Json& grid_point, int replicate, co
   document.erase("name");
   document.erase("description");
   document.erase("$schema");
-  for (const auto& axis : study.axes) {
+  std::vector<std::pair<std::string, std::string>> fields;  // (name, pointer) of every value the grid point sets
+  for (const auto& axis : study.axes) fields.emplace_back(axis.name, axis.pointer);
+  if (study.search) fields.emplace_back(study.search->axis, study.search->pointer);
+  for (const auto& [name, pointer] : fields) {
+    const std::string where_in_study = study.search && name == study.search->axis ? "/search/axis" : pointer_child("/axes", name);
     try {
-      document[Json::json_pointer(axis.pointer)] = grid_point[axis.name];
+      document[Json::json_pointer(pointer)] = grid_point[name];
     } catch (const nlohmann::json::exception& e) {
-      violations.add(pointer_child("/axes", axis.name), std::string("cannot be set in the case: ") + e.what(), where);
+      violations.add(where_in_study, std::string("cannot be set in the case: ") + e.what(), where);
       return nullptr;
     }
   }
@@ -158,55 +164,99 @@ std::string grid_label(const nlohmann::ordered_json& grid_point) {
   return label;
 }
 
+namespace {
+
+// Group `point` of the axes (the first axis varies slowest).
+Json group_point(const Study& study, std::size_t point) {
+  Json grid_point = Json::object();
+  std::vector<std::size_t> digits(study.axes.size());
+  for (std::size_t i = study.axes.size(), rest = point; i-- > 0;) {
+    digits[i] = rest % study.axes[i].values.size();
+    rest /= study.axes[i].values.size();
+  }
+  for (std::size_t i = 0; i < study.axes.size(); ++i) grid_point[study.axes[i].name] = study.axes[i].values[digits[i]];
+  return grid_point;
+}
+
+// The grid points of one group and the replicate of each: the replicates at the group's point,
+// or a search's round-0 values, replicate k at the k-th.
+std::vector<std::pair<Json, int>> group_cases(const Study& study, const Json& group) {
+  std::vector<std::pair<Json, int>> out;
+  if (!study.search) {
+    for (int replicate = 0; replicate < study.replicates; ++replicate) out.emplace_back(group, replicate);
+    return out;
+  }
+  const auto candidates = search_candidates(*study.search);
+  int replicate = 0;
+  for (const auto index : initial_search_indices(*study.search)) {
+    Json point = group;
+    point[study.search->axis] = candidates[index];
+    out.emplace_back(std::move(point), replicate++);
+  }
+  return out;
+}
+
+// The case at a grid point and replicate, validated and hashed; nullopt (the violations noted)
+// when it is not a valid case.
+std::optional<StudyCase> expand_case(const Study& study, const Json& grid_point, int replicate,
+                                     CaseViolations& violations, ClusterFileDigests& digests) {
+  const std::string where = "case " + grid_label(grid_point) + ", replicate " + std::to_string(replicate);
+  Json document = case_document(study, grid_point, replicate, where, violations);
+  if (document.is_null()) return std::nullopt;
+  StudyCase c;
+  try {
+    c.document = parse_impact_case(std::move(document)).document;
+  } catch (const CaseError& e) {
+    for (const auto& v : e.violations()) violations.add(study_pointer(study, v.pointer), v.message, where);
+    return std::nullopt;
+  }
+  try {
+    c.hash = case_hash(c.document, digests);
+  } catch (const std::runtime_error& e) {
+    violations.add(study_pointer(study, "/cluster/file/path"), e.what(), where);
+    return std::nullopt;
+  }
+  c.grid_point = grid_point;
+  c.grid_key = grid_point.dump();
+  c.replicate = replicate;
+  return c;
+}
+
+}  // namespace
+
 StudyExpansion expand_with_violations(const Study& study) {
   StudyExpansion out;
   CaseViolations violations;
   ClusterFileDigests digests;
   std::map<std::string, std::string> first_with_hash;
 
-  const std::size_t points = study.case_count() / static_cast<std::size_t>(study.replicates);
   out.cases.reserve(study.case_count());
-  for (std::size_t point = 0; point < points; ++point) {
-    // The first axis varies slowest.
-    Json grid_point = Json::object();
-    std::vector<std::size_t> digits(study.axes.size());
-    for (std::size_t i = study.axes.size(), rest = point; i-- > 0;) {
-      digits[i] = rest % study.axes[i].values.size();
-      rest /= study.axes[i].values.size();
-    }
-    for (std::size_t i = 0; i < study.axes.size(); ++i) grid_point[study.axes[i].name] = study.axes[i].values[digits[i]];
-
-    for (int replicate = 0; replicate < study.replicates; ++replicate) {
+  for (std::size_t point = 0; point < study.group_count(); ++point) {
+    for (const auto& [grid_point, replicate] : group_cases(study, group_point(study, point))) {
+      auto c = expand_case(study, grid_point, replicate, violations, digests);
+      if (!c) continue;
       const std::string where = "case " + grid_label(grid_point) + ", replicate " + std::to_string(replicate);
-      Json document = case_document(study, grid_point, replicate, where, violations);
-      if (document.is_null()) continue;
-      StudyCase c;
-      try {
-        c.document = parse_impact_case(std::move(document)).document;
-      } catch (const CaseError& e) {
-        for (const auto& v : e.violations()) violations.add(study_pointer(study, v.pointer), v.message, where);
-        continue;
-      }
-      try {
-        c.hash = case_hash(c.document, digests);
-      } catch (const std::runtime_error& e) {
-        violations.add(study_pointer(study, "/cluster/file/path"), e.what(), where);
-        continue;
-      }
-      const auto [first, unique] = first_with_hash.emplace(c.hash, where);
+      const auto [first, unique] = first_with_hash.emplace(c->hash, where);
       if (!unique) {
         violations.add("/axes", "gives cases with the same physics (a value repeated, or an axis that changes nothing)",
                        where + " is the same as " + first->second);
         continue;
       }
-      c.grid_point = grid_point;
-      c.grid_key = grid_point.dump();
-      c.replicate = replicate;
-      out.cases.push_back(std::move(c));
+      out.cases.push_back(std::move(*c));
     }
   }
   out.violations = violations.list();
   return out;
+}
+
+StudyCase search_case(const Study& study, const nlohmann::ordered_json& group, double value, int replicate) {
+  CaseViolations violations;
+  ClusterFileDigests digests;
+  Json grid_point = group;
+  grid_point[study.search->axis] = value;
+  auto c = expand_case(study, grid_point, replicate, violations, digests);
+  if (!c) throw StudyError(violations.list());
+  return std::move(*c);
 }
 
 }  // namespace aerobreak

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -46,7 +47,10 @@ class ServiceProcess {
     std::filesystem::remove(port_file);
     std::vector<std::string> arguments{AEROBREAK_BINARY, "serve",  "--store", store_file_.string(),
                                        "--port",         "0",      "--port-file", port_file.string(),
-                                       "--ranks",        "2",      "--idle-shutdown", "1"};
+                                       "--idle-shutdown", "1"};
+    // Two ranks unless the test chooses (an option may be given once).
+    if (std::find(extra_arguments.begin(), extra_arguments.end(), "--ranks") == extra_arguments.end())
+      arguments.insert(arguments.end(), {"--ranks", "2"});
     arguments.insert(arguments.end(), extra_arguments.begin(), extra_arguments.end());
     const auto log = directory_ / "serve.log";
     pid_ = ::fork();

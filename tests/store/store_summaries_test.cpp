@@ -223,8 +223,8 @@ TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leave
   db.execute("UPDATE results SET outcome = 'stick' WHERE outcome = 'undetermined'");
   db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
              "VALUES (" + std::to_string(study_id + 1) + ", 'later', 'later', '{}', 'active', 3, 60, 0)");
-  db.execute("INSERT INTO study_cases SELECT " + std::to_string(study_id + 1) +
-             ", case_id, position, grid_point, 'later', replicate FROM study_cases");
+  db.execute("INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) SELECT " +
+             std::to_string(study_id + 1) + ", case_id, position, grid_point, 'later', replicate FROM study_cases");
   check_summaries(db);
 }
 
@@ -239,8 +239,8 @@ TEST_CASE("A store made before the summaries gets them when opened", "[store]") 
       INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at, started_at, finished_at)
         VALUES (1, 'a', '{}', 'done', 3, 60, 100, 110, 120), (2, 'b', '{}', 'failed', 3, 60, 100, 111, 130),
                (3, 'c', '{}', 'queued', 3, 60, 100, NULL, NULL);
-      INSERT INTO study_cases VALUES (1, 1, 0, '{"v":1}', 'k1', 0), (1, 2, 1, '{"v":1}', 'k1', 1),
-                                     (1, 3, 2, '{"v":2}', 'k2', 0);
+      INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate)
+        VALUES (1, 1, 0, '{"v":1}', 'k1', 0), (1, 2, 1, '{"v":1}', 'k1', 1), (1, 3, 2, '{"v":2}', 'k2', 0);
       INSERT INTO results (case_id, attempt, outcome, document, committed_at) VALUES (1, 1, 'bounce', '{}', 120);
     )sql");
   }

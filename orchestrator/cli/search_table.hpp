@@ -1,0 +1,12 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace aerobreak {
+
+// The groups of an adaptive search (the "groups" of GET /api/studies/ID/search) as text: one line
+// per group with its state, rounds and cases, then one per crossing with its estimate and 95 %
+// interval.
+std::string format_search_table(const nlohmann::ordered_json& groups, const std::string& axis);
+
+}  // namespace aerobreak

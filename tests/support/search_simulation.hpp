@@ -1,0 +1,70 @@
+#pragma once
+// Adaptive searches and uniform grids run on the synthetic law directly (no store, no processes):
+// the many repetitions of the coverage test and of the benchmark (docs/ADAPTIVE.md, "Validation").
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "orchestrator/search/boundary_search.hpp"
+#include "orchestrator/search/optimal_design.hpp"
+#include "tests/support/synthetic_law.hpp"
+
+namespace aerobreak::testing {
+
+// A search for v50 of the impact speed over 0.005-0.3 d/tau, in rounds of 10 after 10 initial
+// cases: the setting of the coverage test and the benchmark.
+inline BoundarySearchSpec speed_search(double relative_width, int budget) {
+  BoundarySearchSpec spec;
+  spec.axis = "impact_speed";
+  spec.pointer = "/impact/speed";
+  spec.from = 0.005;
+  spec.to = 0.3;
+  spec.targets = {{"break-up", {0.5}}};
+  spec.relative_width = relative_width;
+  spec.budget = budget;
+  spec.batch = 10;
+  spec.initial = 10;
+  return spec;
+}
+
+struct SimulatedSearch {
+  RoundPlan final;  // the last decision: state and estimates
+  int cases = 0;
+  int rounds = 0;
+};
+
+// Outcomes of one simulated experiment: independent draws from the law, in order.
+class SimulatedOutcomes {
+ public:
+  SimulatedOutcomes(SyntheticLaw law, double gamma_over_kn, std::uint64_t seed)
+      : law_(law), gamma_(gamma_over_kn), state_(seed) {}
+  SearchObservation at(double value) {
+    const double u = static_cast<double>(splitmix64(state_) >> 11) * 0x1.0p-53;
+    return {value, law_.outcome(value, gamma_, u)};
+  }
+
+ private:
+  SyntheticLaw law_;
+  double gamma_;
+  std::uint64_t state_;
+};
+
+// A whole search of one group: round 0, then plan_round until the group ends.
+inline SimulatedSearch simulate_search(const BoundarySearchSpec& spec, const SyntheticLaw& law, double gamma_over_kn,
+                                       std::uint64_t seed) {
+  SimulatedOutcomes outcomes(law, gamma_over_kn, seed);
+  std::vector<SearchObservation> observations;
+  const auto candidates = search_candidates(spec);
+  for (const auto index : initial_search_indices(spec)) observations.push_back(outcomes.at(candidates[index]));
+  SimulatedSearch out;
+  out.rounds = 1;
+  for (;;) {
+    out.cases = static_cast<int>(observations.size());
+    out.final = plan_round(spec, observations, out.cases, round_seed(seed, 0, out.rounds));
+    if (out.final.state != GroupState::searching) return out;
+    for (const double value : out.final.values) observations.push_back(outcomes.at(value));
+    ++out.rounds;
+  }
+}
+
+}  // namespace aerobreak::testing
