@@ -39,7 +39,7 @@ std::optional<double> mean(const Moments& moments) {
 
 // The counts come from the grid-point summaries (one row per grid point); the moments and flags from
 // one pass over the study's results, grouped by grid point through study_cases_by_grid_key and read
-// from the covering index results_statistics instead of the results table (migration 5). A grid
+// from the covering index results_statistics instead of the results table (migration 6). A grid
 // point without results has no row in the pass: its moments read as NULL, that is 0.
 std::string grid_statistics_sql() {
   std::string aggregates;
