@@ -62,23 +62,6 @@ std::string document_tag(const StoredCorrelations& set, const std::string& reque
   return tag;
 }
 
-// The document with its ETag, or 304 when the request's If-None-Match names it. The document is
-// sent from where it is kept (`owner` keeps it alive), without a copy per request.
-void send_document(const httplib::Request& request, httplib::Response& response, const std::string& etag,
-                   std::shared_ptr<const void> owner, const std::string& document) {
-  response.set_header("ETag", etag);
-  response.set_header("Cache-Control", "no-cache");
-  if (names_current_tag(request, etag)) {
-    response.status = 304;
-    return;
-  }
-  response.status = 200;
-  response.set_content_provider(document.size(), "application/json",
-                                [owner, &document](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-                                  return sink.write(document.data() + offset, length);
-                                });
-}
-
 std::string fit_list(const std::vector<std::string>& names) {
   std::string text;
   for (std::size_t i = 0; i < names.size() && i < 20; ++i) text += (i ? ", " : "") + names[i];
@@ -92,7 +75,7 @@ void register_correlation_endpoints(httplib::Server& server, Store& store) {
   server.Get(R"(/api/studies/(\d+)/correlations)",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
                const auto [set, key] = current(store, *cache, request);
-               send_document(request, response, document_tag(*set, key, ""), set, set->summary);
+               send_kept_json(request, response, document_tag(*set, key, ""), set, set->summary);
              }));
   server.Get(R"(/api/studies/(\d+)/correlations/([^/]{1,200}))",
              guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
@@ -103,7 +86,7 @@ void register_correlation_endpoints(httplib::Server& server, Store& store) {
                  throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
                                              " (fits: " + fit_list(store.stored_fit_names(set->set_id)) + ")"};
                auto kept = std::make_shared<const std::string>(std::move(*document));
-               send_document(request, response, document_tag(*set, key, name), kept, *kept);
+               send_kept_json(request, response, document_tag(*set, key, name), kept, *kept);
              }));
 }
 

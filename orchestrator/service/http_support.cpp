@@ -70,4 +70,21 @@ bool names_current_tag(const httplib::Request& request, const std::string& etag)
   return false;
 }
 
+void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+                    std::shared_ptr<const void> owner, const std::string& body, const std::string& content_encoding) {
+  response.set_header("ETag", etag);
+  response.set_header("Cache-Control", "no-cache");
+  if (names_current_tag(request, etag)) {
+    response.status = 304;
+    return;
+  }
+  response.status = 200;
+  if (!content_encoding.empty()) response.set_header("Content-Encoding", content_encoding);
+  response.set_content_provider(body.size(), "application/json",
+                                [owner = std::move(owner), &body](std::size_t offset, std::size_t length,
+                                                                  httplib::DataSink& sink) {
+                                  return sink.write(body.data() + offset, length);
+                                });
+}
+
 }  // namespace aerobreak

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,14 @@ StudyRecord existing_study(Store& store, std::int64_t id);
 // Whether the request's If-None-Match (RFC 9110, 13.1.2: a list of tags or "*", compared weakly)
 // names `etag`: then the answer is 304 without a body.
 bool names_current_tag(const httplib::Request& request, const std::string& etag);
+
+// Answers with a kept JSON document and its ETag: 304 without a body when If-None-Match names the
+// tag; otherwise 200 with `body` sent from where it is kept (`owner` keeps it alive) through a
+// content provider of known length, which cpp-httplib sends as it is: no copy and no compression
+// per request. A non-empty `content_encoding` (e.g. "gzip") says how `body` is already encoded.
+void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+                    std::shared_ptr<const void> owner, const std::string& body,
+                    const std::string& content_encoding = "");
 
 // Runs a handler, turning RequestError into its JSON answer.
 template <typename Handler>

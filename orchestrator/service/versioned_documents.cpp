@@ -33,18 +33,6 @@ bool accepts_gzip(const httplib::Request& request) {
   return request.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
 }
 
-// Sends `body` with a known length through a content provider, which cpp-httplib does not compress.
-void send_as_is(httplib::Response& response, std::shared_ptr<const VersionedDocument> document, bool gzipped) {
-  const std::string& body = gzipped ? document->gzip_body : document->body;
-  if (gzipped) response.set_header("Content-Encoding", "gzip");
-  response.set_header("Vary", "Accept-Encoding");
-  response.set_content_provider(
-      body.size(), "application/json",
-      [document, &body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-        return sink.write(body.data() + offset, length);
-      });
-}
-
 }  // namespace
 
 VersionedDocuments::VersionedDocuments(Build build)
@@ -82,14 +70,11 @@ void VersionedDocuments::serve(Store& store, std::int64_t study, const httplib::
   if (!versions) throw RequestError{404, "no study " + std::to_string(study)};
   auto document = find(study, *versions);
   if (!document) document = make(study, *versions);
-  response.set_header("ETag", document->etag);
-  response.set_header("Cache-Control", "no-cache");
-  if (names_current_tag(request, document->etag)) {
-    response.status = 304;
-    return;
-  }
-  response.status = 200;
-  send_as_is(response, document, accepts_gzip(request));
+  response.set_header("Vary", "Accept-Encoding");
+  if (accepts_gzip(request))
+    send_kept_json(request, response, document->etag, document, document->gzip_body, "gzip");
+  else
+    send_kept_json(request, response, document->etag, document, document->body);
 }
 
 }  // namespace aerobreak
