@@ -103,7 +103,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
                            *request.gamma_over_kn, request.interpolate_gamma);
   const auto scalings = row_scalings(table, data, request);
   if (scalings) add_si_columns(table, *scalings);
-  const auto sections = table.metadata.is_object() ? table.metadata["sections"] : nlohmann::ordered_json();
+  const auto own_metadata = table.metadata.is_object() ? table.metadata : nlohmann::ordered_json::object();  // sections, fit_models
   table.metadata = {{"table", table.kind},
                     {"provenance", provenance(data)},
                     {"units", scalings ? "reduced and SI" : "reduced"},
@@ -112,7 +112,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   else if (scalings) table.metadata["material"] = "the study's own (physical units)";
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
   table.metadata["validity"] = validity(table, data);
-  if (!sections.is_null()) table.metadata["sections"] = sections;
+  for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
   table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
   return table;
 }
