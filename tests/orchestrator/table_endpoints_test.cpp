@@ -112,7 +112,8 @@ TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused 
   INFO(fit.body.substr(0, 500));
   REQUIRE(fit.status == 200);
   std::map<std::string, Json> columns;
-  for (const auto& column : Json::parse(fit.body).at("columns")) columns[column.at("name")] = column.at("values");
+  const auto document = Json::parse(fit.body);
+  for (const auto& column : document.at("columns")) columns[column.at("name").get<std::string>()] = column.at("values");
   CHECK(columns.at("primaries") == Json::array({64.0, 512.0}));
   CHECK(columns.at("inside_validity") == Json::array({1.0, 0.0}));  // between 32 and 128: inside; 512: extrapolated
   CHECK(columns.at("model") == Json::array({1.0, 1.0}));
