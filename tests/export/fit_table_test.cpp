@@ -102,6 +102,8 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     CHECK(at(table, "inside_validity", row) == (size == 64 ? 1.0 : 0.0));
   }
   CHECK(table.metadata.at("fit_models").at("pooled_ln_n").get<std::string>().find("b2 ln N") != std::string::npos);
+  CHECK(table.metadata.at("validity").at("primaries") == nlohmann::ordered_json::array({32.0, 128.0}));  // run, not tabulated
+  CHECK(table.metadata.at("validity").at("impact_speed") == nlohmann::ordered_json::array({0.01, 0.3}));
 }
 
 // R 4.2.2 (Debian r-base-core) on the same counts, from tests/fitting/reference_implementation_test.cpp:
