@@ -25,8 +25,14 @@ bool speed_fit(const LogisticFit& fit) {
   return fit.dose == "impact_speed" && (fit.response == Outcome::stick || fit.response == Outcome::break_up);
 }
 
+// One group's own fit (not OUTCOME.speed.pooled, which has no covariate when the study's other axes
+// are none of the known covariates).
+bool per_group_fit(const LogisticFit& fit) {
+  return speed_fit(fit) && fit.covariates.empty() && !fit.common.name.ends_with(".pooled");
+}
+
 bool usable_per_size(const LogisticFit& fit) {
-  return speed_fit(fit) && fit.covariates.empty() && fit.common.coefficients.size() == 2 && !fit.common.validity.empty();
+  return per_group_fit(fit) && fit.common.coefficients.size() == 2 && !fit.common.validity.empty();
 }
 
 // Firth's estimate under separation is finite, but its Wald band is unreliable (Heinze & Schemper,
@@ -86,7 +92,7 @@ std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<
   const std::string size_axis = size_axis_of(set);
   std::set<std::pair<std::string, double>> run;  // every size that has a per-size fit, usable or not
   for (const auto& fit : set.logistic)
-    if (speed_fit(fit) && fit.covariates.empty())
+    if (per_group_fit(fit))
       run.insert({other_axes(fit.common.group, size_axis), key_value(fit.common.group.value(size_axis, kMissing))});
   std::map<std::string, FitPair> pooled;
   for (auto& pair : fit_pairs(set.size_pooled, usable_pooled)) pooled.emplace(pair.group.dump(), pair);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "orchestrator/export/lookup_tables.hpp"
+#include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/logistic_models.hpp"
 #include "orchestrator/service/correlation_cache.hpp"
@@ -131,6 +132,54 @@ TEST_CASE("Fit table at sizes not run: the rows are the pooled model R's glm rep
     const double eta = 6.231419790302835 + 1.974162739163768 * std::log(request.speeds[row]) - 0.350161297993368 * std::log(64.0);
     CHECK(at(table, "p_break_up", row) == Approx(1.0 / (1.0 + std::exp(-eta))).epsilon(1e-6));
   }
+}
+
+namespace {
+
+// The counts of pooled_size_study.hpp as an outcome table, for two walls: the non-adhesive one with
+// the two sizes' counts swapped, so that its curves differ.
+CaseOutcomeTable two_walls() {
+  CaseOutcomeTable table;
+  table.axes = {"impact_speed", "/wall/adhesive", "primaries"};
+  for (const bool adhesive : {true, false})
+    for (const int size : kPooledSizes)
+      for (std::size_t s = 0; s < kPooledSpeeds.size(); ++s) {
+        table.grid_points.push_back({{"impact_speed", kPooledSpeeds[s]}, {"/wall/adhesive", adhesive}, {"primaries", size}});
+        for (int r = 0; r < kPooledReplicates; ++r) {
+          const auto fragments = pooled_fragments(adhesive ? size : 160 - size, s, r);
+          const std::string outcome = outcome_of(fragments, adhesive ? size : 160 - size);
+          CaseOutcome c;
+          c.grid_point = table.grid_points.size() - 1;
+          c.outcome = outcome == "stick" ? Outcome::stick : outcome == "bounce" ? Outcome::bounce : Outcome::break_up;
+          table.cases.push_back(c);
+        }
+      }
+  return table;
+}
+
+}  // namespace
+
+TEST_CASE("Fit table at sizes not run: one pooled fit per group of the other axes (a boolean wall axis)", "[export][fit]") {
+  const CaseOutcomeTable outcomes = two_walls();
+  CorrelationSet set;
+  set.request.speed_axis = "impact_speed";
+  set.request.size_axis = "primaries";
+  set.logistic = fit_logistic_models(outcomes, group_cases(outcomes, "impact_speed"), set.request);
+  set.size_pooled = fit_size_pooled_models(outcomes, set.request);
+  REQUIRE(set.size_pooled.size() == 6);  // stick, bounce, break-up x two walls
+  ExportRequest request;
+  request.kind = TableKind::fit;
+  request.sizes = {48};  // not 64: between 32 and 128 in ln N the swapped counts give the same P there
+  request.speeds = {0.05};
+  const auto table = fit_table(set, request, 1.0);
+  REQUIRE(table.rows() == 2);
+  CHECK(table.find("wall_adhesive")->values == std::vector<double>{1.0, 0.0});
+  for (std::size_t row = 0; row < 2; ++row) {
+    const auto& pooled = fit_named(set.size_pooled, row == 0 ? "break-up.speed.sizes.g1" : "break-up.speed.sizes.g2");
+    CHECK(pooled.common.group == nlohmann::ordered_json{{"/wall/adhesive", row == 0}});
+    CHECK(at(table, "p_break_up", row) == Approx(band_by_hand(pooled.common, 0.05, 48).p).epsilon(1e-9));
+  }
+  CHECK(at(table, "p_break_up", 0) != Approx(at(table, "p_break_up", 1)).epsilon(1e-3));
 }
 
 TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and the range (aerobreak export)", "[export][fit]") {
