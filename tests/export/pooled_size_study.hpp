@@ -35,18 +35,8 @@ inline StudySubmission pooled_submission() {
                     {"axes", {{"impact_speed", {{"values", kPooledSpeeds}}}, {"primaries", {{"values", kPooledSizes}}}}}};
   for (const double speed : kPooledSpeeds)
     for (const int size : kPooledSizes)
-      for (int r = 0; r < kPooledReplicates; ++r) {
-        StudySubmission::Case c;
-        c.grid_point = {{"impact_speed", speed}, {"primaries", size}};
-        c.grid_key = c.grid_point.dump();
-        c.replicate = r;
-        c.hash = c.grid_key + "/" + std::to_string(r);
-        c.document = {{"units", "reduced"},
-                      {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", size}, {"seed", r}}}}},
-                      {"material", {{"gamma_over_kn", 0.001}, {"poisson_ratio", 0.3}}},
-                      {"impact", {{"speed", speed}, {"angle", 0}}}};
-        study.cases.push_back(std::move(c));
-      }
+      for (int r = 0; r < kPooledReplicates; ++r)
+        study.cases.push_back(reduced_case({{"impact_speed", speed}, {"primaries", size}}, speed, 0.001, size, r));
   return study;
 }
 
