@@ -75,16 +75,18 @@ void check_rounds_replay(const Study& study, const Json& search, const Json& cas
       const int r = round.at("round").get<int>();
       INFO("group " << position << " round " << r);
       if (r > 0) {
-        const auto plan = plan_round(spec, observations, placed, round_seed(study.seed, position, r));
+        const auto plan = plan_round(spec, observations, round_context(study.seed, position, r, placed));
         CHECK(plan.values == round.at("values").get<std::vector<double>>());
       }
       for (const auto& value : round.at("values")) {
         const auto& c = by_replicate.at(placed++);
         CHECK(c.at("grid_point").at(spec.axis).get<double>() == value.get<double>());
-        if (c.at("outcome").is_string()) observations.push_back({value.get<double>(), c.at("outcome").get<std::string>()});
+        if (c.at("outcome").is_string())
+          observations.push_back({value.get<double>(), c.at("outcome").get<std::string>(), r});
       }
     }
-    const auto last = plan_round(spec, observations, placed, round_seed(study.seed, position, group.at("rounds").get<int>()));
+    const auto last =
+        plan_round(spec, observations, round_context(study.seed, position, group.at("rounds").get<int>(), placed));
     CHECK(to_string(last.state) == group.at("state").get<std::string>());
     CHECK(last.values.empty());
   }
@@ -112,6 +114,7 @@ TEST_CASE("An adaptive search through the scheduler and store finds each group's
     const auto& v50 = group.at("estimates").at(0);
     CHECK(v50.at("response") == "break-up");
     CHECK(v50.at("narrow_enough") == true);
+    CHECK(v50.at("found") == true);
     // One interval misses the truth one time in twenty (the coverage test counts how often); the
     // estimate itself lies within a quarter of the truth.
     const double truth = law.crossing("break-up", 0.5, group.at("group").at("gamma_over_kn").get<double>());
