@@ -59,8 +59,9 @@ struct RoundPlan {
 };
 
 // Decides round `context.round` of a group that has placed `context.cases_placed` cases (all
-// finished: done or failed) with these results (those of rounds before it). Phase I, per response whose outcomes do not overlap yet: values
-// evenly inside the gap between the two outcomes (Neyer 1994; Wu & Tian 2014, phase I). Phase II:
+// finished: done or failed) with these results (those of the rounds before it). Phase I, per
+// response whose outcomes do not overlap yet: values evenly inside the gap between the two
+// outcomes (Neyer 1994; Wu & Tian 2014, phase I). Phase II:
 // values chosen one at a time from the candidates to minimise the posterior expected variance of
 // the unfinished crossings, each weighted by its wanted half-width^-2 (a Bayesian c-/L-optimal
 // design for the logistic model: Chaloner & Larntz 1989), averaged over draws of the parameters
