@@ -223,7 +223,7 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
   CHECK_FALSE(metadata.at("axis_labels").contains("wall_adhesive"));
 }
 
-TEST_CASE("select=NAME:VALUE keeps the rows of one condition; an unknown column or no match is refused naming select", "[export][axes]") {
+TEST_CASE("select=NAME:VALUE keeps the rows of one condition, an unknown column or no match is refused naming select", "[export][axes]") {
   WallFixture fixture;
   ExportRequest request;
   request.select = {{"wall_adhesive", 0}, {"primaries", 32}};
