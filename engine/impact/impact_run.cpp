@@ -63,14 +63,15 @@ Wall impact_wall(const ImpactCase& c) {
   return wall;
 }
 
-// Settle criterion (docs/IMPACT.md). The automatic window covers 50 contact periods and a tenth
-// of the time the cluster needs to cross its own extent at the normal impact speed.
+// Settle criterion (docs/IMPACT.md). The automatic window covers 50 contact periods and a fraction
+// (a tenth unless the case says otherwise) of the time the cluster needs to cross its own extent
+// at the normal impact speed.
 void choose_settle_window(ImpactResult& r, double extent) {
   const ImpactCase& c = r.impact_case;
   const double normal_speed = -dot(r.impact_velocity, r.wall_normal);
-  r.quiet_window = c.settle.quiet_window > 0.0
-                       ? c.settle.quiet_window
-                       : std::max(50.0 * r.time_step_estimate.period, 0.1 * extent / normal_speed);
+  const double share_of_crossing = c.settle.extent_crossing_fraction * extent / normal_speed;
+  r.quiet_window = c.settle.quiet_window > 0.0 ? c.settle.quiet_window
+                                               : std::max(50.0 * r.time_step_estimate.period, share_of_crossing);
   if (!(r.quiet_window > 0.0) || !std::isfinite(r.quiet_window)) r.quiet_window = 1000.0 * r.time_step;
   r.rest_speed = c.settle.rest_speed_fraction * c.speed;
 }
