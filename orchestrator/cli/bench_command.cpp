@@ -106,8 +106,7 @@ void run_bench(const BenchOptions& o) {
     const double in_wavefronts = static_cast<double>(sim.wavefront_steps()) / static_cast<double>(steps);
     std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu %9.0f%% %10.3f %14.4g\n", n,
                 sim.contacts().size(), static_cast<long long>(steps), sim.time_step(), elapsed.wall_seconds, rate,
-                1e9 / rate,
-                static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
+                1e9 / rate, static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
                 static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0), 100.0 * in_wavefronts,
                 elapsed.cpu_seconds, particle_steps / elapsed.cpu_seconds);
     std::fflush(stdout);
