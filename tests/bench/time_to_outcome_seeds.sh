@@ -2,7 +2,8 @@
 # Does a cut of the time to outcome change the outcome? Runs an impact case on a set of seeds as it
 # is (base) and with cuts of its settle window and time step, one run at a time, and prints per seed
 # and run the outcome class, retained mass fraction, normal restitution, largest fragment share,
-# fragments, steps, simulated time and CPU seconds (docs/PERFORMANCE.md, "Time to outcome").
+# fragments, steps, simulated time, quiet window, CPU seconds of the stepping and final contacts
+# (docs/PERFORMANCE.md, "Time to outcome").
 #
 # usage: time_to_outcome_seeds.sh CASE PRIMARIES SEEDS [OUTDIR]
 #   e.g. time_to_outcome_seeds.sh studies/figure4_impact.case.json 1024 "1 2 3 4 5 6 7 8"
@@ -13,7 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 if [[ $# -lt 3 ]]; then
-  sed -n '2,12p' "${BASH_SOURCE[0]}" >&2
+  sed -n '2,13p' "${BASH_SOURCE[0]}" >&2
   exit 2
 fi
 case_file=$1 primaries=$2 seeds=$3
@@ -38,10 +39,7 @@ json.dump(c, sys.stdout, indent=1)
 PY
 }
 
-run_case() {
-  /usr/bin/time -f "%U" -o "$out/$2_s$1.cpu" "$aerobreak" impact "$out/$2_s$1.case.json" -q \
-    -o "$out/$2_s$1.result.json"
-}
+run_case() { "$aerobreak" impact "$out/$2_s$1.case.json" -q -o "$out/$2_s$1.result.json"; }
 
 window='c["run"].setdefault("settle", {})["quiet_window"] = base["run"]["quiet_window"] *'
 for s in $seeds; do
@@ -54,17 +52,16 @@ done
 python3 - "$out" $seeds <<'PY'
 import json, sys
 out, seeds = sys.argv[1], sys.argv[2:]
-print("%5s %8s %10s %9s %8s %8s %5s %9s %10s %9s %8s" % ("seed", "run", "class", "retained", "e_n", "largest",
-      "frags", "steps", "time[tau]", "window", "CPU s"))
+print("%5s %8s %10s %9s %8s %8s %5s %9s %10s %9s %8s %8s" % ("seed", "run", "class", "retained", "e_n", "largest",
+      "frags", "steps", "time[tau]", "window", "CPU s", "contacts"))
 for s in seeds:
     for run in ("base", "window2", "window4", "dt2"):
         r = json.load(open("%s/%s_s%s.result.json" % (out, run, s)))
         o = r["outcome"]
-        cpu = float(open("%s/%s_s%s.cpu" % (out, run, s)).read().split()[-1])
         e_n = o["restitution"]["normal"]
-        print("%5s %8s %10s %9.4f %8s %8.4f %5d %9d %10.1f %9.1f %8.1f" % (
+        print("%5s %8s %10s %9.4f %8s %8.4f %5d %9d %10.1f %9.1f %8.1f %8d" % (
             s, run, o["class"], o["retained_mass_fraction"], "-" if e_n is None else "%.4f" % e_n,
             o["largest_fragment_share"], o["fragment_count"], r["run"]["steps"], r["run"]["simulated_time"],
-            r["run"]["quiet_window"], cpu))
+            r["run"]["quiet_window"], r["run"]["cpu_seconds"], r["contacts"]["final"]))
 PY
 echo "(work files: $out)"
