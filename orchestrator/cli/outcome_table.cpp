@@ -45,12 +45,19 @@ std::string flagged(const nlohmann::ordered_json& point) {
 
 }  // namespace
 
-std::string format_outcome_table(const nlohmann::ordered_json& table) {
+std::string speed_unit_label(const nlohmann::ordered_json& study_document) {
+  const auto base = study_document.find("base");
+  const bool physical = base != study_document.end() && base->value("units", std::string()) == "physical";
+  return physical ? "m/s" : "d/tau";
+}
+
+std::string format_outcome_table(const nlohmann::ordered_json& table, const std::string& speed_unit) {
   std::vector<std::vector<std::string>> rows;
   const auto& points = table.at("grid_points");
   std::vector<std::string> header;
   if (!points.empty())
-    for (const auto& [axis, value] : points[0].at("grid_point").items()) header.push_back(axis);
+    for (const auto& [axis, value] : points[0].at("grid_point").items())
+      header.push_back(axis == "impact_speed" && !speed_unit.empty() ? axis + " (" + speed_unit + ")" : axis);
   for (const char* column : {"n", "P(stick) 95% CI", "P(bounce) 95% CI", "P(break-up) 95% CI", "undetermined", "failed",
                              "retained", "fractured on wall", "large strain"})
     header.push_back(column);

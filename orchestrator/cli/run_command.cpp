@@ -124,7 +124,8 @@ void print_critical_speeds(Store& store, std::int64_t study_id) {
   try {
     CorrelationCache cache(store);
     const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
-    std::cout << "\nCritical speeds: logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
+    std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
+              << ": logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
                  "intervals (docs/CORRELATIONS.md)\n\n"
               << format_critical_table(nlohmann::ordered_json::parse(set->summary));
   } catch (const CorrelationRequestError& error) {
@@ -190,7 +191,7 @@ int run(RunOptions options) {
   if (study.search)
     std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
   else
-    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)));
+    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)), speed_unit_label(study.document));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, receipt.study_id);

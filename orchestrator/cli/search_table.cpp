@@ -19,6 +19,13 @@ std::string group_label(const nlohmann::ordered_json& group) {
   return label.empty() ? "(one group)" : label;
 }
 
+// Nothing for a found crossing; otherwise why it is not found yet.
+std::string progress_note(const nlohmann::ordered_json& estimate) {
+  if (estimate.value("found", false)) return "";
+  if (estimate.at("narrow_enough").get<bool>()) return " (narrow enough, not yet confirmed)";
+  return " (" + estimate.at("status").get<std::string>() + ", not yet narrow enough)";
+}
+
 }  // namespace
 
 std::string format_search_table(const nlohmann::ordered_json& groups, const std::string& axis) {
@@ -31,7 +38,7 @@ std::string format_search_table(const nlohmann::ordered_json& groups, const std:
       std::snprintf(level, sizeof level, "%.2g", e.at("level").get<double>());
       text += "    P(" + e.at("response").get<std::string>() + ") = " + level + " at " + axis + " " + number(e.at("estimate")) +
               " [" + number(e.at("lower")) + ", " + number(e.at("upper")) + "]" +
-              (e.at("narrow_enough").get<bool>() ? "" : " (" + e.at("status").get<std::string>() + ", not yet narrow enough)") +
+              progress_note(e) +
               "\n";
     }
   }

@@ -101,6 +101,11 @@ void print_progress(const nlohmann::ordered_json& progress) {
 
 // The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
 // with --fit NAME.
+// The study's document as the service stored it (for its units).
+nlohmann::ordered_json study_document(ApiClient& api, const ClientOptions& options) {
+  return api.get(study_path(options.study_id)).value("document", nlohmann::ordered_json::object());
+}
+
 void print_correlations(ApiClient& api, const ClientOptions& options) {
   std::string path = study_path(options.study_id, "/correlations");
   if (!options.fit.empty()) path += "/" + httplib::detail::encode_query_param(options.fit);
@@ -113,7 +118,8 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
   const auto& provenance = answer.at("provenance");
   std::cout << "Correlations of study " << provenance.at("study") << " (result set " << provenance.at("result_set_hash").get<std::string>().substr(0, 12)
             << ", aerobreak " << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
-            << "Critical speeds (95 % profile-likelihood intervals):\n" << format_critical_table(answer) << "\n"
+            << "Critical speeds in " << speed_unit_label(study_document(api, options)) << " (95 % profile-likelihood intervals):\n"
+            << format_critical_table(answer) << "\n"
             << "Critical energies per contact E_kin/(N_c E_break):\n" << format_critical_table(answer, "energy_per_contact")
             << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME") << " for one in full):\n"
             << format_fit_list(answer);
@@ -148,7 +154,8 @@ int run_client(const std::string& action, const ClientOptions& options) {
       if (!options.outcome.empty()) query += "&outcome=" + options.outcome;
       std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
     } else {
-      std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")));
+      std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")),
+                                        speed_unit_label(study_document(api, options)));
     }
   } else if (action == "correlations") {
     print_correlations(api, options);

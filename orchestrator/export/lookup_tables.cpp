@@ -29,18 +29,38 @@ nlohmann::ordered_json column_range(const LookupTable& table, const char* name) 
   return nlohmann::ordered_json::array({low, high});
 }
 
+// The range of one input over the grid points with results: what the fits' data cover.
+nlohmann::ordered_json results_range(const StudyExportData& data, double GridRowInputs::*input) {
+  double low = INFINITY, high = -INFINITY;
+  for (const auto& inputs : data.inputs) {
+    const auto found = data.statistics.find(inputs.grid_key);
+    if (found == data.statistics.end() || found->second.outcomes.finished() == 0) continue;
+    low = std::min(low, inputs.*input), high = std::max(high, inputs.*input);
+  }
+  if (low > high) return nullptr;
+  return nlohmann::ordered_json::array({low, high});
+}
+
+// The ranges the results cover: the table's own for grid and sections; for a fit table, whose rows
+// may be extrapolated (inside_validity = 0), the study's.
 nlohmann::ordered_json validity(const LookupTable& table, const StudyExportData& data) {
   std::size_t flagged = 0, results = 0;
   for (const auto& [key, statistics] : data.statistics) {
     flagged += statistics.outcomes.small_strain_exceeded;
     results += statistics.outcomes.finished();
   }
-  nlohmann::ordered_json json{{"impact_speed", column_range(table, "impact_speed")},
-                              {"gamma_over_kn", column_range(table, "gamma_over_kn")},
-                              {"primaries", column_range(table, "primaries")},
+  const bool fit = table.kind == "fit";
+  const auto range = [&](const char* column, double GridRowInputs::*input) {
+    return fit ? results_range(data, input) : column_range(table, column);
+  };
+  nlohmann::ordered_json json{{"impact_speed", range("impact_speed", &GridRowInputs::speed)},
+                              {"gamma_over_kn", range("gamma_over_kn", &GridRowInputs::gamma_over_kn)},
+                              {"primaries", range("primaries", &GridRowInputs::primaries)},
                               {"results", results},
                               {"results_outside_small_strain", flagged},
-                              {"note", "tabulated values hold inside these ranges only; nothing is extrapolated"}};
+                              {"note", fit ? "the ranges the study's results cover; rows outside them are extrapolated "
+                                             "(inside_validity = 0)"
+                                           : "tabulated values hold inside these ranges only; nothing is extrapolated"}};
   if (!json["primaries"].is_array()) json.erase("primaries");
   return json;
 }
@@ -103,7 +123,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
                            *request.gamma_over_kn, request.interpolate_gamma);
   const auto scalings = row_scalings(table, data, request);
   if (scalings) add_si_columns(table, *scalings);
-  const auto sections = table.metadata.is_object() ? table.metadata["sections"] : nlohmann::ordered_json();
+  const auto own_metadata = table.metadata.is_object() ? table.metadata : nlohmann::ordered_json::object();  // sections, fit_models
   table.metadata = {{"table", table.kind},
                     {"provenance", provenance(data)},
                     {"units", scalings ? "reduced and SI" : "reduced"},
@@ -112,7 +132,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   else if (scalings) table.metadata["material"] = "the study's own (physical units)";
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
   table.metadata["validity"] = validity(table, data);
-  if (!sections.is_null()) table.metadata["sections"] = sections;
+  for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
   table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
   return table;
 }

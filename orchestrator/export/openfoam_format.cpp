@@ -14,7 +14,9 @@
 namespace aerobreak {
 namespace {
 
-const char* kSizeInputs[] = {"primaries", "source_section"};
+// Inputs that vary with the size, not keys of an impact condition (a fit table's `model` changes
+// with N where a size the study did not run comes from the fit pooled over the sizes).
+const char* kSizeInputs[] = {"primaries", "source_section", "model"};
 
 const TableColumn& quantity_column(const LookupTable& table, const std::string& quantity) {
   const std::string name = quantity == "retained_mass_fraction" && !table.find(quantity) ? "to_wall" : quantity;

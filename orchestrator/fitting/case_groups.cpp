@@ -5,13 +5,14 @@
 
 namespace aerobreak {
 
-std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis) {
+std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis, const std::string& pooled_axis) {
   std::vector<CaseGroup> groups;
   std::map<std::string, std::size_t> index;
   std::vector<std::size_t> group_of_point(table.grid_points.size());
   for (std::size_t g = 0; g < table.grid_points.size(); ++g) {
     nlohmann::ordered_json axes = table.grid_points[g];
     axes.erase(speed_axis);
+    if (!pooled_axis.empty()) axes.erase(pooled_axis);
     const auto [it, inserted] = index.emplace(axes.dump(), groups.size());
     if (inserted) groups.push_back({"g" + std::to_string(groups.size() + 1), axes, {}, {}});
     groups[it->second].grid_points.push_back(g);

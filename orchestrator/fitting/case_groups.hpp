@@ -8,7 +8,8 @@
 namespace aerobreak {
 
 // The cases of one combination of the non-speed axes (e.g. one N and one gamma/k_n): the unit of the
-// per-group fits. Groups are numbered in grid order (g1, g2, ...).
+// per-group fits. Groups are numbered in grid order (g1, g2, ...). With `pooled_axis` (e.g. N) that
+// axis is left out of the combination too: the groups of the fits pooled over it.
 struct CaseGroup {
   std::string label;                                             // "g1", "g2", ...
   nlohmann::ordered_json axes = nlohmann::ordered_json::object();  // the non-speed axes' values
@@ -16,7 +17,8 @@ struct CaseGroup {
   std::vector<const CaseOutcome*> cases;
 };
 
-std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis);
+std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis,
+                                   const std::string& pooled_axis = {});
 
 // The cases of each grid point, by grid-point index.
 std::vector<std::vector<const CaseOutcome*>> cases_by_point(const CaseOutcomeTable& table);

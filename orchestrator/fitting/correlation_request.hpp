@@ -18,6 +18,10 @@ struct CorrelationRequest {
   std::string speed_axis;             // the axis that sets the impact speed; empty: not swept
   std::vector<Covariate> covariates;  // of the pooled models (none: groups pooled as they are)
   std::array<double, 3> levels{0.1, 0.5, 0.9};
+  // The axis of the cluster size N. When set, the logistic models in impact speed are also fitted
+  // pooled over the sizes, one per group of the other axes (CorrelationSet::size_pooled, which the
+  // lookup-table export evaluates at sizes the study did not run); empty: not fitted.
+  std::string size_axis;
 };
 
 struct Provenance {

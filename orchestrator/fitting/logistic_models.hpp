@@ -42,4 +42,11 @@ LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& 
 std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                              const CorrelationRequest& request);
 
+// The same logistic models in impact speed pooled over the cluster sizes, one per group of the axes
+// other than speed and N (request.size_axis): logit P = b0 + b1 log v + b2 log N, the pooled model
+// of fit_logistic_models with log N its one covariate, fitted to one group of the other axes (e.g.
+// one wall and one gamma/k_n) at a time. Critical doses at each size of the group (delta method).
+// None without request.size_axis or a speed axis.
+std::vector<LogisticFit> fit_size_pooled_models(const CaseOutcomeTable& table, const CorrelationRequest& request);
+
 }  // namespace aerobreak

@@ -89,6 +89,36 @@ std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, cons
   return run_in_parallel(tasks);
 }
 
+namespace {
+
+// The distinct sizes among the rows of a size-pooled model (its one covariate), for its critical doses.
+std::vector<Eigen::VectorXd> row_sizes(const DoseData& rows) {
+  std::vector<Eigen::VectorXd> sizes;
+  for (const auto& values : rows.covariate_values)
+    if (std::none_of(sizes.begin(), sizes.end(), [&](const Eigen::VectorXd& seen) { return seen == values; }))
+      sizes.push_back(values);
+  return sizes;
+}
+
+}  // namespace
+
+std::vector<LogisticFit> fit_size_pooled_models(const CaseOutcomeTable& table, const CorrelationRequest& request) {
+  if (request.speed_axis.empty() || request.size_axis.empty()) return {};
+  CorrelationRequest over_sizes = request;
+  over_sizes.covariates = {{request.size_axis, true}};
+  const auto by_point = cases_by_point(table);
+  const auto groups = group_cases(table, request.speed_axis, request.size_axis);
+  std::vector<std::function<LogisticFit()>> tasks;
+  for (const Outcome response : responses_present(table))
+    for (const CaseGroup& group : groups)
+      tasks.push_back([&, response, group = &group] {
+        const auto rows = speed_rows(table, by_point, group->grid_points, response, over_sizes);
+        return fit_logistic(named(std::string(to_string(response)) + ".speed.sizes." + group->label, group->axes), response,
+                            "impact_speed", rows, over_sizes, row_sizes(rows));
+      });
+  return run_in_parallel(tasks);
+}
+
 BandPoint LogisticFit::probability(double dose_value, const Eigen::VectorXd& covariate_values) const {
   const Eigen::VectorXd& beta = common.coefficients;
   Eigen::VectorXd x(beta.size());

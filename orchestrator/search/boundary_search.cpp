@@ -29,9 +29,9 @@ std::vector<ResponseFit> fit_targets(const BoundarySearchSpec& spec, std::vector
   return fits;
 }
 
-// A crossing counts as found when its profile interval is as narrow as asked and the expected
-// interval over the parameters' uncertainty is too: a stop on the realised width alone ends some
-// groups after a few cases on a lucky narrow interval, whose coverage is poor (docs/ADAPTIVE.md).
+// Whether each crossing's profile interval is as narrow as asked and the expected interval over the
+// parameters' uncertainty is too: a stop on the realised width alone ends some groups after a few
+// cases on a lucky narrow interval, whose coverage is poor (docs/ADAPTIVE.md).
 std::vector<CrossingEstimate> crossings(const BoundarySearchSpec& spec, const std::vector<ResponseFit>& fits,
                                         std::uint64_t seed) {
   std::vector<CrossingEstimate> out;
@@ -46,6 +46,24 @@ std::vector<CrossingEstimate> crossings(const BoundarySearchSpec& spec, const st
       out.push_back(std::move(estimate));
     }
   return out;
+}
+
+// The stopping rule (docs/ADAPTIVE.md, "Stopping"): a crossing is found when it is narrow enough
+// now and was on the results of the previous decision (the rounds before the last), once the
+// group has kMinimumSearchResults results. Stopping the moment an interval first looks narrow
+// selects intervals narrow by chance; the confirmation and the pilot size (Chow & Robbins 1965)
+// bring the coverage back to its nominal rate.
+void judge(const BoundarySearchSpec& spec, const std::vector<SearchObservation>& observations,
+           const RoundContext& context, std::vector<CrossingEstimate>& estimates) {
+  const auto results = std::count_if(observations.begin(), observations.end(),
+                                     [](const auto& o) { return o.outcome != "undetermined"; });
+  const bool narrow = std::any_of(estimates.begin(), estimates.end(), [](const auto& e) { return e.narrow_enough; });
+  if (!narrow || static_cast<std::size_t>(results) < kMinimumSearchResults) return;
+  std::vector<SearchObservation> earlier;
+  for (const auto& o : observations)
+    if (o.round < context.round - 1) earlier.push_back(o);
+  const auto before = crossings(spec, fit_targets(spec, earlier), context.previous_seed);
+  for (std::size_t e = 0; e < estimates.size(); ++e) estimates[e].found = estimates[e].narrow_enough && before[e].narrow_enough;
 }
 
 // The candidates as the fits see them: doses centred on the range's middle.
@@ -92,7 +110,7 @@ void place(const BoundarySearchSpec& spec, const std::vector<ResponseFit>& fits,
     bool gap_needed = false;
     for (std::size_t l = 0; l < spec.targets[t].levels.size(); ++l, ++e) {
       const auto& estimate = estimates[e];
-      if (estimate.narrow_enough || fits[t].overlap == Overlap::one_outcome) continue;
+      if (estimate.found || fits[t].overlap == Overlap::one_outcome) continue;
       if (fits[t].overlap == Overlap::separated || !estimate.estimate) {
         gap_needed = fits[t].overlap == Overlap::separated;
         continue;
@@ -134,16 +152,19 @@ std::optional<GroupState> parse_group_state(std::string_view text) {
 }
 
 std::vector<CrossingEstimate> estimate_crossings(const BoundarySearchSpec& spec,
-                                                 const std::vector<SearchObservation>& observations) {
-  auto sorted = observations;
-  return crossings(spec, fit_targets(spec, sorted), round_seed(0, 0, 0));
+                                                 std::vector<SearchObservation> observations,
+                                                 const RoundContext& context) {
+  auto estimates = crossings(spec, fit_targets(spec, observations), context.seed);
+  judge(spec, observations, context, estimates);
+  return estimates;
 }
 
-RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservation> observations, int cases_placed,
-                     std::uint64_t seed) {
+RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservation> observations,
+                     const RoundContext& context) {
   RoundPlan plan;
   const auto fits = fit_targets(spec, observations);
-  plan.estimates = crossings(spec, fits, seed);
+  plan.estimates = crossings(spec, fits, context.seed);
+  judge(spec, observations, context, plan.estimates);
   for (const auto& o : observations) plan.results += o.outcome != "undetermined";
 
   bool unfinished = false, unreachable = false;
@@ -153,18 +174,18 @@ RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservati
       // Round 0 spans the whole range: a response never seen, or always seen, there has its
       // crossing outside the range.
       if (fits[t].overlap == Overlap::one_outcome) unreachable = true;
-      else if (!plan.estimates[e].narrow_enough) unfinished = true;
+      else if (!plan.estimates[e].found) unfinished = true;
     }
   if (!unfinished) {
     plan.state = unreachable ? GroupState::out_of_range : GroupState::converged;
     return plan;
   }
-  if (cases_placed >= spec.budget) {
+  if (context.cases_placed >= spec.budget) {
     plan.state = GroupState::budget_spent;
     return plan;
   }
-  const auto count = static_cast<std::size_t>(std::min(spec.batch, spec.budget - cases_placed));
-  place(spec, fits, plan.estimates, count, seed, plan);
+  const auto count = static_cast<std::size_t>(std::min(spec.batch, spec.budget - context.cases_placed));
+  place(spec, fits, plan.estimates, count, context.seed, plan);
   if (plan.values.empty()) plan.state = unreachable ? GroupState::out_of_range : GroupState::budget_spent;
   return plan;
 }
@@ -176,6 +197,10 @@ std::uint64_t round_seed(std::uint64_t study_seed, std::int64_t group, int round
   splitmix64(state);
   state ^= static_cast<std::uint64_t>(round);
   return splitmix64(state);
+}
+
+RoundContext round_context(std::uint64_t study_seed, std::int64_t group, int round, int cases_placed) {
+  return {round, cases_placed, round_seed(study_seed, group, round), round_seed(study_seed, group, round - 1)};
 }
 
 }  // namespace aerobreak

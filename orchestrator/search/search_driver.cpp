@@ -8,9 +8,9 @@ namespace {
 
 std::vector<SearchObservation> observations_of(const SearchGroupWork& work, const std::string& axis) {
   std::vector<SearchObservation> out;
-  for (const auto& [grid_point, outcome] : work.finished)
-    if (!outcome.empty() && grid_point.contains(axis) && grid_point[axis].is_number())
-      out.push_back({grid_point[axis].get<double>(), outcome});
+  for (const auto& c : work.finished)
+    if (!c.outcome.empty() && c.grid_point.contains(axis) && c.grid_point[axis].is_number())
+      out.push_back({c.grid_point[axis].get<double>(), c.outcome, c.round});
   return out;
 }
 
@@ -32,8 +32,8 @@ SearchDecision SearchDriver::decide(const SearchGroupWork& work) {
   decision.round = work.rounds;
   try {
     const Study& s = study(work.study_id, work.study_document);
-    const RoundPlan plan = plan_round(*s.search, observations_of(work, s.search->axis), work.cases,
-                                      round_seed(s.seed, work.position, work.rounds));
+    const RoundPlan plan = plan_round(*s.search, observations_of(work, s.search->axis),
+                                      round_context(s.seed, work.position, work.rounds, work.cases));
     decision.state = std::string(to_string(plan.state));
     decision.estimates = to_json(plan.estimates);
     decision.plan = round_json(work.rounds, plan);

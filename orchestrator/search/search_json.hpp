@@ -6,8 +6,8 @@
 
 namespace aerobreak {
 
-// {"response", "level", "estimate", "lower", "upper", "fit", "status", "narrow_enough"}; absent
-// numbers are null.
+// {"response", "level", "estimate", "lower", "upper", "fit", "status", "narrow_enough", "found"};
+// absent numbers are null.
 nlohmann::ordered_json to_json(const CrossingEstimate& estimate);
 nlohmann::ordered_json to_json(const std::vector<CrossingEstimate>& estimates);
 

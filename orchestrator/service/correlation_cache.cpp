@@ -95,6 +95,13 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
   return request;
 }
 
+CorrelationRequest export_correlation_request(const StudyRecord& study) {
+  CorrelationRequest request = correlation_request(study, std::nullopt);
+  const std::string size_axis = axis_setting(study_axes(study), kPrimariesPointer);
+  if (!size_axis.empty() && sweeps_several(study, size_axis)) request.size_axis = size_axis;
+  return request;
+}
+
 std::string request_key(const CorrelationRequest& request) {
   nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
   for (const auto& covariate : request.covariates) covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});

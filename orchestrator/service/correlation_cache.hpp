@@ -29,6 +29,11 @@ struct CorrelationRequestError : std::runtime_error {
 // gamma/k_n and N enter as logarithms, the others as they are.
 CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates);
 
+// The request of the lookup-table export: correlation_request's default, with the size axis set
+// when the study sweeps N over several values, so that the fits pooled over the sizes
+// (CorrelationSet::size_pooled) are made too.
+CorrelationRequest export_correlation_request(const StudyRecord& study);
+
 // The canonical text of a request: the key its fits are stored under.
 std::string request_key(const CorrelationRequest& request);
 

@@ -1,5 +1,7 @@
 #include "orchestrator/service/study_submission.hpp"
 
+#include <set>
+
 namespace aerobreak {
 namespace {
 
@@ -45,10 +47,12 @@ StudySubmission make_submission(const Study& study) {
 }
 
 void recompute_lost_data_files(StudySubmission& submission, Store& store, DataFileChecker& checker) {
-  std::vector<std::string> hashes;
-  hashes.reserve(submission.cases.size());
-  for (const auto& study_case : submission.cases) hashes.push_back(study_case.hash);
-  for (const auto& file : store.data_files(hashes)) {
+  // The cases the study expands to, and those a stored copy of it holds besides: the later rounds
+  // of a search, which its document does not name.
+  std::set<std::string> hashes;
+  for (const auto& study_case : submission.cases) hashes.insert(study_case.hash);
+  for (auto& hash : store.study_case_hashes(submission.hash)) hashes.insert(std::move(hash));
+  for (const auto& file : store.data_files({hashes.begin(), hashes.end()})) {
     const auto state = checker.check(file.path, file.digest).state;
     if (state == DataFileState::missing || state == DataFileState::damaged) submission.recompute.push_back(file.hash);
   }

@@ -142,6 +142,9 @@ class Store {
   std::vector<JobRecord> jobs(std::size_t limit);
   // The data files, with their recorded size and checksum, of the done cases among `hashes`.
   std::vector<StoredDataFile> data_files(const std::vector<std::string>& hashes);
+  // The hashes of the cases linked to the stored study whose hash is `study_hash` (none: no such
+  // study): all of a search's rounds, not only the round 0 its document expands to.
+  std::vector<std::string> study_case_hashes(const std::string& study_hash);
 
   // Everything the statistics need about a study's results, read in one read transaction (the rows
   // and the version agree). The one place that maps store columns to CaseOutcome fields.

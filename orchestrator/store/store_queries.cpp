@@ -325,4 +325,15 @@ std::vector<StoredDataFile> Store::data_files(const std::vector<std::string>& ha
   return files;
 }
 
+std::vector<std::string> Store::study_case_hashes(const std::string& study_hash) {
+  auto db = read();
+  auto statement = db->prepare(
+      "SELECT c.hash FROM studies s JOIN study_cases sc ON sc.study_id = s.id JOIN cases c ON c.id = sc.case_id "
+      "WHERE s.hash = ? ORDER BY sc.position");
+  statement.bind_all(study_hash);
+  std::vector<std::string> hashes;
+  while (statement.step()) hashes.push_back(statement.text(0));
+  return hashes;
+}
+
 }  // namespace aerobreak

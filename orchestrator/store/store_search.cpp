@@ -9,13 +9,15 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::vector<std::pair<Json, std::string>> group_cases(SqliteDatabase& db, std::int64_t study_id, std::int64_t position) {
+std::vector<SearchGroupWork::Case> group_cases(SqliteDatabase& db, std::int64_t study_id, std::int64_t position) {
   auto statement = db.prepare(
-      "SELECT sc.grid_point, r.outcome FROM study_cases sc LEFT JOIN results r ON r.case_id = sc.case_id "
+      "SELECT sc.grid_point, r.outcome, sc.search_round FROM study_cases sc LEFT JOIN results r ON r.case_id = sc.case_id "
       "WHERE sc.study_id = ? AND sc.search_group = ? ORDER BY sc.position");
   statement.bind_all(study_id, position);
-  std::vector<std::pair<Json, std::string>> cases;
-  while (statement.step()) cases.emplace_back(Json::parse(statement.text(0)), statement.optional_text(1).value_or(""));
+  std::vector<SearchGroupWork::Case> cases;
+  while (statement.step())
+    cases.push_back({Json::parse(statement.text(0)), statement.optional_text(1).value_or(""),
+                     static_cast<int>(statement.integer(2))});
   return cases;
 }
 

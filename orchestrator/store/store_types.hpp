@@ -61,8 +61,13 @@ struct SearchGroupWork {
   nlohmann::ordered_json group_point;
   int rounds = 0;  // rounds placed; the next is round number `rounds`
   int cases = 0;   // cases placed, failed ones included
-  // The group's cases in placement order: grid point and outcome class (empty: no result).
-  std::vector<std::pair<nlohmann::ordered_json, std::string>> finished;
+  // The group's cases in placement order: grid point, outcome class (empty: no result) and round.
+  struct Case {
+    nlohmann::ordered_json grid_point;
+    std::string outcome;
+    int round = 0;
+  };
+  std::vector<Case> finished;
 };
 
 // A round's record, or a group's outcome, as the search decided it.

@@ -22,15 +22,17 @@ std::vector<double> grid_speeds(const BoundarySearchSpec& spec, int count) {
   return speeds;
 }
 
-// Cases a uniform grid of `points` speeds needs: replicates are added to every speed at once
-// until the fitted interval is as narrow as asked; 0 when `max_replicates` do not suffice.
+// Cases a uniform grid of `points` speeds needs: replicates are added to every speed at once, a
+// round each, until the search's stopping rule finds the crossing (the same fit, the same
+// confirmation on the replicates before the last, the same minimum of results); 0 when
+// `max_replicates` do not suffice.
 int grid_cases(const BoundarySearchSpec& spec, int points, std::uint64_t seed, int max_replicates) {
   SimulatedOutcomes outcomes(SyntheticLaw{}, 0.001, seed);
   std::vector<SearchObservation> observations;
   const auto speeds = grid_speeds(spec, points);
   for (int r = 1; r <= max_replicates; ++r) {
-    for (const double v : speeds) observations.push_back(outcomes.at(v));
-    if (estimate_crossings(spec, observations)[0].narrow_enough) return points * r;
+    for (const double v : speeds) observations.push_back(outcomes.at(v, r - 1));
+    if (estimate_crossings(spec, observations, round_context(seed, 0, r, points * r))[0].found) return points * r;
   }
   return 0;
 }

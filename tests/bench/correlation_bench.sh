@@ -15,22 +15,15 @@ build=${1:-build}
 results=${2:-100000}
 rounds=${ROUNDS:-3}
 work=$(mktemp -d /tmp/aerobreak-correlation-bench.XXXXXX)
-server=
-stop_server() {
-  if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; server=; fi
-}
-trap 'stop_server; rm -rf "$work"' EXIT
-
 source "$(dirname "$0")/wrk_support.sh"
+trap 'stop_bench_server; rm -rf "$work"' EXIT
 install_bench_tools
 
 echo "== fitting"
 "$build/tests/correlation_bench" "$results" "$work/bench.sqlite"
 
-"$build/aerobreak" serve --store "$work/bench.sqlite" --port 0 --port-file "$work/port" --ranks 1 2>"$work/serve.log" &
-server=$!
-for _ in $(seq 300); do [ -s "$work/port" ] && break; sleep 0.1; done
-url="http://127.0.0.1:$(cat "$work/port")/api/studies/1/correlations"
+start_bench_server "$build/aerobreak" "$work/bench.sqlite" "$work"
+url="$bench_url/api/studies/1/correlations"
 etag=$(curl -sf -D - -o /dev/null "$url" | awk -F': ' 'tolower($1) == "etag" {print $2}' | tr -d '\r')
 # Warm-up, not reported: the server's threads open their pooled store connections.
 wrk -t2 -c16 -d2s "$url" >/dev/null

@@ -14,27 +14,14 @@ cases=${CASES:-100000}
 grid_points=${GRID_POINTS:-100}
 rounds=${ROUNDS:-1}
 work=$(mktemp -d /tmp/aerobreak-read-bench.XXXXXX)
-server=
-stop_server() {
-  if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; server=; fi
-}
-trap 'stop_server; if [ "${KEEP:-0}" = 1 ]; then echo "kept $work/store.sqlite"; else rm -rf "$work"; fi' EXIT
-
 source "$(dirname "$0")/wrk_support.sh"
+trap 'stop_bench_server; if [ "${KEEP:-0}" = 1 ]; then echo "kept $work/store.sqlite"; else rm -rf "$work"; fi' EXIT
 install_bench_tools
 
 store="$work/store.sqlite"
-start_server() {
-  rm -f "$work/port"
-  "$aerobreak" serve --store "$store" --port 0 --port-file "$work/port" --ranks 1 2>>"$work/serve.log" &
-  server=$!
-  for _ in $(seq 300); do [ -s "$work/port" ] && return; sleep 0.1; done
-  echo "serve did not start:" >&2; cat "$work/serve.log" >&2; exit 1
-}
-
 # The store's schema as this aerobreak makes it: serve once on an empty store.
-start_server
-stop_server
+start_bench_server "$aerobreak" "$store" "$work"
+stop_bench_server
 
 echo "== filling the store: $cases finished cases, $grid_points grid points"
 start=$(date +%s.%N)
@@ -69,8 +56,8 @@ SQL
 end=$(date +%s.%N)
 printf "filled in %.1f s (%s MB)\n" "$(echo "$end - $start" | bc -l)" "$(du -m "$store" | cut -f1)"
 
-start_server
-url="http://127.0.0.1:$(cat "$work/port")"
+start_bench_server "$aerobreak" "$store" "$work"
+url=$bench_url
 etag=$(curl -s -D - -o /dev/null "$url/api/studies/1/outcomes" | awk -F': ' 'tolower($1) == "etag" {print $2}' | tr -d '\r')
 
 # Warm-up, not reported: the server's threads open their pooled store connections, the outcome

@@ -65,6 +65,20 @@ inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, 
           {"fragments", {{"list", list}}}};
 }
 
+// Replicate r of a grid point: a reduced-units case of N = size ballistic primaries (seed r).
+inline StudySubmission::Case reduced_case(nlohmann::ordered_json grid_point, double speed, double gamma, int size, int r) {
+  StudySubmission::Case c;
+  c.grid_point = std::move(grid_point);
+  c.grid_key = c.grid_point.dump();
+  c.replicate = r;
+  c.hash = c.grid_key + "/" + std::to_string(r);
+  c.document = {{"units", "reduced"},
+                {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", size}, {"seed", r}}}}},
+                {"material", {{"gamma_over_kn", gamma}, {"poisson_ratio", 0.3}}},
+                {"impact", {{"speed", speed}, {"angle", 0}}}};
+  return c;
+}
+
 inline StudySubmission export_submission() {
   StudySubmission study;
   study.hash = std::string(64, 'e');
@@ -73,18 +87,9 @@ inline StudySubmission export_submission() {
   for (const double speed : kSpeeds)
     for (const double gamma : kGammas)
       for (const int size : kSizes)
-        for (int r = 0; r < kReplicates; ++r) {
-          StudySubmission::Case c;
-          c.grid_point = {{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", size}};
-          c.grid_key = c.grid_point.dump();
-          c.replicate = r;
-          c.hash = c.grid_key + "/" + std::to_string(r);
-          c.document = {{"units", "reduced"},
-                        {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", size}, {"seed", r}}}}},
-                        {"material", {{"gamma_over_kn", gamma}, {"poisson_ratio", 0.3}}},
-                        {"impact", {{"speed", speed}, {"angle", 0}}}};
-          study.cases.push_back(std::move(c));
-        }
+        for (int r = 0; r < kReplicates; ++r)
+          study.cases.push_back(
+              reduced_case({{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", size}}, speed, gamma, size, r));
   return study;
 }
 

@@ -1,6 +1,7 @@
 // Each format of docs/EXPORT.md read back by a consumer: a strict RFC 4180 reader, a Fortran
 // program compiled by gfortran with list-directed input, the HDF5 C API, the project's JSON Schema
-// validator, and the grammars of MELCOR tabular functions and OpenFOAM tables.
+// validator, and the grammars of MELCOR tabular functions and OpenFOAM tables; the fit table's
+// `model` column and `fit_models` metadata in each of them.
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
@@ -14,7 +15,9 @@
 #include "engine/io/hdf5_attributes.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/export/table_formats.hpp"
+#include "orchestrator/service/study_tables.hpp"
 #include "tests/export/export_study.hpp"
+#include "tests/export/pooled_size_study.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_directory.hpp"
 
@@ -310,6 +313,56 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
   } catch (const ExportError& error) {
     CHECK(error.status == 422);
   }
+}
+
+TEST_CASE("Fit table with a size not run: the model column and fit_models in every format", "[export][formats][fit]") {
+  const std::string gfortran = AEROBREAK_GFORTRAN;
+  REQUIRE_FALSE(gfortran.empty());
+  ScratchDirectory directory("table_formats_fit");
+  Store store(directory.path() / "store.sqlite");
+  const std::int64_t study = fill_pooled_study(store);
+  ExportRequest request;
+  request.kind = TableKind::fit;
+  request.speeds = {0.02, 0.05, 0.1};
+  request.sizes = {32, 64, 128};
+  const auto table = export_lookup_table(store, *store.study(study), request);
+  const auto model = std::find_if(table.columns.begin(), table.columns.end(), [](const TableColumn& c) { return c.name == "model"; });
+  REQUIRE(model != table.columns.end());
+  CHECK(std::prev(model)->name == "inside_validity");
+  CHECK(model->values == std::vector<double>{0, 0, 0, 1, 1, 1, 0, 0, 0});  // 64 was not run
+  CHECK(csv_text(table).find("#fit_models.pooled_ln_n,") != std::string::npos);
+  const auto dat = dat_text(table);
+  const auto model_number = std::to_string(model - table.columns.begin() + 1);
+  CHECK(dat.find("# column " + model_number + ": model [1]") != std::string::npos);
+  const auto dat_file = directory.file("fit.dat"), reader = directory.file("read_lookup_dat");
+  std::ofstream(dat_file) << dat;
+  REQUIRE(run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90").exit_code == 0);
+  std::istringstream lines(run_command(reader + " " + dat_file, true).text);
+  for (std::size_t row = 0; row < table.rows(); ++row)
+    for (const auto& column : table.columns) {
+      std::string line;
+      REQUIRE(std::getline(lines, line));
+      check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
+    }
+  std::ifstream schema_file(AEROBREAK_SOURCE_DIR "/schemas/lookup.schema.json");
+  const JsonSchema schema(nlohmann::ordered_json::parse(schema_file));
+  const auto document = nlohmann::ordered_json::parse(table_json(table).dump());
+  CHECK(describe(schema.validate(document)).empty());
+  CHECK(document.at("metadata").at("fit_models").at("column") == "model: 0 = per_size, 1 = pooled_ln_n");
+  const auto h5 = directory.path() / "fit.h5";
+  std::ofstream(h5, std::ios::binary) << hdf5_image(table);
+  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  CHECK(read_string_attribute(file, "fit_models.column") == std::vector<std::string>{"model: 0 = per_size, 1 = pooled_ln_n"});
+  H5Fclose(file);
+  const auto melcor = melcor_text(table);
+  CHECK(melcor.find("! fit_models.pooled_ln_n: ") != std::string::npos);
+  CHECK(melcor.find("primaries = 6.400000000e+01 model = 1.000000000e+00") != std::string::npos);
+  const auto openfoam = openfoam_table2d(table, "p_break_up");  // one condition: the model varies with the size
+  CHECK(openfoam.find("// fit_models.per_size: ") != std::string::npos);
+  std::size_t opened = 0;
+  for (const auto& word : tokens(openfoam, "//")) opened += static_cast<std::size_t>(std::count(word.begin(), word.end(), '('));
+  CHECK(opened == 1 + 3 * 2 + 3 * 3);  // the list, per speed two, per (speed, size) one
 }
 
 }  // namespace aerobreak::testing

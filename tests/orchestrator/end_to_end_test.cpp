@@ -107,7 +107,7 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
   const auto table_text = run_command(std::string(AEROBREAK_BINARY) + " study results --url " + service.url() + " " +
                                       std::to_string(study));
   CHECK(table_text.exit_code == 0);
-  CHECK_THAT(table_text.text, Catch::Contains("impact_speed") && Catch::Contains("P(break-up) 95% CI"));
+  CHECK_THAT(table_text.text, Catch::Contains("impact_speed (d/tau)") && Catch::Contains("P(break-up) 95% CI"));
   CHECK(service.kill(SIGTERM) == 0);
 }
 
@@ -123,6 +123,7 @@ TEST_CASE("aerobreak run runs a study to completion and prints the outcome table
   CHECK(first.exit_code == 0);
   CHECK_THAT(first.text, Catch::Contains("P(stick) 95% CI") && Catch::Contains("4 done, 0 failed"));
   CHECK_THAT(first.text, Catch::Contains("retained") && Catch::Contains("large strain"));
+  CHECK_THAT(first.text, Catch::Contains("impact_speed (d/tau)") && Catch::Contains("Critical speeds in d/tau"));
   CHECK(count_rows(store, "SELECT count(*) FROM results") == 4);
 
   // Again: everything is done already, nothing is rerun.

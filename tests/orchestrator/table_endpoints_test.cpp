@@ -1,6 +1,10 @@
 // GET and HEAD /api/studies/ID/tables over real HTTP on a store holding a finished study: content
 // types and file names of every format, HEAD without a body, kind=fit with its strict mode, and
-// requests the study cannot serve answered 4xx with a JSON body naming the parameter.
+// requests the study cannot serve answered 4xx with a JSON body naming the parameter; kind=fit at
+// sizes the study did not run (the fit pooled over its sizes), inside or outside its validity box.
+#include <map>
+
+#include "tests/export/pooled_size_study.hpp"
 #include "tests/orchestrator/service_process.hpp"
 
 namespace aerobreak::testing {
@@ -93,6 +97,31 @@ TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals n
                   "surface_energy");
     CHECK(get(service, "/api/studies/999/tables?format=csv").status == 404);
   }
+}
+
+TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused by strict naming sizes", "[service][export]") {
+  ScratchDirectory scratch("table_endpoints_sizes");
+  std::int64_t id = 0;
+  {
+    Store store(scratch.path() / "store.sqlite");  // N = 32 and 128, closed before the service opens it
+    id = fill_pooled_study(store);
+  }
+  ServiceProcess service(scratch.path());
+  const std::string tables = "/api/studies/" + std::to_string(id) + "/tables?kind=fit&speeds=0.05";
+  const auto fit = get(service, tables + "&format=json&sizes=64,512");
+  INFO(fit.body.substr(0, 500));
+  REQUIRE(fit.status == 200);
+  std::map<std::string, Json> columns;
+  const auto document = Json::parse(fit.body);
+  for (const auto& column : document.at("columns")) columns[column.at("name").get<std::string>()] = column.at("values");
+  CHECK(columns.at("primaries") == Json::array({64.0, 512.0}));
+  CHECK(columns.at("inside_validity") == Json::array({1.0, 0.0}));  // between 32 and 128: inside; 512: extrapolated
+  CHECK(columns.at("model") == Json::array({1.0, 1.0}));
+  CHECK(get(service, tables + "&sizes=64&strict=true").status == 200);
+  check_refused(service, tables + "&sizes=512&strict=true", 422, "sizes");
+  const auto refused = Json::parse(get(service, tables + "&sizes=16&strict=true").body);
+  CHECK(refused.at("violations").at(0).at("message").get<std::string>().find("from 3.200000000e+01 to 1.280000000e+02") !=
+        std::string::npos);
 }
 
 }  // namespace aerobreak::testing

@@ -75,16 +75,18 @@ void check_rounds_replay(const Study& study, const Json& search, const Json& cas
       const int r = round.at("round").get<int>();
       INFO("group " << position << " round " << r);
       if (r > 0) {
-        const auto plan = plan_round(spec, observations, placed, round_seed(study.seed, position, r));
+        const auto plan = plan_round(spec, observations, round_context(study.seed, position, r, placed));
         CHECK(plan.values == round.at("values").get<std::vector<double>>());
       }
       for (const auto& value : round.at("values")) {
         const auto& c = by_replicate.at(placed++);
         CHECK(c.at("grid_point").at(spec.axis).get<double>() == value.get<double>());
-        if (c.at("outcome").is_string()) observations.push_back({value.get<double>(), c.at("outcome").get<std::string>()});
+        if (c.at("outcome").is_string())
+          observations.push_back({value.get<double>(), c.at("outcome").get<std::string>(), r});
       }
     }
-    const auto last = plan_round(spec, observations, placed, round_seed(study.seed, position, group.at("rounds").get<int>()));
+    const auto last =
+        plan_round(spec, observations, round_context(study.seed, position, group.at("rounds").get<int>(), placed));
     CHECK(to_string(last.state) == group.at("state").get<std::string>());
     CHECK(last.values.empty());
   }
@@ -112,6 +114,7 @@ TEST_CASE("An adaptive search through the scheduler and store finds each group's
     const auto& v50 = group.at("estimates").at(0);
     CHECK(v50.at("response") == "break-up");
     CHECK(v50.at("narrow_enough") == true);
+    CHECK(v50.at("found") == true);
     // One interval misses the truth one time in twenty (the coverage test counts how often); the
     // estimate itself lies within a quarter of the truth.
     const double truth = law.crossing("break-up", 0.5, group.at("group").at("gamma_over_kn").get<double>());
@@ -183,6 +186,47 @@ TEST_CASE("SIGKILL of the orchestrator mid-search: the restarted one goes on wit
     if (before.count(c.at("id").get<std::int64_t>())) CHECK(c.at("attempts") == 1);
   }
   for (const auto& group : search.at("groups")) CHECK(group.at("state") != "searching");
+}
+
+TEST_CASE("Submitting a search study again recomputes the lost data files of every round, not only round 0",
+          "[search][service]") {
+  ScratchDirectory scratch("adaptive-data-files");
+  const auto data = scratch.path() / "synthetic-data";
+  std::filesystem::create_directories(data);
+  ::setenv("AEROBREAK_SYNTHETIC_DATA", data.c_str(), 1);
+  auto service = synthetic_service(scratch.path(), "0");
+  ::unsetenv("AEROBREAK_SYNTHETIC_DATA");
+  const Json document = search_study("adaptive data files");
+  const auto id = submit(*service, document).at("id").get<std::int64_t>();
+  REQUIRE(eventually([&] { return study_complete(*service, id); }, 120s));
+  const auto before = search_of(*service, id).at("groups");
+
+  // The first case of group 0 (round 0) and its last (placed by a later round): both files lost.
+  const auto by_replicate = group_cases(all_cases(*service, id), before.at(0).at("group"), "impact_speed");
+  REQUIRE(by_replicate.size() > 8);
+  const std::vector<std::int64_t> lost{by_replicate.begin()->second.at("id").get<std::int64_t>(),
+                                       by_replicate.rbegin()->second.at("id").get<std::int64_t>()};
+  for (const auto case_id : lost) {
+    const auto detail = service->get("/api/cases/" + std::to_string(case_id));
+    REQUIRE(detail.at("data_file_check").at("state") == "ok");
+    std::filesystem::remove(detail.at("data_file").get<std::string>());
+  }
+
+  const auto receipt = submit(*service, document, 200);
+  CHECK(receipt.at("recomputed") == 2);
+  REQUIRE(eventually([&] { return study_complete(*service, id); }, 120s));
+  for (const auto case_id : lost) {
+    const auto detail = service->get("/api/cases/" + std::to_string(case_id));
+    CHECK(detail.at("status") == "done");
+    CHECK(detail.at("data_file_check").at("state") == "ok");
+    CHECK(detail.at("attempt_history").size() == 2);
+  }
+  // The search stands as it was: the same rounds, state and estimates.
+  const auto after = search_of(*service, id).at("groups");
+  REQUIRE(after.size() == before.size());
+  for (std::size_t g = 0; g < before.size(); ++g)
+    for (const char* field : {"state", "rounds", "cases", "estimates", "history"})
+      CHECK(after.at(g).at(field) == before.at(g).at(field));
 }
 
 }  // namespace aerobreak::testing

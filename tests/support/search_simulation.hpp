@@ -38,9 +38,9 @@ class SimulatedOutcomes {
  public:
   SimulatedOutcomes(SyntheticLaw law, double gamma_over_kn, std::uint64_t seed)
       : law_(law), gamma_(gamma_over_kn), state_(seed) {}
-  SearchObservation at(double value) {
+  SearchObservation at(double value, int round) {
     const double u = static_cast<double>(splitmix64(state_) >> 11) * 0x1.0p-53;
-    return {value, law_.outcome(value, gamma_, u)};
+    return {value, law_.outcome(value, gamma_, u), round};
   }
 
  private:
@@ -55,14 +55,14 @@ inline SimulatedSearch simulate_search(const BoundarySearchSpec& spec, const Syn
   SimulatedOutcomes outcomes(law, gamma_over_kn, seed);
   std::vector<SearchObservation> observations;
   const auto candidates = search_candidates(spec);
-  for (const auto index : initial_search_indices(spec)) observations.push_back(outcomes.at(candidates[index]));
+  for (const auto index : initial_search_indices(spec)) observations.push_back(outcomes.at(candidates[index], 0));
   SimulatedSearch out;
   out.rounds = 1;
   for (;;) {
     out.cases = static_cast<int>(observations.size());
-    out.final = plan_round(spec, observations, out.cases, round_seed(seed, 0, out.rounds));
+    out.final = plan_round(spec, observations, round_context(seed, 0, out.rounds, out.cases));
     if (out.final.state != GroupState::searching) return out;
-    for (const double value : out.final.values) observations.push_back(outcomes.at(value));
+    for (const double value : out.final.values) observations.push_back(outcomes.at(value, out.rounds));
     ++out.rounds;
   }
 }

@@ -6,16 +6,21 @@
 // serve --launcher direct --ranks 1 --worker-program PROGRAM`. Environment:
 //   AEROBREAK_SYNTHETIC_RANKS  cases it holds at once (the ranks it announces; default 4)
 //   AEROBREAK_SYNTHETIC_DELAY  seconds each case takes (default 0)
+//   AEROBREAK_SYNTHETIC_DATA   a directory: each result then comes with a small data file written
+//                              there, with its size and SHA-256, as the engine's HDF5 files do
 #include <poll.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <deque>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <variant>
 
+#include "orchestrator/study/sha256.hpp"
 #include "orchestrator/worker/worker_protocol.hpp"
 #include "tests/support/synthetic_law.hpp"
 
@@ -47,7 +52,17 @@ void answer(const CaseAssignment& a) {
   const auto orientation_seed = d.at("impact").value("orientation_seed", std::uint64_t{0});
   const std::string outcome =
       testing::SyntheticLaw{}.outcome(speed, gamma, testing::uniform_from_seeds(cluster_seed, orientation_seed));
-  send(result_message(a.case_id, a.attempt, 0, 0.0, {{"outcome", {{"class", outcome}}}, {"synthetic", true}}, ""));
+  const nlohmann::ordered_json result{{"outcome", {{"class", outcome}}}, {"synthetic", true}};
+  const char* data_directory = std::getenv("AEROBREAK_SYNTHETIC_DATA");
+  if (!data_directory) {
+    send(result_message(a.case_id, a.attempt, 0, 0.0, result, ""));
+    return;
+  }
+  const auto file = std::filesystem::path(data_directory) /
+                    ("case-" + std::to_string(a.case_id) + "-" + std::to_string(a.attempt) + ".txt");
+  std::ofstream(file) << result.dump() << "\n";
+  send(result_message(a.case_id, a.attempt, 0, 0.0, result, file.string(), std::filesystem::file_size(file),
+                      sha256_hex_of_file(file)));
 }
 
 // Reads whole lines from stdin without blocking past `timeout_ms`; false at end of input.

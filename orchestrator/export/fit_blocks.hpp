@@ -1,0 +1,34 @@
+#pragma once
+// Which fit each block of rows of table (b) comes from (docs/EXPORT.md, "kind=fit"): a size the
+// study ran from that size's own fits (per_size), a size it did not run from the fits pooled over
+// its sizes (pooled_ln_n). Internal to orchestrator/export.
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "orchestrator/export/export_request.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
+
+namespace aerobreak {
+
+// The value of the `model` column.
+enum class FitModel { per_size = 0, pooled_ln_n = 1 };
+
+// One combination of the study's non-speed axes (N included) and the fits of its rows; a missing
+// fit (nullptr) gives NaN.
+struct FitBlock {
+  nlohmann::ordered_json group;  // the axes' values, N included
+  double size = 0.0;             // N (NaN when the study has no size axis)
+  const LogisticFit* stick = nullptr;
+  const LogisticFit* break_up = nullptr;
+  FitModel model = FitModel::per_size;
+};
+
+// The blocks of the request's sizes (none asked: every size the study ran), per combination of the
+// other axes in grid order, sizes ascending. ExportError 409 without any per-size fit, 422 naming
+// `sizes` for a size without a fit (not run and no usable fit pooled over the sizes: says why).
+std::vector<FitBlock> fit_blocks(const CorrelationSet& set, const ExportRequest& request);
+
+// P and its 95 % band from one fit at a speed and the block's size.
+BandPoint fit_probability(const LogisticFit& fit, const FitBlock& block, double speed);
+
+}  // namespace aerobreak
