@@ -69,11 +69,23 @@ void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
   std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
 }
 
+// The contact model and wall as the options set them, for the header line.
+std::string model_summary(const BenchOptions& o) {
+  char damping[64] = "no damping";
+  if (o.dissipative_time > 0.0)
+    std::snprintf(damping, sizeof damping, "visco-elastic damping (A = %g tau)", o.dissipative_time);
+  char text[256];
+  std::snprintf(text, sizeof text, "JKR (%s rule) + %s + Mindlin (mu = %g) + %s + %s; %s wall",
+                o.separation == JkrSeparation::force ? "force" : "displacement", damping, o.friction,
+                o.rolling ? "rolling" : "no rolling", o.twisting ? "twisting" : "no twisting",
+                o.wall_adhesion ? "adhesive" : "non-adhesive");
+  return text;
+}
+
 void run_bench(const BenchOptions& o) {
   const Material material = reduced_material(o.gamma_over_kn, o.poisson);
-  std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; JKR + visco-elastic damping "
-              "+ Mindlin + rolling + twisting; gamma/k_n = %g; one core\n",
-              std::string(version()).c_str(), o.speed, o.gamma_over_kn);
+  std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; %s; gamma/k_n = %g; one core\n",
+              std::string(version()).c_str(), o.speed, model_summary(o).c_str(), o.gamma_over_kn);
   std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s %10s %10s %14s\n", "N", "contacts", "steps", "dt [tau]",
               "seconds", "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront", "CPU s",
               "p-steps/CPU s");

@@ -45,6 +45,19 @@ TEST_CASE("aerobreak bench prints particle-steps per second and the share of ste
   CHECK(std::stoi(large[2]) == 40);
 }
 
+TEST_CASE("aerobreak bench's header names the model the options set") {
+  const auto full = run_command(std::string(AEROBREAK_BINARY) + " bench --sizes 64 --steps 2");
+  REQUIRE(full.exit_code == 0);
+  CHECK_THAT(full.text, Catch::Contains("JKR (displacement rule) + visco-elastic damping (A = 0.05 tau) + Mindlin "
+                                        "(mu = 0.5) + rolling + twisting; adhesive wall"));
+  const auto bare = run_command(std::string(AEROBREAK_BINARY) +
+                                " bench --sizes 64 --steps 2 --damping 0 --no-rolling --no-twisting --separation force"
+                                " --no-wall-adhesion");
+  REQUIRE(bare.exit_code == 0);
+  CHECK_THAT(bare.text, Catch::Contains("JKR (force rule) + no damping + Mindlin (mu = 0.5) + no rolling + no twisting; "
+                                        "non-adhesive wall"));
+}
+
 TEST_CASE("aerobreak bench refuses a wavefront depth below 1") {
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " bench --sizes 64 --wavefront-depth 0");
   CHECK(out.exit_code != 0);
