@@ -206,6 +206,7 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   c.steps_per_period = run["steps_per_period"].get<double>();
   c.steps_per_break_overlap = run["steps_per_break_overlap"].get<double>();
   c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);
+  c.settle.extent_crossing_fraction = run["settle"].value("extent_crossing_fraction", 0.1);
   c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
   c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);
   if (c.time_step > 0.0 && c.time_limit > 0.0 && c.time_step >= c.time_limit)

@@ -29,9 +29,10 @@ struct ClusterSource {
 
 // When an impact counts as settled (docs/IMPACT.md, "Settle criterion").
 struct SettleCriteria {
-  double quiet_window = 0.0;          // tau; 0: automatic
-  double rest_speed_fraction = 0.01;  // of the impact speed
-  bool stop_when_outcome_fixed = true;  // the outcome-fixed rule as well as the quiet one
+  double quiet_window = 0.0;              // tau; 0: automatic
+  double extent_crossing_fraction = 0.1;  // automatic window: this share of the time to cross the extent
+  double rest_speed_fraction = 0.01;      // of the impact speed
+  bool stop_when_outcome_fixed = true;    // the outcome-fixed rule as well as the quiet one
 };
 
 // One impact case, in reduced units (d, m, tau = sqrt(m/k_n)), as schemas/case.schema.json

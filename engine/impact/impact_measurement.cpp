@@ -24,10 +24,11 @@ std::size_t missing_from(const std::vector<std::pair<std::uint32_t, std::uint32_
 }
 
 // The run's counters, as the simulation left them.
-void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, double seconds) {
+void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, const ElapsedTimes& stepping) {
   ImpactResult& r = prepared.result;
   const Simulation& sim = *prepared.simulation;
-  r.wall_clock_seconds = seconds;
+  r.wall_clock_seconds = stepping.wall_seconds;
+  r.cpu_seconds = stepping.cpu_seconds;
   r.steps = sim.step_count();
   r.simulated_time = sim.time();
   r.settled = monitor.settled();
@@ -35,8 +36,9 @@ void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, double s
   r.settled_at = monitor.settled_at();
   r.quiet_since = monitor.quiet_since();
   if (!r.settled) r.unsettled_reason = monitor.open_reason(sim);
-  r.particle_steps_per_second =
-      seconds > 0.0 ? static_cast<double>(r.primaries) * static_cast<double>(r.steps) / seconds : 0.0;
+  const double particle_steps = static_cast<double>(r.primaries) * static_cast<double>(r.steps);
+  r.particle_steps_per_second = stepping.wall_seconds > 0.0 ? particle_steps / stepping.wall_seconds : 0.0;
+  r.particle_steps_per_cpu_second = stepping.cpu_seconds > 0.0 ? particle_steps / stepping.cpu_seconds : 0.0;
   r.neighbor_builds = sim.neighbor_builds();
   r.pair_events = sim.pair_events();
   r.pair_events.made -= prepared.pair_start.made;
@@ -124,8 +126,8 @@ ClusterShape shape_of(const Particles& p, const std::vector<std::uint32_t>& memb
   return s;
 }
 
-void measure_impact(PreparedImpact& prepared, const SettleMonitor& monitor, double wall_clock_seconds) {
-  record_run(prepared, monitor, wall_clock_seconds);
+void measure_impact(PreparedImpact& prepared, const SettleMonitor& monitor, const ElapsedTimes& stepping) {
+  record_run(prepared, monitor, stepping);
   analyse_final_state(prepared, monitor);
 }
 

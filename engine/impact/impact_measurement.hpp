@@ -22,9 +22,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> contact_pairs(const Simulat
 ClusterShape shape_of(const Particles& p, const std::vector<std::uint32_t>& members, std::size_t contacts);
 
 // Fills in the result of a finished run: the run's counters as the simulation left them
-// (`wall_clock_seconds` of stepping), then the final state (settled: the state the monitor
-// judged, which is the final one, the run having stopped right after the judgement): fragments,
-// outcome, restitution, compaction of the largest fragment, damage and the small-strain check.
-void measure_impact(PreparedImpact& prepared, const SettleMonitor& monitor, double wall_clock_seconds);
+// (`stepping`: the wall-clock and CPU seconds of stepping), then the final state (settled: the
+// state the monitor judged, which is the final one, the run having stopped right after the
+// judgement): fragments, outcome, restitution, compaction of the largest fragment, damage and the
+// small-strain check.
+void measure_impact(PreparedImpact& prepared, const SettleMonitor& monitor, const ElapsedTimes& stepping);
 
 }  // namespace aerobreak

@@ -184,7 +184,9 @@ Json run_json(const ImpactResult& r) {
           {"rest_speed", number(r.rest_speed)},
           {"unsettled_reason", r.settled ? Json(nullptr) : Json(r.unsettled_reason)},
           {"wall_clock_seconds", number(r.wall_clock_seconds)},
+          {"cpu_seconds", number(r.cpu_seconds)},
           {"particle_steps_per_second", number(r.particle_steps_per_second)},
+          {"particle_steps_per_cpu_second", number(r.particle_steps_per_cpu_second)},
           {"neighbor_builds", r.neighbor_builds},
           {"snapshots", r.snapshots}};
 }

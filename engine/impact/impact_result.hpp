@@ -61,8 +61,10 @@ struct ImpactResult {
   double quiet_window = 0.0;
   double rest_speed = 0.0;
   std::string unsettled_reason;  // the settle criterion's last objection (undetermined runs)
-  double wall_clock_seconds = 0.0;
-  double particle_steps_per_second = 0.0;
+  double wall_clock_seconds = 0.0;  // of stepping
+  double cpu_seconds = 0.0;         // of stepping, the run's thread
+  double particle_steps_per_second = 0.0;      // by the wall clock
+  double particle_steps_per_cpu_second = 0.0;  // by CPU time
   std::uint64_t neighbor_builds = 0;
   std::size_t snapshots = 0;
 

@@ -11,6 +11,7 @@
 #include "engine/cluster/cluster_analysis.hpp"
 #include "engine/cluster/neighbour_order.hpp"
 #include "engine/cluster/random_stream.hpp"
+#include "engine/core/run_clock.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
 #include "engine/dem/simulation.hpp"
@@ -62,14 +63,15 @@ Wall impact_wall(const ImpactCase& c) {
   return wall;
 }
 
-// Settle criterion (docs/IMPACT.md). The automatic window covers 50 contact periods and a tenth
-// of the time the cluster needs to cross its own extent at the normal impact speed.
+// Settle criterion (docs/IMPACT.md). The automatic window covers 50 contact periods and a fraction
+// (a tenth unless the case says otherwise) of the time the cluster needs to cross its own extent
+// at the normal impact speed.
 void choose_settle_window(ImpactResult& r, double extent) {
   const ImpactCase& c = r.impact_case;
   const double normal_speed = -dot(r.impact_velocity, r.wall_normal);
-  r.quiet_window = c.settle.quiet_window > 0.0
-                       ? c.settle.quiet_window
-                       : std::max(50.0 * r.time_step_estimate.period, 0.1 * extent / normal_speed);
+  const double share_of_crossing = c.settle.extent_crossing_fraction * extent / normal_speed;
+  r.quiet_window = c.settle.quiet_window > 0.0 ? c.settle.quiet_window
+                                               : std::max(50.0 * r.time_step_estimate.period, share_of_crossing);
   if (!(r.quiet_window > 0.0) || !std::isfinite(r.quiet_window)) r.quiet_window = 1000.0 * r.time_step;
   r.rest_speed = c.settle.rest_speed_fraction * c.speed;
 }
@@ -191,7 +193,7 @@ ImpactSchedule impact_schedule(const ImpactResult& r, std::size_t particles) {
   return s;
 }
 
-double run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options) {
+ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options) {
   ImpactResult& r = prepared.result;
   Simulation& sim = *prepared.simulation;
   const ImpactSchedule schedule = impact_schedule(r, sim.particles().size());
@@ -199,16 +201,16 @@ double run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, con
   SettleObserver settle(monitor, schedule.check_steps, sim.step_count());
   snapshots.take(sim);
   monitor.update(sim);
-  const auto start = Clock::now();
+  const RunClock clock;
   ProgressObserver progress(options.progress, options.progress_seconds, r.impact_case.time_limit,
                             schedule.progress_steps, sim.step_count());
   std::vector<StepObserver*> observers{&snapshots, &settle};
   if (options.progress) observers.push_back(&progress);
   run_observed(sim, schedule.limit_steps, observers);
-  const double seconds = seconds_since(start);
+  const ElapsedTimes times = clock.elapsed();
   snapshots.take(sim);
   r.snapshots = snapshots.taken();
-  return seconds;
+  return times;
 }
 
 ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
@@ -222,8 +224,8 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
   }
   SettleMonitor monitor(prepared.result.quiet_window, prepared.result.rest_speed, c.thresholds,
                         c.settle.stop_when_outcome_fixed);
-  const double seconds = run_prepared_impact(prepared, monitor, options);
-  measure_impact(prepared, monitor, seconds);
+  const ElapsedTimes times = run_prepared_impact(prepared, monitor, options);
+  measure_impact(prepared, monitor, times);
   return std::move(prepared.result);
 }
 

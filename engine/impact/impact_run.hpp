@@ -8,6 +8,7 @@
 
 #include "engine/cluster/cluster.hpp"
 #include "engine/core/particles.hpp"
+#include "engine/core/run_clock.hpp"
 #include "engine/impact/impact_case.hpp"
 #include "engine/impact/impact_result.hpp"
 #include "engine/impact/run_observers.hpp"
@@ -64,9 +65,9 @@ ImpactSchedule impact_schedule(const ImpactResult& prepared, std::size_t particl
 
 // Runs a prepared impact until the settle check (SettleMonitor, both rules) finds its outcome
 // settled or the time limit comes, with snapshots and progress on the way (run_observed); returns
-// the wall-clock seconds of stepping. The result is then measured by measure_impact
+// the wall-clock and CPU seconds of stepping. The result is then measured by measure_impact
 // (impact_measurement.hpp).
-double run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options = {});
+ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options = {});
 
 // Runs one impact case end to end (docs/IMPACT.md): prepares the cluster, turns it to the seeded
 // random orientation, places it `gap` above the wall with every primary at the impact velocity,

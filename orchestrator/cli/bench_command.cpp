@@ -1,6 +1,5 @@
 #include "orchestrator/cli/bench_command.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -12,6 +11,7 @@
 
 #include "engine/cluster/ballistic_aggregation.hpp"
 #include "engine/cluster/random_stream.hpp"
+#include "engine/core/run_clock.hpp"
 #include "engine/core/units.hpp"
 #include "engine/core/version.hpp"
 #include "engine/dem/impact_placement.hpp"
@@ -69,13 +69,26 @@ void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
   std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
 }
 
+// The contact model and wall as the options set them, for the header line.
+std::string model_summary(const BenchOptions& o) {
+  char damping[64] = "no damping";
+  if (o.dissipative_time > 0.0)
+    std::snprintf(damping, sizeof damping, "visco-elastic damping (A = %g tau)", o.dissipative_time);
+  char text[256];
+  std::snprintf(text, sizeof text, "JKR (%s rule) + %s + Mindlin (mu = %g) + %s + %s; %s wall",
+                o.separation == JkrSeparation::force ? "force" : "displacement", damping, o.friction,
+                o.rolling ? "rolling" : "no rolling", o.twisting ? "twisting" : "no twisting",
+                o.wall_adhesion ? "adhesive" : "non-adhesive");
+  return text;
+}
+
 void run_bench(const BenchOptions& o) {
   const Material material = reduced_material(o.gamma_over_kn, o.poisson);
-  std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; JKR + visco-elastic damping "
-              "+ Mindlin + rolling + twisting; gamma/k_n = %g; one core\n",
-              std::string(version()).c_str(), o.speed, o.gamma_over_kn);
-  std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s %10s\n", "N", "contacts", "steps", "dt [tau]", "seconds",
-              "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront");
+  std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; %s; gamma/k_n = %g; one core\n",
+              std::string(version()).c_str(), o.speed, model_summary(o).c_str(), o.gamma_over_kn);
+  std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s %10s %10s %14s\n", "N", "contacts", "steps", "dt [tau]",
+              "seconds", "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront", "CPU s",
+              "p-steps/CPU s");
   for (std::size_t n : o.sizes) {
     const Cluster cluster = ballistic_cluster_cluster_aggregation({n, 1.0, 1.0}, o.seed);
     const RelaxationResult relaxed =
@@ -95,17 +108,19 @@ void run_bench(const BenchOptions& o) {
 
     // Every size runs the same window of the impact, so that the contact load per particle compares.
     const auto rebuilds0 = sim.neighbor_builds();
-    const auto start = std::chrono::steady_clock::now();
+    const RunClock clock;
     sim.run(o.steps);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const ElapsedTimes elapsed = clock.elapsed();
     const std::int64_t steps = o.steps;
-    const double rate = static_cast<double>(n) * static_cast<double>(steps) / elapsed;
+    const double particle_steps = static_cast<double>(n) * static_cast<double>(steps);
+    const double rate = particle_steps / elapsed.wall_seconds;
     // The share of the steps that ran in wavefronts (SimulationSettings::wavefront_depth).
     const double in_wavefronts = static_cast<double>(sim.wavefront_steps()) / static_cast<double>(steps);
-    std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu %9.0f%%\n", n, sim.contacts().size(),
-                static_cast<long long>(steps), sim.time_step(), elapsed, rate, 1e9 / rate,
-                static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
-                static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0), 100.0 * in_wavefronts);
+    std::printf("%9zu %9zu %10lld %12.5g %10.3f %14.4g %12.1f %10.2f %10llu %9.0f%% %10.3f %14.4g\n", n,
+                sim.contacts().size(), static_cast<long long>(steps), sim.time_step(), elapsed.wall_seconds, rate,
+                1e9 / rate, static_cast<double>(sim.neighbor_pairs()) / static_cast<double>(n),
+                static_cast<unsigned long long>(sim.neighbor_builds() - rebuilds0), 100.0 * in_wavefronts,
+                elapsed.cpu_seconds, particle_steps / elapsed.cpu_seconds);
     std::fflush(stdout);
   }
 }

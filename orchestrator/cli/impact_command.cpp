@@ -154,10 +154,10 @@ int run_command(const ImpactOptions& o) {
     const ImpactResult result = run_impact(impact_case, run);
     files.close();
     if (!o.quiet)
-      std::fprintf(stderr, "impact: %s after %.6g tau (%lld steps, %.3g s, %.3g particle-steps/s): %s\n",
+      std::fprintf(stderr, "impact: %s after %.6g tau (%lld steps, %.3g s, %.3g s CPU, %.3g particle-steps/s): %s\n",
                    to_string(result.classification.outcome).c_str(), result.simulated_time,
-                   static_cast<long long>(result.steps), result.wall_clock_seconds, result.particle_steps_per_second,
-                   result.classification.reason.c_str());
+                   static_cast<long long>(result.steps), result.wall_clock_seconds, result.cpu_seconds,
+                   result.particle_steps_per_second, result.classification.reason.c_str());
     output.write(to_json(result));
   } catch (const std::exception& e) {
     std::cerr << "aerobreak impact: " << o.case_file << ": " << e.what() << "\n";

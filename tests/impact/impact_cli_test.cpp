@@ -49,6 +49,11 @@ TEST_CASE("aerobreak impact runs a case and writes a valid result document and t
   CHECK(violations.empty());
   CHECK(result["case"]["run"]["time_limit"] == 400.0);
   CHECK(result["run"]["snapshots"].get<int>() >= 5);
+  // The stepping's CPU time (one thread: never more than its wall-clock time) and the rate by it.
+  const double cpu = result["run"]["cpu_seconds"].get<double>();
+  CHECK(cpu > 0.0);
+  CHECK(cpu <= result["run"]["wall_clock_seconds"].get<double>() * 1.01 + 1e-3);
+  CHECK(result["run"]["particle_steps_per_cpu_second"].get<double>() > 0.0);
   CHECK(std::filesystem::file_size(trajectory) > 0);
   std::ifstream frames(xyz);
   std::string first;

@@ -142,6 +142,17 @@ TEST_CASE("the schedule follows the case: time limit, 20 checks per quiet window
   CHECK(s.progress_steps == 125000);  // 10^6 particle-steps of 8 primaries
 }
 
+TEST_CASE("the automatic quiet window is the case's share of the time to cross the cluster's extent") {
+  auto document = testing::minimal_case();
+  document["impact"]["speed"] = 0.0005;  // slow: the crossing time, not 50 contact periods, sets the window
+  const PreparedImpact tenth = prepare_impact(parse_impact_case(document));
+  document["run"]["settle"]["extent_crossing_fraction"] = 0.5;
+  const PreparedImpact half = prepare_impact(parse_impact_case(document));
+  REQUIRE(tenth.result.quiet_window > 50.0 * tenth.result.time_step_estimate.period);
+  CHECK_THAT(half.result.quiet_window, Catch::Matchers::WithinRel(5.0 * tenth.result.quiet_window, 1e-12));
+  CHECK(half.result.time_step == tenth.result.time_step);
+}
+
 TEST_CASE("a whole impact ends in the state of the plain simulation run for as many steps") {
   auto document = testing::minimal_case();
   document["run"]["snapshot_interval"] = 50.0;

@@ -5,11 +5,12 @@
 #   e.g. run_lammps_peer.sh cluster.xyz --gamma-over-kn 0.001 --speed 0.1 --dt 0.02 --steps 20000
 # env:   LMP (default lmp), LAMMPS_PEER_WORKDIR (default: a new /tmp/lammps_peer.XXXXXX)
 # prints key = value lines; lammps_particle_steps_per_second = atoms * steps / LAMMPS Loop time
-# (wall clock); lammps_cpu_use_percent < ~99 means the run shared its core with other work.
+# (wall clock); lammps_cpu_use_percent < ~99 means the run shared its core with other work, and
+# lammps_particle_steps_per_cpu_second = atoms * steps / (Loop time x %CPU) is then its own rate.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 if [[ $# -lt 1 ]]; then
-  sed -n '2,9p' "${BASH_SOURCE[0]}" >&2
+  sed -n '2,10p' "${BASH_SOURCE[0]}" >&2
   exit 2
 fi
 cluster=$(realpath "$1")
@@ -29,6 +30,7 @@ awk -v work="$work" '
   END {
     if (loop == "" || loop <= 0) { print "error: no Loop time in " work "/log.lammps" > "/dev/stderr"; exit 1 }
     printf "lammps_particle_steps_per_second = %.6g\n", atoms * steps / loop
+    if (cpu > 0) printf "lammps_particle_steps_per_cpu_second = %.6g\n", atoms * steps / (loop * cpu / 100)
     printf "lammps_atoms = %d\n", atoms
     printf "lammps_steps = %d\n", steps
     printf "lammps_dt = %s\n", dt
