@@ -418,6 +418,11 @@ TEST_CASE("Two walls: wall_adhesive (1/0) is a column of the grid and sections t
     REQUIRE(column != document.at("columns").end());
     CHECK(column->at("role") == "input");
     CHECK(column->at("values").get<std::vector<double>>() == wall->values);
+    auto labelled = document;  // a text axis's codes (docs/EXPORT.md "Axis columns"): strings only
+    labelled["metadata"]["axis_labels"] = {{"generator", {"ballistic", "dlca"}}};
+    CHECK(describe(schema.validate(labelled)).empty());
+    labelled["metadata"]["axis_labels"]["generator"] = {1, 2};
+    CHECK_FALSE(schema.validate(labelled).empty());
     const auto h5 = fixture.directory.path() / (std::string(kind) + ".h5");
     std::ofstream(h5, std::ios::binary) << hdf5_image(table);
     const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
