@@ -81,11 +81,17 @@ inline StudySubmission::Case reduced_case(nlohmann::ordered_json grid_point, dou
   return c;
 }
 
-inline StudySubmission export_submission() {
+// A study without cases yet: its name and a content hash of one repeated character.
+inline StudySubmission named_study(const std::string& name, char hash) {
   StudySubmission study;
-  study.hash = std::string(64, 'e');
-  study.name = "export";
+  study.hash = std::string(64, hash);
+  study.name = name;
   study.document = {{"name", study.name}};
+  return study;
+}
+
+inline StudySubmission export_submission() {
+  auto study = named_study("export", 'e');
   for (const double speed : kSpeeds)
     for (const double gamma : kGammas)
       for (const int size : kSizes)
@@ -139,10 +145,7 @@ inline std::vector<Fragment> wall_fragments_of(bool adhesive, int size, std::siz
 }
 
 inline std::int64_t fill_wall_study(Store& store) {
-  StudySubmission study;
-  study.hash = std::string(64, 'w');
-  study.name = "walls";
-  study.document = {{"name", study.name}};
+  auto study = named_study("walls", 'w');
   for (const double speed : kSpeeds)
     for (const int size : kSizes)
       for (const bool adhesive : {true, false})

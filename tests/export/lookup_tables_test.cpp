@@ -41,6 +41,21 @@ ExportMaterial material_with_gamma_over_kn(double gamma_over_kn) {
   return material;
 }
 
+// Every row of a sections table (a column of the matrix): to_wall + the to_section_k, each >= 0, sum to 1.
+void check_columns_sum_to_one(const LookupTable& table) {
+  const int sections = table.metadata.at("sections").at("count");
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    double sum = at(table, "to_wall", row);
+    for (int k = 1; k <= sections; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "to_section_%02d", k);
+      CHECK(at(table, name, row) >= 0.0);
+      sum += at(table, name, row);
+    }
+    CHECK(sum == Approx(1.0).margin(1e-12));
+  }
+}
+
 struct ExportFixture {
   ScratchDirectory directory{"lookup_tables"};
   Store store{directory.path() / "store.sqlite"};
@@ -89,16 +104,7 @@ TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the ha
     REQUIRE(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
     const int sections = table.metadata.at("sections").at("count");
     CHECK(sections == 1 + static_cast<int>(std::floor(std::log(32.0) / std::log(ratio) + 1e-12)));
-    for (std::size_t row = 0; row < table.rows(); ++row) {
-      double sum = at(table, "to_wall", row);
-      for (int k = 1; k <= sections; ++k) {
-        char name[32];
-        std::snprintf(name, sizeof name, "to_section_%02d", k);
-        CHECK(at(table, name, row) >= 0.0);
-        sum += at(table, name, row);
-      }
-      CHECK(sum == Approx(1.0).margin(1e-12));
-    }
+    check_columns_sum_to_one(table);
   }
   ExportRequest request;
   request.kind = TableKind::sections;
@@ -167,16 +173,7 @@ TEST_CASE("Sections table of a study on two walls: one matrix per wall, columns 
   const auto table = fixture.table(request);
   REQUIRE(table.rows() == kSpeeds.size() * kSizes.size() * 2);
   check_wall_column(table);
-  const int sections = table.metadata.at("sections").at("count");
-  for (std::size_t row = 0; row < table.rows(); ++row) {
-    double sum = at(table, "to_wall", row);
-    for (int k = 1; k <= sections; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "to_section_%02d", k);
-      sum += at(table, name, row);
-    }
-    CHECK(sum == Approx(1.0).margin(1e-12));
-  }
+  check_columns_sum_to_one(table);
   // Speed 0.05, source section 6 = [32, 64), adhesive wall: 85 of 128 primaries stay, 6 leave as
   // monomers, 6 as dimers, 31 in section 5.
   const auto adhesive = row_of(table, {{"impact_speed", 0.05}, {"source_section", 6}, {"wall_adhesive", 1}});
