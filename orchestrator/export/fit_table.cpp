@@ -89,7 +89,6 @@ Evaluator band(bool stick, int bound) {
   };
 }
 
-
 nlohmann::ordered_json model_metadata() {
   return {{"column", "model: 0 = per_size, 1 = pooled_ln_n"},
           {"per_size", "a size the study ran: that size's own fit per group of the other axes, logit P = b0 + b1 ln v"},

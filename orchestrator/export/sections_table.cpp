@@ -1,9 +1,10 @@
 // Table (c) of docs/EXPORT.md: the sectional fragment matrix. Sections are geometric in mass (in
 // primaries): section k = 1..K holds the fragments of r^(k-1) <= N < r^k primaries, r the section
 // ratio (MAEROS's sections are geometric in particle mass with a ratio of at least 2: Gelbard &
-// Seinfeld, J. Colloid Interface Sci. 78 (1980) 485). For each impact condition and source section
-// j, column j of the matrix (an impact condition: every study axis but the size, boolean ones too): B[k][j], the mass fraction of the clusters of section j that leaves
-// the wall in fragments of section k, and the fraction retained on the wall; they sum to 1.
+// Seinfeld, J. Colloid Interface Sci. 78 (1980) 485). For each impact condition (every study axis
+// but the size, boolean and text ones too) and source section j, column j of the matrix: B[k][j],
+// the mass fraction of the clusters of section j that leaves the wall in fragments of section k,
+// and the fraction retained on the wall; they sum to 1.
 #include <cmath>
 #include <map>
 #include <tuple>
