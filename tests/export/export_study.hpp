@@ -101,7 +101,7 @@ inline StudySubmission export_submission() {
   return study;
 }
 
-// The fragments a case leaves: size, speed index in kSpeeds and replicate, read from its document.
+// What decides the fragments of a case: its size, speed index in kSpeeds and replicate (its seed).
 struct CaseLabel {
   int size;
   std::size_t speed_index;
