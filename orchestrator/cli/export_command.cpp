@@ -36,6 +36,7 @@ constexpr const char* kParameters[][2] = {
     {"speeds", "fit: comma-separated impact speeds"},
     {"sizes", "fit: comma-separated cluster sizes (primaries)"},
     {"strict", "fit: true refuses rows outside the fit's validity box [false]"},
+    {"select", "only the rows of one condition: NAME:VALUE[,NAME:VALUE], NAME an input column (e.g. wall_adhesive:1)"},
 };
 
 std::int64_t only_study(Store& store) {

@@ -40,6 +40,22 @@ std::vector<double> positive_list(const std::string& name, const std::string& te
   return values;
 }
 
+// select=NAME:VALUE[,NAME:VALUE]: column names as the tables write them, values numbers.
+std::vector<std::pair<std::string, double>> selections(const std::string& name, const std::string& text) {
+  std::vector<std::pair<std::string, double>> selected;
+  std::stringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto colon = item.find(':');
+    const std::string column = item.substr(0, colon);
+    if (colon == std::string::npos || column.empty() ||
+        column.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      throw ExportError(400, name, "parameter 'select' must list NAME:VALUE pairs, NAME a column name (got '" + item + "')");
+    selected.emplace_back(column, number(name, item.substr(colon + 1)));
+  }
+  if (selected.empty()) throw ExportError(400, name, "parameter 'select' must list at least one NAME:VALUE pair");
+  return selected;
+}
+
 template <typename Value>
 Value choice(const std::map<std::string, Value>& choices, const std::string& name, const std::string& text) {
   const auto found = choices.find(text);
@@ -90,6 +106,7 @@ void apply(ExportRequest& request, const std::string& name, const std::string& v
   else if (name == "speeds") request.speeds = positive_list(name, value);
   else if (name == "sizes") request.sizes = positive_list(name, value);
   else if (name == "strict") request.strict = flag(name, value);
+  else if (name == "select") request.select = selections(name, value);
   else throw ExportError(400, name, "unknown parameter '" + name + "'");
 }
 

@@ -33,6 +33,9 @@ struct ExportRequest {
   std::vector<double> speeds;
   std::vector<double> sizes;
   bool strict = false;
+  // select=NAME:VALUE[,NAME:VALUE]: only the rows whose input column NAME equals VALUE (a boolean
+  // axis as 1 or 0), e.g. one wall of a study that sweeps /wall/adhesive.
+  std::vector<std::pair<std::string, double>> select;
 };
 
 // A request that cannot be served: the HTTP status it maps to, the parameter at fault, and why.

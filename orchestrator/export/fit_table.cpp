@@ -89,16 +89,6 @@ Evaluator band(bool stick, int bound) {
   };
 }
 
-// An axis value of the row's group as a number: a boolean axis (e.g. /wall/adhesive) as 1 or 0.
-Evaluator group_value(const std::string& axis) {
-  return [axis](const FitRow& row) {
-    const auto found = row.block->group.find(axis);
-    if (found == row.block->group.end()) return kMissing;
-    if (found->is_boolean()) return found->get<bool>() ? 1.0 : 0.0;
-    return found->is_number() ? found->get<double>() : kMissing;
-  };
-}
-
 nlohmann::ordered_json model_metadata() {
   return {{"column", "model: 0 = per_size, 1 = pooled_ln_n"},
           {"per_size", "a size the study ran: that size's own fit per group of the other axes, logit P = b0 + b1 ln v"},
@@ -122,10 +112,12 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
   };
   add("impact_speed", "d/tau", "normal impact speed v0", ColumnRole::speed,
       [speed_unit_of_study](const FitRow& row) { return row.speed / speed_unit_of_study; });
-  for (const auto& [axis, value] : blocks.front().group.items())
-    if (value.is_number() || value.is_boolean())
-      add(axis_column_name(axis), value.is_boolean() ? "1" : axis == "primaries" || axis == "gamma_over_kn" ? "1" : "as in the case",
-          "group axis " + axis + (value.is_boolean() ? " (1 = true, 0 = false)" : ""), ColumnRole::input, group_value(axis));
+  std::vector<const nlohmann::ordered_json*> groups;
+  for (const auto& block : blocks) groups.push_back(&block.group);
+  const auto axes = axis_columns(groups, {});
+  for (const auto& axis : axes)
+    add(axis.name, axis.unit(), axis.description(), ColumnRole::input, [&axis](const FitRow& row) { return axis.value(row.block->group); });
+  add_axis_labels(table.metadata, axes);
   if (table.find("primaries")) {
     add("d_ve", "d", "volume-equivalent diameter d N^(1/3)", ColumnRole::derived,
         [](const FitRow& row) { return volume_equivalent_diameter(row.block->size); });

@@ -136,9 +136,10 @@ std::vector<ColumnSpec> output_columns() {
 
 void add_extra_axes(LookupTable& table, const StudyExportData& data) {
   for (const auto& axis : data.extra_axes) {
-    auto& column = table.add(axis_column_name(axis), "as in the case", "study axis " + axis, ColumnRole::input);
-    for (const auto& inputs : data.inputs) column.values.push_back(inputs.grid_point.value(axis, kMissing));
+    auto& column = table.add(axis.name, axis.unit(), axis.description(), ColumnRole::input);
+    for (const auto& inputs : data.inputs) column.values.push_back(axis.value(inputs.grid_point));
   }
+  add_axis_labels(table.metadata, data.extra_axes);
 }
 
 template <typename Map>

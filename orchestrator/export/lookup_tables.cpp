@@ -116,6 +116,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
                       : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
                                                             : fit_table(*fits, request, study_speed_unit(data));
   add_constant_gamma(table, data);
+  if (!request.select.empty()) table = selected_rows(table, request.select);
   if (request.material)
     table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material), request.interpolate_gamma);
   else if (request.gamma_over_kn)

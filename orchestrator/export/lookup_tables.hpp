@@ -35,6 +35,10 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
 // `material` gives nu for lambda (eq 19) of interpolated rows.
 LookupTable rows_for_gamma(const LookupTable& table, const Material& material, double gamma_over_kn, bool interpolate);
 
+// The rows whose input columns have the values of `select` (select=NAME:VALUE, e.g. one wall);
+// ExportError 422 naming select for a name that is no input column or when no row matches.
+LookupTable selected_rows(const LookupTable& table, const std::vector<std::pair<std::string, double>>& select);
+
 // Adds after each column in d/tau its value in m/s, after each in d its value in m, with the
 // scaling of each row.
 void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scalings);

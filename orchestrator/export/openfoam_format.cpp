@@ -24,17 +24,36 @@ const TableColumn& quantity_column(const LookupTable& table, const std::string& 
   throw ExportError(422, "quantity", "this table (kind " + table.kind + ") has no column '" + quantity + "'");
 }
 
+// The inputs whose values differ between the conditions (e.g. wall_adhesive, gamma_over_kn).
+std::vector<std::string> differing_inputs(const std::vector<ConditionRows>& conditions) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : conditions.front().key)
+    for (const auto& condition : conditions) {
+      const auto same = std::find_if(condition.key.begin(), condition.key.end(), [&](const auto& entry) { return entry.first == name; });
+      if (same == condition.key.end() || same->second != value) {
+        names.push_back(name);
+        break;
+      }
+    }
+  return names;
+}
+
+// 422 naming the inputs that tell the conditions apart and what selects one of them.
+[[noreturn]] void refuse_several_conditions(const std::vector<ConditionRows>& conditions) {
+  std::string differing, example;
+  for (const auto& name : differing_inputs(conditions)) differing += (differing.empty() ? "" : ", ") + name;
+  for (const auto& [name, value] : conditions[1].key) example += " " + name + "=" + number_text(value);
+  throw ExportError(422, "format",
+                    "an OpenFOAM table holds one impact condition besides speed and size, and this table has " +
+                        std::to_string(conditions.size()) + " conditions differing in " + differing + " (e.g." + example +
+                        "): choose gamma/k_n with a material or gamma_over_kn, any other input with select=NAME:VALUE "
+                        "(e.g. select=wall_adhesive:1), or use format=melcor (one tabular function per condition)");
+}
+
 // value[speed][size] of the table's one impact condition (besides speed and size).
 std::map<double, std::map<double, double>> speed_size_values(const LookupTable& table, const TableColumn& quantity) {
   const auto conditions = condition_rows(table, quantity, {std::begin(kSizeInputs), std::end(kSizeInputs)});
-  if (conditions.size() > 1) {
-    std::string example;
-    for (const auto& [name, value] : conditions[1].key) example += " " + name + "=" + number_text(value);
-    throw ExportError(422, "format",
-                      "an OpenFOAM table holds one impact condition besides speed and size, and this table has " +
-                          std::to_string(conditions.size()) + " (e.g." + example +
-                          "): choose one with a material or gamma_over_kn");
-  }
+  if (conditions.size() > 1) refuse_several_conditions(conditions);
   const auto& speed = adapter_speed(table);
   const auto* size = adapter_size(table);
   if (!size) throw ExportError(422, "format", "this table has no size column");

@@ -1,9 +1,10 @@
 // Table (c) of docs/EXPORT.md: the sectional fragment matrix. Sections are geometric in mass (in
 // primaries): section k = 1..K holds the fragments of r^(k-1) <= N < r^k primaries, r the section
 // ratio (MAEROS's sections are geometric in particle mass with a ratio of at least 2: Gelbard &
-// Seinfeld, J. Colloid Interface Sci. 78 (1980) 485). For each impact condition and source section
-// j, column j of the matrix: B[k][j], the mass fraction of the clusters of section j that leaves
-// the wall in fragments of section k, and the fraction retained on the wall; they sum to 1.
+// Seinfeld, J. Colloid Interface Sci. 78 (1980) 485). For each impact condition (every study axis
+// but the size, boolean and text ones too) and source section j, column j of the matrix: B[k][j],
+// the mass fraction of the clusters of section j that leaves the wall in fragments of section k,
+// and the fraction retained on the wall; they sum to 1.
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -32,9 +33,11 @@ struct SourceCell {
   std::map<int, double> section_mass;     // re-entrained mass by section
 };
 
-std::vector<double> condition_key(const GridRowInputs& inputs, const std::vector<std::string>& extra_axes, int section) {
+// The full impact condition of a grid point: every axis but the source size (boolean and label
+// axes too: the adhesive and the non-adhesive wall never share a matrix).
+std::vector<double> condition_key(const GridRowInputs& inputs, const std::vector<AxisColumn>& extra_axes, int section) {
   std::vector<double> key{inputs.speed, inputs.gamma_over_kn, inputs.angle, static_cast<double>(section)};
-  for (const auto& axis : extra_axes) key.push_back(inputs.grid_point.value(axis, kMissing));
+  for (const auto& axis : extra_axes) key.push_back(key_value(axis.value(inputs.grid_point)));
   return key;
 }
 
@@ -80,9 +83,10 @@ void add_condition_columns(LookupTable& table, const std::vector<SourceCell>& ce
       [](const SourceCell& c) { return c.inputs->gamma_over_kn; });
   add("impact_angle", "deg", "impact angle from head-on", ColumnRole::input, [](const SourceCell& c) { return c.inputs->angle; });
   for (const auto& axis : data.extra_axes) {
-    auto& column = table.add(axis_column_name(axis), "as in the case", "study axis " + axis, ColumnRole::input);
-    for (const auto& cell : cells) column.values.push_back(cell.inputs->grid_point.value(axis, kMissing));
+    auto& column = table.add(axis.name, axis.unit(), axis.description(), ColumnRole::input);
+    for (const auto& cell : cells) column.values.push_back(axis.value(cell.inputs->grid_point));
   }
+  add_axis_labels(table.metadata, data.extra_axes);
   add("source_section", "1", "source section j of the impacting clusters", ColumnRole::input,
       [](const SourceCell& c) { return static_cast<double>(c.section); });
   add("source_d_ve_lower", "d", "lower volume-equivalent diameter of section j", ColumnRole::derived,

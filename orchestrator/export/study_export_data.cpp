@@ -1,7 +1,7 @@
 #include "orchestrator/export/study_export_data.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
@@ -9,7 +9,8 @@
 namespace aerobreak {
 namespace {
 
-const std::set<std::string> kAliases{"impact_speed", "gamma_over_kn", "primaries"};
+// Quantities the grid and sections tables have a column of their own for.
+const std::vector<std::string> kOwnColumns{"impact_speed", "gamma_over_kn", "primaries", "impact_angle"};
 
 double value_at(const nlohmann::ordered_json& document, const std::string& pointer, double fallback) {
   const auto json_pointer = nlohmann::ordered_json::json_pointer(pointer);
@@ -27,15 +28,74 @@ PhysicalScaling physical_scaling(const nlohmann::ordered_json& material) {
   return scaling;
 }
 
-std::vector<std::string> numeric_extra_axes(const std::vector<GridRowInputs>& inputs) {
-  std::vector<std::string> axes;
-  if (inputs.empty()) return axes;
-  for (const auto& [axis, value] : inputs.front().grid_point.items())
-    if (!kAliases.count(axis) && value.is_number()) axes.push_back(axis);
-  return axes;
+std::vector<AxisColumn> extra_axis_columns(const std::vector<GridRowInputs>& inputs) {
+  std::vector<const nlohmann::ordered_json*> points;
+  for (const auto& row : inputs) points.push_back(&row.grid_point);
+  return axis_columns(points, kOwnColumns);
+}
+
+// Label text of an axis value: a string as it is, anything else as JSON.
+std::string label_of(const nlohmann::ordered_json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+
+AxisColumn axis_column(const std::string& axis, const std::vector<const nlohmann::ordered_json*>& points) {
+  AxisColumn column;
+  column.axis = axis;
+  column.name = axis_column_name(axis);
+  bool numbers = true, booleans = true;
+  for (const auto* point : points) {
+    const auto found = point->find(axis);
+    if (found == point->end()) continue;
+    numbers = numbers && found->is_number();
+    booleans = booleans && found->is_boolean();
+    const std::string label = label_of(*found);
+    if (std::find(column.labels.begin(), column.labels.end(), label) == column.labels.end()) column.labels.push_back(label);
+  }
+  column.encoding = numbers ? AxisColumn::Encoding::number : booleans ? AxisColumn::Encoding::boolean : AxisColumn::Encoding::label;
+  if (column.encoding != AxisColumn::Encoding::label) column.labels.clear();
+  return column;
 }
 
 }  // namespace
+
+double AxisColumn::value(const nlohmann::ordered_json& point) const {
+  const auto found = point.find(axis);
+  if (found == point.end()) return kMissing;
+  switch (encoding) {
+    case Encoding::number: return found->is_number() ? found->get<double>() : kMissing;
+    case Encoding::boolean: return found->get<bool>() ? 1.0 : 0.0;
+    case Encoding::label: break;
+  }
+  const auto label = std::find(labels.begin(), labels.end(), label_of(*found));
+  return label == labels.end() ? kMissing : static_cast<double>(label - labels.begin());
+}
+
+std::string AxisColumn::unit() const {
+  if (encoding != Encoding::number || name == "primaries" || name == "gamma_over_kn") return "1";
+  return "as in the case";
+}
+
+std::string AxisColumn::description() const {
+  if (encoding == Encoding::boolean) return "study axis " + axis + " (1 = true, 0 = false)";
+  if (encoding == Encoding::label) return "study axis " + axis + " as the index of its value in metadata axis_labels." + name;
+  return "study axis " + axis;
+}
+
+std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_json*>& points,
+                                     const std::vector<std::string>& left_out) {
+  std::vector<AxisColumn> columns;
+  for (const auto* point : points)
+    for (const auto& [axis, value] : point->items()) {
+      const std::string name = axis_column_name(axis);
+      const bool known = std::any_of(columns.begin(), columns.end(), [&](const AxisColumn& c) { return c.axis == axis; });
+      if (!known && std::find(left_out.begin(), left_out.end(), name) == left_out.end()) columns.push_back(axis_column(axis, points));
+    }
+  return columns;
+}
+
+void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisColumn>& axes) {
+  for (const auto& axis : axes)
+    if (axis.encoding == AxisColumn::Encoding::label) metadata["axis_labels"][axis.name] = axis.labels;
+}
 
 std::string axis_column_name(const std::string& axis) {
   std::string name;
@@ -85,7 +145,7 @@ StudyExportData read_study_export_data(Store& store, std::int64_t study_id) {
   if (results == 0)
     throw ExportError(409, "study", "study " + std::to_string(study_id) + " has no result yet: nothing to tabulate");
   for (auto& masses : store.fragment_masses(study_id)) data.fragments[masses.grid_key] = std::move(masses);
-  data.extra_axes = numeric_extra_axes(data.inputs);
+  data.extra_axes = extra_axis_columns(data.inputs);
   return data;
 }
 

@@ -24,6 +24,30 @@ struct GridRowInputs {
   std::optional<PhysicalScaling> scaling;  // the case's own material, for a physical study
 };
 
+// A study axis as a numeric column of a table (docs/EXPORT.md, "Axis columns"), so that rows of
+// different conditions never look alike: numbers as they are, booleans as 1 (true) or 0 (false),
+// any other axis (text such as a generator name, or mixed values) as the index 0, 1, ... of its
+// value in `labels`, the legend written to the metadata (add_axis_labels).
+struct AxisColumn {
+  enum class Encoding { number, boolean, label };
+  std::string axis;                 // as the study names it: "/wall/adhesive", "generator"
+  std::string name;                 // the column: axis_column_name(axis)
+  Encoding encoding = Encoding::number;
+  std::vector<std::string> labels;  // Encoding::label: the values in the order the grid first uses them
+
+  // The axis's value in a grid point or fit group; NaN when the axis is absent.
+  double value(const nlohmann::ordered_json& point) const;
+  std::string unit() const;
+  std::string description() const;
+};
+
+// The axes of these grid points (or fit groups), in their order, except those whose column name is
+// in `left_out` (quantities with a column of their own).
+std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_json*>& points,
+                                     const std::vector<std::string>& left_out);
+// metadata.axis_labels.NAME = [label of 0, label of 1, ...] for each label-encoded axis.
+void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisColumn>& axes);
+
 // Everything a table of kind grid or sections is built from, read on the store's reader
 // connections (never the writer: an export never waits for, nor blocks, the scheduler).
 struct StudyExportData {
@@ -32,7 +56,7 @@ struct StudyExportData {
   std::vector<GridRowInputs> inputs;                          // per grid point, submission order
   std::map<std::string, GridPointStatistics> statistics;      // by grid key
   std::map<std::string, GridPointFragmentMasses> fragments;   // by grid key (grid points with a determined result)
-  std::vector<std::string> extra_axes;                        // axes other than the aliases, numeric ones only
+  std::vector<AxisColumn> extra_axes;  // the study's axes without a column of their own (not speed, N, gamma/k_n, angle)
 };
 
 GridRowInputs grid_row_inputs(const GridPointCase& point);

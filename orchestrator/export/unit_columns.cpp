@@ -1,4 +1,5 @@
-// Units of docs/EXPORT.md: rows of one gamma/k_n (matched or interpolated) and SI columns.
+// Units of docs/EXPORT.md: rows of one gamma/k_n (matched or interpolated), rows of one selected
+// condition (select=NAME:VALUE) and SI columns.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -91,6 +92,30 @@ LookupTable rows_for_gamma(const LookupTable& table, const Material& material, d
   recompute_lambda(out, material.poisson_ratio);
   if (out.rows() == 0) throw ExportError(422, "interpolate", std::string(range) + ": no condition has both bracketing values");
   return out;
+}
+
+LookupTable selected_rows(const LookupTable& table, const std::vector<std::pair<std::string, double>>& select) {
+  std::vector<const TableColumn*> columns;
+  for (const auto& [name, value] : select) {
+    const auto* column = table.find(name);
+    if (column && column->role == ColumnRole::input) {
+      columns.push_back(column);
+      continue;
+    }
+    std::string inputs;
+    for (const auto& input : table.columns)
+      if (input.role == ColumnRole::input) inputs += (inputs.empty() ? "" : ", ") + input.name;
+    throw ExportError(422, "select", "this table (kind " + table.kind + ") has no input column '" + name + "'; its inputs: " + inputs);
+  }
+  LookupTable selected = empty_like(table);
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    bool keep = true;
+    for (std::size_t i = 0; i < select.size(); ++i) keep = keep && columns[i]->values[row] == select[i].second;
+    if (keep)
+      for (std::size_t c = 0; c < table.columns.size(); ++c) selected.columns[c].values.push_back(table.columns[c].values[row]);
+  }
+  if (selected.rows() == 0) throw ExportError(422, "select", "no row of this table has every value of select");
+  return selected;
 }
 
 void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scalings) {

@@ -2,9 +2,11 @@
 // A study in a real store file for the export tests: speeds 0.01, 0.02, 0.05 d/tau x gamma/k_n
 // 0.001, 0.01 x N = 8, 32, four replicates, with results written through the store's own commit
 // (as a worker's would be). Each replicate's fragments are chosen so that every class occurs and
-// every number of the tables can be computed by hand from `fragments_of`.
+// every number of the tables can be computed by hand from `fragments_of`; and a study of the same
+// grid on two walls (fill_wall_study: a boolean axis /wall/adhesive).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -79,11 +81,17 @@ inline StudySubmission::Case reduced_case(nlohmann::ordered_json grid_point, dou
   return c;
 }
 
-inline StudySubmission export_submission() {
+// A study without cases yet: its name and a content hash of one repeated character.
+inline StudySubmission named_study(const std::string& name, char hash) {
   StudySubmission study;
-  study.hash = std::string(64, 'e');
-  study.name = "export";
+  study.hash = std::string(64, hash);
+  study.name = name;
   study.document = {{"name", study.name}};
+  return study;
+}
+
+inline StudySubmission export_submission() {
+  auto study = named_study("export", 'e');
   for (const double speed : kSpeeds)
     for (const double gamma : kGammas)
       for (const int size : kSizes)
@@ -93,19 +101,63 @@ inline StudySubmission export_submission() {
   return study;
 }
 
-// Submits the study and commits every case's result; returns the study's id.
-inline std::int64_t fill_export_study(Store& store) {
-  const auto receipt = store.submit_study(export_submission());
+// What decides the fragments of a case: its size, speed index in kSpeeds and replicate (its seed).
+struct CaseLabel {
+  int size;
+  std::size_t speed_index;
+  int replicate;
+};
+
+inline CaseLabel case_label(const nlohmann::ordered_json& document) {
+  const double speed = document.at("impact").at("speed");
+  return {document.at("cluster").at("generator").at("primaries").get<int>(),
+          static_cast<std::size_t>(std::find(kSpeeds.begin(), kSpeeds.end(), speed) - kSpeeds.begin()),
+          document.at("cluster").at("generator").at("seed").get<int>()};
+}
+
+// Submits the study and commits every case's result, fragments_for(case document); returns the study's id.
+template <typename FragmentsFor>
+std::int64_t fill_study(Store& store, const StudySubmission& submission, const FragmentsFor& fragments_for) {
+  const auto receipt = store.submit_study(submission);
   const auto job = store.start_job("export test", 1);
   while (const auto claimed = store.claim_next_case(job)) {
-    const auto& document = claimed->document;
-    const int size = document.at("cluster").at("generator").at("primaries");
-    const int replicate = document.at("cluster").at("generator").at("seed");
-    const double speed = document.at("impact").at("speed");
-    const auto s = static_cast<std::size_t>(std::find(kSpeeds.begin(), kSpeeds.end(), speed) - kSpeeds.begin());
-    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result_of(fragments_of(size, s, replicate), size), "", 0.1));
+    const int size = case_label(claimed->document).size;
+    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result_of(fragments_for(claimed->document), size), "", 0.1));
   }
   return receipt.study_id;
+}
+
+inline std::int64_t fill_export_study(Store& store) {
+  return fill_study(store, export_submission(), [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return fragments_of(label.size, label.speed_index, label.replicate);
+  });
+}
+
+// The same speeds, sizes and replicates at gamma/k_n 0.001 on two walls (axis /wall/adhesive):
+// the adhesive wall leaves fragments_of; the wall without adhesion makes every cluster leave:
+// whole (a bounce) below the fastest speed, and at it in two halves (break-up) for even replicates,
+// whole for odd ones. Rows of the two walls differ in every output.
+inline std::vector<Fragment> wall_fragments_of(bool adhesive, int size, std::size_t speed_index, int replicate) {
+  if (adhesive) return fragments_of(size, speed_index, replicate);
+  if (speed_index < 2 || replicate % 2 == 1) return {{size, false}};
+  return {{size / 2, false}, {size / 2, false}};
+}
+
+inline std::int64_t fill_wall_study(Store& store) {
+  auto study = named_study("walls", 'w');
+  for (const double speed : kSpeeds)
+    for (const int size : kSizes)
+      for (const bool adhesive : {true, false})
+        for (int r = 0; r < kReplicates; ++r) {
+          auto c = reduced_case({{"impact_speed", speed}, {"primaries", size}, {"/wall/adhesive", adhesive}}, speed, 0.001, size, r);
+          c.document["wall"] = {{"adhesive", adhesive}};
+          study.cases.push_back(std::move(c));
+        }
+  return fill_study(store, study, [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return wall_fragments_of(document.at("wall").at("adhesive").get<bool>(), label.size, label.speed_index, label.replicate);
+  });
 }
 
 }  // namespace aerobreak::testing

@@ -1,8 +1,10 @@
 // The lookup tables (docs/EXPORT.md) of a study in a real store file: every number checked against
 // a hand computation from the fragments the results left (export_study.hpp), the sectional
-// columns summing to 1, SI against the unit formulas, and the material rules.
+// columns summing to 1, SI against the unit formulas, and the material rules; a study on two walls
+// (a boolean axis) tabulated per wall, and the encoding of every kind of axis.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +39,21 @@ ExportMaterial material_with_gamma_over_kn(double gamma_over_kn) {
   const double k_n = material.material.youngs_modulus * material.diameter / (3.0 * (1.0 - 0.09));  // eq 7
   material.material.surface_energy = gamma_over_kn * k_n;
   return material;
+}
+
+// Every row of a sections table (a column of the matrix): to_wall + the to_section_k, each >= 0, sum to 1.
+void check_columns_sum_to_one(const LookupTable& table) {
+  const int sections = table.metadata.at("sections").at("count");
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    double sum = at(table, "to_wall", row);
+    for (int k = 1; k <= sections; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "to_section_%02d", k);
+      CHECK(at(table, name, row) >= 0.0);
+      sum += at(table, name, row);
+    }
+    CHECK(sum == Approx(1.0).margin(1e-12));
+  }
 }
 
 struct ExportFixture {
@@ -87,16 +104,7 @@ TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the ha
     REQUIRE(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
     const int sections = table.metadata.at("sections").at("count");
     CHECK(sections == 1 + static_cast<int>(std::floor(std::log(32.0) / std::log(ratio) + 1e-12)));
-    for (std::size_t row = 0; row < table.rows(); ++row) {
-      double sum = at(table, "to_wall", row);
-      for (int k = 1; k <= sections; ++k) {
-        char name[32];
-        std::snprintf(name, sizeof name, "to_section_%02d", k);
-        CHECK(at(table, name, row) >= 0.0);
-        sum += at(table, name, row);
-      }
-      CHECK(sum == Approx(1.0).margin(1e-12));
-    }
+    check_columns_sum_to_one(table);
   }
   ExportRequest request;
   request.kind = TableKind::sections;
@@ -111,6 +119,125 @@ TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the ha
   CHECK(at(table, "to_section_06", row) == 0.0);
   CHECK(at(table, "p_break_up", row) == 0.75);
   CHECK(at(table, "source_d_ve_lower", row) == Approx(std::cbrt(32.0)));
+}
+
+namespace {
+
+struct WallFixture {
+  ScratchDirectory directory{"lookup_walls"};
+  Store store{directory.path() / "store.sqlite"};
+  std::int64_t study = fill_wall_study(store);
+  LookupTable table(ExportRequest request) { return study_lookup_table(store, study, request); }
+};
+
+// The wall_adhesive column: an input, 1 = adhesive, 0 = without adhesion, half the rows each.
+void check_wall_column(const LookupTable& table) {
+  const auto* wall = table.find("wall_adhesive");
+  REQUIRE(wall);
+  CHECK(wall->role == ColumnRole::input);
+  CHECK(wall->unit == "1");
+  CHECK(wall->description.find("/wall/adhesive (1 = true, 0 = false)") != std::string::npos);
+  CHECK(std::count(wall->values.begin(), wall->values.end(), 1.0) == static_cast<long>(table.rows() / 2));
+  CHECK(std::count(wall->values.begin(), wall->values.end(), 0.0) == static_cast<long>(table.rows() / 2));
+}
+
+}  // namespace
+
+TEST_CASE("Grid table of a study on two walls: one row per wall, each counted by hand", "[export][axes]") {
+  WallFixture fixture;
+  const auto table = fixture.table({});
+  REQUIRE(table.rows() == kSpeeds.size() * kSizes.size() * 2);
+  check_wall_column(table);
+  // Speed 0.05, N = 32 on the adhesive wall (fragments_of): three break-ups leave 28 of 32 on the
+  // wall, one bounce leaves 1.
+  const auto adhesive = row_of(table, {{"impact_speed", 0.05}, {"primaries", 32}, {"wall_adhesive", 1}});
+  CHECK(at(table, "p_break_up", adhesive) == 0.75);
+  CHECK(at(table, "p_bounce", adhesive) == 0.25);
+  CHECK(at(table, "retained_mass_fraction", adhesive) == Approx(85.0 / 128.0));
+  CHECK(at(table, "reentrained_m0", adhesive) == Approx((3 * 3 + 1) / 4.0));
+  // The same condition without adhesion: replicates 0 and 2 leave in two halves, 1 and 3 whole.
+  const auto bare = row_of(table, {{"impact_speed", 0.05}, {"primaries", 32}, {"wall_adhesive", 0}});
+  CHECK(at(table, "p_break_up", bare) == 0.5);
+  CHECK(at(table, "p_bounce", bare) == 0.5);
+  CHECK(at(table, "retained_mass_fraction", bare) == 0.0);
+  CHECK(at(table, "reentrained_m0", bare) == Approx((2 + 1 + 2 + 1) / 4.0));
+  // Speed 0.01: every cluster sticks to the adhesive wall and bounces off the other.
+  CHECK(at(table, "p_stick", row_of(table, {{"impact_speed", 0.01}, {"primaries", 8}, {"wall_adhesive", 1}})) == 1.0);
+  CHECK(at(table, "p_bounce", row_of(table, {{"impact_speed", 0.01}, {"primaries", 8}, {"wall_adhesive", 0}})) == 1.0);
+}
+
+TEST_CASE("Sections table of a study on two walls: one matrix per wall, columns summing to 1, counted by hand", "[export][axes]") {
+  WallFixture fixture;
+  ExportRequest request;
+  request.kind = TableKind::sections;
+  const auto table = fixture.table(request);
+  REQUIRE(table.rows() == kSpeeds.size() * kSizes.size() * 2);
+  check_wall_column(table);
+  check_columns_sum_to_one(table);
+  // Speed 0.05, source section 6 = [32, 64), adhesive wall: 85 of 128 primaries stay, 6 leave as
+  // monomers, 6 as dimers, 31 in section 5.
+  const auto adhesive = row_of(table, {{"impact_speed", 0.05}, {"source_section", 6}, {"wall_adhesive", 1}});
+  CHECK(at(table, "to_wall", adhesive) == Approx(85.0 / 128.0));
+  CHECK(at(table, "to_section_01", adhesive) == Approx(6.0 / 128.0));
+  CHECK(at(table, "to_section_02", adhesive) == Approx(6.0 / 128.0));
+  CHECK(at(table, "to_section_05", adhesive) == Approx(31.0 / 128.0));
+  CHECK(at(table, "results", adhesive) == 4);
+  // Without adhesion: nothing stays, half the mass leaves in halves of 16 (section 5), half whole.
+  const auto bare = row_of(table, {{"impact_speed", 0.05}, {"source_section", 6}, {"wall_adhesive", 0}});
+  CHECK(at(table, "to_wall", bare) == 0.0);
+  CHECK(at(table, "to_section_05", bare) == Approx(0.5));
+  CHECK(at(table, "to_section_06", bare) == Approx(0.5));
+  CHECK(at(table, "p_break_up", bare) == 0.5);
+  CHECK(at(table, "results", bare) == 4);
+}
+
+TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index with its labels in the metadata", "[export][axes]") {
+  const std::vector<nlohmann::ordered_json> points{
+      {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", true}, {"/model/friction", 0.3}, {"/odd", 1}},
+      {{"primaries", 8}, {"generator", "dlca"}, {"/wall/adhesive", false}, {"/model/friction", 0.5}, {"/odd", "x"}},
+      {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", false}, {"/model/friction", 0.3}, {"/odd", true}}};
+  std::vector<const nlohmann::ordered_json*> pointers;
+  for (const auto& point : points) pointers.push_back(&point);
+  const auto axes = axis_columns(pointers, {"primaries"});
+  REQUIRE(axes.size() == 4);
+  const auto values = [&](std::size_t axis) {
+    std::vector<double> column;
+    for (const auto& point : points) column.push_back(axes[axis].value(point));
+    return column;
+  };
+  CHECK(axes[0].name == "generator");
+  CHECK(values(0) == std::vector<double>{0, 1, 0});
+  CHECK(axes[1].name == "wall_adhesive");
+  CHECK(values(1) == std::vector<double>{1, 0, 0});
+  CHECK(axes[2].name == "model_friction");
+  CHECK(values(2) == std::vector<double>{0.3, 0.5, 0.3});
+  CHECK(axes[2].unit() == "as in the case");
+  CHECK(values(3) == std::vector<double>{0, 1, 2});  // mixed values: labels "1", "x", "true"
+  nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
+  add_axis_labels(metadata, axes);
+  CHECK(metadata.at("axis_labels").at("generator") == nlohmann::ordered_json::array({"ballistic", "dlca"}));
+  CHECK(metadata.at("axis_labels").at("odd") == nlohmann::ordered_json::array({"1", "x", "true"}));
+  CHECK_FALSE(metadata.at("axis_labels").contains("wall_adhesive"));
+}
+
+TEST_CASE("select=NAME:VALUE keeps the rows of one condition, an unknown column or no match is refused naming select", "[export][axes]") {
+  WallFixture fixture;
+  ExportRequest request;
+  request.select = {{"wall_adhesive", 0}, {"primaries", 32}};
+  const auto table = fixture.table(request);
+  REQUIRE(table.rows() == kSpeeds.size());
+  for (std::size_t row = 0; row < table.rows(); ++row) CHECK(at(table, "wall_adhesive", row) == 0.0);
+  CHECK(at(table, "p_break_up", row_of(table, {{"impact_speed", 0.05}})) == 0.5);
+  for (const auto& select : std::vector<std::pair<std::string, double>>{{"wall_colour", 1}, {"wall_adhesive", 2}, {"p_stick", 1}}) {
+    request.select = {select};
+    try {
+      fixture.table(request);
+      FAIL("select=" << select.first << " was served");
+    } catch (const ExportError& error) {
+      CHECK(error.status == 422);
+      CHECK(error.field == "select");
+    }
+  }
 }
 
 TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by hand", "[export]") {
@@ -189,6 +316,10 @@ TEST_CASE("Export parameters: unknown, malformed or half a material are refused 
   CHECK(field_of({{"youngs_modulus", "-1"}, {"poisson_ratio", "0.3"}, {"density", "1"}, {"surface_energy", "1"}, {"diameter", "1"}}) ==
         "youngs_modulus");
   CHECK(field_of({{"speeds", "1,x"}}) == "speeds");
+  CHECK(field_of({{"select", "wall_adhesive"}}) == "select");
+  CHECK(field_of({{"select", "Wall:1"}}) == "select");
+  CHECK(field_of({{"select", "wall_adhesive:yes"}}) == "select");
+  CHECK(field_of({{"select", "wall_adhesive:1,primaries:32"}}) == "(accepted)");
   CHECK(field_of({{"format", "csv"}, {"format", "dat"}}) == "format");
   CHECK(field_of({{"format", "melcor"}, {"kind", "sections"}, {"section_ratio", "4"}}) == "(accepted)");
 }

@@ -1,7 +1,8 @@
 // Each format of docs/EXPORT.md read back by a consumer: a strict RFC 4180 reader, a Fortran
 // program compiled by gfortran with list-directed input, the HDF5 C API, the project's JSON Schema
 // validator, and the grammars of MELCOR tabular functions and OpenFOAM tables; the fit table's
-// `model` column and `fit_models` metadata in each of them.
+// `model` column and `fit_models` metadata in each of them; a study on two walls (a boolean axis)
+// with its wall_adhesive column in each format, one MELCOR function per wall, OpenFOAM per wall.
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
@@ -84,6 +85,34 @@ void check_value(double read, double written) {
   CHECK(read == Approx(written).epsilon(5.1e-10).margin(1e-300));
 }
 
+// tests/export/read_lookup_dat.f90 compiled by gfortran into the directory: the reader's path.
+std::string compiled_dat_reader(const ScratchDirectory& directory) {
+  const std::string gfortran = AEROBREAK_GFORTRAN;
+  INFO("gfortran is needed (scripts/setup.sh installs it)");
+  REQUIRE_FALSE(gfortran.empty());
+  const auto reader = directory.file("read_lookup_dat");
+  const auto compiled = run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90");
+  INFO(compiled.text);
+  REQUIRE(compiled.exit_code == 0);
+  return reader;
+}
+
+// The Fortran reader reads every value of the .dat file, row by row, as the table has it.
+void check_dat_read_back(const std::string& reader, const std::string& dat_file, const LookupTable& table) {
+  const auto read = run_command(reader + " " + dat_file, true);
+  REQUIRE(read.exit_code == 0);
+  std::istringstream lines(read.text);
+  for (std::size_t row = 0; row < table.rows(); ++row)
+    for (const auto& column : table.columns) {
+      std::string line;
+      REQUIRE(std::getline(lines, line));
+      check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
+    }
+  std::string last;
+  std::getline(lines, last);
+  CHECK(last == "rows " + std::to_string(table.rows()));
+}
+
 }  // namespace
 
 TEST_CASE("CSV: a strict RFC 4180 reader finds the header block, names, units and every value", "[export][formats]") {
@@ -112,14 +141,8 @@ TEST_CASE("CSV: a strict RFC 4180 reader finds the header block, names, units an
 }
 
 TEST_CASE(".dat: a Fortran program (gfortran, list-directed input) reads every value to the printed precision", "[export][formats]") {
-  const std::string gfortran = AEROBREAK_GFORTRAN;
-  INFO("gfortran is needed (scripts/setup.sh installs it)");
-  REQUIRE_FALSE(gfortran.empty());
   FormatsFixture fixture;
-  const auto reader = fixture.directory.file("read_lookup_dat");
-  const auto compiled = run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90");
-  INFO(compiled.text);
-  REQUIRE(compiled.exit_code == 0);
+  const auto reader = compiled_dat_reader(fixture.directory);
   for (const char* kind : {"grid", "sections"}) {
     const auto dat = fixture.directory.file(std::string(kind) + ".dat");
     const auto exported = run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
@@ -129,19 +152,7 @@ TEST_CASE(".dat: a Fortran program (gfortran, list-directed input) reads every v
     REQUIRE(exported.exit_code == 0);
     auto request = with_material();
     request.kind = std::string(kind) == "grid" ? TableKind::grid : TableKind::sections;
-    const auto table = fixture.table(request);
-    const auto read = run_command(reader + " " + dat, true);
-    REQUIRE(read.exit_code == 0);
-    std::istringstream lines(read.text);
-    for (std::size_t row = 0; row < table.rows(); ++row)
-      for (const auto& column : table.columns) {
-        std::string line;
-        REQUIRE(std::getline(lines, line));
-        check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
-      }
-    std::string last;
-    std::getline(lines, last);
-    CHECK(last == "rows " + std::to_string(table.rows()));
+    check_dat_read_back(reader, dat, fixture.table(request));
   }
 }
 
@@ -316,8 +327,6 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
 }
 
 TEST_CASE("Fit table with a size not run: the model column and fit_models in every format", "[export][formats][fit]") {
-  const std::string gfortran = AEROBREAK_GFORTRAN;
-  REQUIRE_FALSE(gfortran.empty());
   ScratchDirectory directory("table_formats_fit");
   Store store(directory.path() / "store.sqlite");
   const std::int64_t study = fill_pooled_study(store);
@@ -334,16 +343,9 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   const auto dat = dat_text(table);
   const auto model_number = std::to_string(model - table.columns.begin() + 1);
   CHECK(dat.find("# column " + model_number + ": model [1]") != std::string::npos);
-  const auto dat_file = directory.file("fit.dat"), reader = directory.file("read_lookup_dat");
+  const auto dat_file = directory.file("fit.dat");
   std::ofstream(dat_file) << dat;
-  REQUIRE(run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90").exit_code == 0);
-  std::istringstream lines(run_command(reader + " " + dat_file, true).text);
-  for (std::size_t row = 0; row < table.rows(); ++row)
-    for (const auto& column : table.columns) {
-      std::string line;
-      REQUIRE(std::getline(lines, line));
-      check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
-    }
+  check_dat_read_back(compiled_dat_reader(directory), dat_file, table);
   std::ifstream schema_file(AEROBREAK_SOURCE_DIR "/schemas/lookup.schema.json");
   const JsonSchema schema(nlohmann::ordered_json::parse(schema_file));
   const auto document = nlohmann::ordered_json::parse(table_json(table).dump());
@@ -363,6 +365,115 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   std::size_t opened = 0;
   for (const auto& word : tokens(openfoam, "//")) opened += static_cast<std::size_t>(std::count(word.begin(), word.end(), '('));
   CHECK(opened == 1 + 3 * 2 + 3 * 3);  // the list, per speed two, per (speed, size) one
+}
+
+namespace {
+
+struct WallFormatsFixture {
+  ScratchDirectory directory{"table_formats_walls"};
+  Store store{directory.path() / "store.sqlite"};
+  std::int64_t study = fill_wall_study(store);
+  LookupTable table(ExportRequest request = {}) { return study_lookup_table(store, study, request); }
+};
+
+// The values of the column `name` in records (a header row, a units row, then the rows) of a CSV.
+std::vector<double> csv_column(const Records& records, const std::string& name) {
+  const std::size_t header = std::stoul(records[0][1]);
+  const auto& names = records[header];
+  const auto c = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  REQUIRE(c < names.size());
+  std::vector<double> values;
+  for (std::size_t r = header + 2; r < records.size(); ++r) values.push_back(std::stod(records[r][c]));
+  return values;
+}
+
+}  // namespace
+
+TEST_CASE("Two walls: wall_adhesive (1/0) is a column of the grid and sections tables in CSV, .dat, JSON and HDF5",
+          "[export][formats][axes]") {
+  WallFormatsFixture fixture;
+  const auto reader = compiled_dat_reader(fixture.directory);
+  std::ifstream schema_file(AEROBREAK_SOURCE_DIR "/schemas/lookup.schema.json");
+  const JsonSchema schema(nlohmann::ordered_json::parse(schema_file));
+  for (const char* kind : {"grid", "sections"}) {
+    INFO(kind);
+    ExportRequest request;
+    request.kind = std::string(kind) == "grid" ? TableKind::grid : TableKind::sections;
+    const auto table = fixture.table(request);
+    const auto* wall = table.find("wall_adhesive");
+    REQUIRE(wall);
+    REQUIRE(table.rows() == kSpeeds.size() * kSizes.size() * 2);
+    CHECK(std::count(wall->values.begin(), wall->values.end(), 1.0) == static_cast<long>(kSpeeds.size() * kSizes.size()));
+    CHECK(csv_column(strict_csv(csv_text(table)), "wall_adhesive") == wall->values);
+    const auto dat = fixture.directory.file(std::string(kind) + ".dat");
+    const auto exported = run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
+                                      " --kind " + kind + " --format dat -o " + dat);
+    INFO(exported.text);
+    REQUIRE(exported.exit_code == 0);
+    check_dat_read_back(reader, dat, table);
+    const auto document = nlohmann::ordered_json::parse(table_json(table).dump());
+    CHECK(describe(schema.validate(document)).empty());
+    const auto column = std::find_if(document.at("columns").begin(), document.at("columns").end(),
+                                     [](const auto& c) { return c.at("name") == "wall_adhesive"; });
+    REQUIRE(column != document.at("columns").end());
+    CHECK(column->at("role") == "input");
+    CHECK(column->at("values").get<std::vector<double>>() == wall->values);
+    auto labelled = document;  // a text axis's codes (docs/EXPORT.md "Axis columns"): strings only
+    labelled["metadata"]["axis_labels"] = {{"generator", {"ballistic", "dlca"}}};
+    CHECK(describe(schema.validate(labelled)).empty());
+    labelled["metadata"]["axis_labels"]["generator"] = {1, 2};
+    CHECK_FALSE(schema.validate(labelled).empty());
+    const auto h5 = fixture.directory.path() / (std::string(kind) + ".h5");
+    std::ofstream(h5, std::ios::binary) << hdf5_image(table);
+    const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    const hid_t dataset = H5Dopen2(file, "wall_adhesive", H5P_DEFAULT);
+    REQUIRE(dataset >= 0);
+    std::vector<double> values(table.rows());
+    CHECK(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0);
+    CHECK(values == wall->values);
+    CHECK(read_string_attribute(dataset, "description") == std::vector<std::string>{wall->description});
+    H5Dclose(dataset);
+    H5Fclose(file);
+  }
+}
+
+TEST_CASE("Two walls: MELCOR writes one function per size and wall, OpenFOAM refuses naming wall_adhesive until select picks one",
+          "[export][formats][axes]") {
+  WallFormatsFixture fixture;
+  for (const auto kind : {TableKind::grid, TableKind::sections}) {
+    ExportRequest request;
+    request.kind = kind;
+    const auto table = fixture.table(request);
+    const auto melcor = melcor_text(table);
+    const auto words = tokens(melcor, "!");
+    const auto functions = std::count(words.begin(), words.end(), "TF_ID");
+    // grid: P(stick), P(break-up), retained; sections: P(break-up), to the wall; per size and wall.
+    const std::size_t quantities = kind == TableKind::grid ? 3 : 2;
+    CHECK(functions == static_cast<long>(quantities * kSizes.size() * 2));
+    for (std::size_t i = 0; i < words.size(); ++i)
+      if (words[i] == "TF_TAB") CHECK(words.at(i + 1) == std::to_string(kSpeeds.size()));
+    std::size_t adhesive = 0, bare = 0, at = 0;
+    while ((at = melcor.find("wall_adhesive = ", at)) != std::string::npos) {
+      at += 16;
+      (melcor.compare(at, 15, number_text(1.0)) == 0 ? adhesive : bare) += 1;
+    }
+    CHECK(adhesive == quantities * kSizes.size());
+    CHECK(bare == quantities * kSizes.size());
+    try {
+      openfoam_table2d(table, "p_break_up");
+      FAIL("an OpenFOAM table of two walls was written");
+    } catch (const ExportError& error) {
+      CHECK(error.status == 422);
+      CHECK(error.field == "format");
+      CHECK_THAT(error.what(), Catch::Contains("differing in wall_adhesive") && Catch::Contains("select=wall_adhesive:1"));
+    }
+    request.select = {{"wall_adhesive", 0}};
+    const auto bare_wall = openfoam_table2d(fixture.table(request), "p_break_up");
+    // Without adhesion, N = 32 (d_ve = 32^(1/3), also the lower bound of its section [32, 64)) at
+    // the fastest speed: two of four break up (wall_fragments_of).
+    CHECK(bare_wall.find("(" + number_text(std::cbrt(32.0)) + " " + number_text(0.5) + ")") != std::string::npos);
+  }
 }
 
 }  // namespace aerobreak::testing

@@ -91,6 +91,8 @@ TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals n
     check_refused(service, tables + "?colour=red", 400, "colour");
     check_refused(service, tables + "?youngs_modulus=1e10&poisson_ratio=0.3", 400, "density");
     check_refused(service, tables + "?section_ratio=0.5&kind=sections", 400, "section_ratio");
+    check_refused(service, tables + "?select=wall_adhesive", 400, "select");
+    check_refused(service, tables + "?select=wall_adhesive:1", 422, "select");  // this study has one wall: no such column
     // gamma/k_n = 3 gamma (1 - nu^2) / (E d) = 0.0273 for this material; the study has 0.001 only.
     check_refused(service,
                   tables + "?youngs_modulus=1e10&poisson_ratio=0.3&density=1725&surface_energy=2&diameter=2e-8", 422,
