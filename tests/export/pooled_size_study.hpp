@@ -28,11 +28,8 @@ inline std::vector<Fragment> pooled_fragments(int size, std::size_t speed_index,
 }
 
 inline StudySubmission pooled_submission() {
-  StudySubmission study;
-  study.hash = std::string(64, 'p');
-  study.name = "pooled sizes";
-  study.document = {{"name", study.name},
-                    {"axes", {{"impact_speed", {{"values", kPooledSpeeds}}}, {"primaries", {{"values", kPooledSizes}}}}}};
+  auto study = named_study("pooled sizes", 'p');
+  study.document["axes"] = {{"impact_speed", {{"values", kPooledSpeeds}}}, {"primaries", {{"values", kPooledSizes}}}};
   for (const double speed : kPooledSpeeds)
     for (const int size : kPooledSizes)
       for (int r = 0; r < kPooledReplicates; ++r)
@@ -42,17 +39,12 @@ inline StudySubmission pooled_submission() {
 
 // Submits the study and commits every case's result; returns the study's id.
 inline std::int64_t fill_pooled_study(Store& store) {
-  const auto receipt = store.submit_study(pooled_submission());
-  const auto job = store.start_job("pooled sizes test", 1);
-  while (const auto claimed = store.claim_next_case(job)) {
-    const auto& generator = claimed->document.at("cluster").at("generator");
-    const int size = generator.at("primaries");
-    const double speed = claimed->document.at("impact").at("speed");
+  return fill_study(store, pooled_submission(), [](const nlohmann::ordered_json& document) {
+    const auto& generator = document.at("cluster").at("generator");
+    const double speed = document.at("impact").at("speed");
     const auto s = static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
-    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt,
-                                result_of(pooled_fragments(size, s, generator.at("seed")), size), "", 0.1));
-  }
-  return receipt.study_id;
+    return pooled_fragments(generator.at("primaries"), s, generator.at("seed"));
+  });
 }
 
 }  // namespace aerobreak::testing
