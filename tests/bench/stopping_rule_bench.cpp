@@ -71,7 +71,12 @@ std::vector<Decision> trajectory(const BoundarySearchSpec& spec, std::uint64_t s
 bool realised_narrow(const Decision& d, double width) {
   return d.interval() && *d.upper - *d.lower <= width * *d.estimate;
 }
-bool expected_narrow(const Decision& d, double width) { return d.expected_half_width <= std::asinh(width / 2.0); }
+// The expected interval as narrow as the search's own check asks (wanted_half_width, dose units).
+bool expected_narrow(const Decision& d, double width) {
+  if (!d.estimate) return false;
+  const auto asked = speed_search(width, 0);
+  return d.expected_half_width <= wanted_half_width(asked, search_dose(asked, *d.estimate));
+}
 bool narrow(const Decision& d, double width) { return realised_narrow(d, width) && expected_narrow(d, width); }
 
 // A rule: whether a search stops at decision k of its trajectory, for a relative width.
@@ -101,7 +106,7 @@ std::vector<std::pair<std::string, Rule>> rules() {
     return k > 0 && narrow(t[k - 1], w) && t[k].interval();
   };
   const auto the_rule = [last](const std::vector<Decision>& t, std::size_t k, double w) {
-    return last(2)(t, k, w) && t[k].cases >= 80;
+    return last(2)(t, k, w) && t[k].cases >= static_cast<int>(kMinimumSearchResults);  // no undetermined cases here
   };
   return {
       {"narrow once", last(1)},
