@@ -99,13 +99,13 @@ void print_progress(const nlohmann::ordered_json& progress) {
   std::cout << (progress.at("complete").get<bool>() ? " (complete)" : "") << "\n";
 }
 
-// The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
-// with --fit NAME.
 // The study's document as the service stored it (for its units).
 nlohmann::ordered_json study_document(ApiClient& api, const ClientOptions& options) {
   return api.get(study_path(options.study_id)).value("document", nlohmann::ordered_json::object());
 }
 
+// The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
+// with --fit NAME.
 void print_correlations(ApiClient& api, const ClientOptions& options) {
   std::string path = study_path(options.study_id, "/correlations");
   if (!options.fit.empty()) path += "/" + httplib::detail::encode_query_param(options.fit);
