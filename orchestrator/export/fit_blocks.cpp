@@ -1,7 +1,8 @@
 // The fits behind each block of rows of table (b) (docs/EXPORT.md, "kind=fit"): a size the study
 // ran comes from the per-group logistic fits of that size (logit P = b0 + b1 ln v; the fit with the
 // fewest assumptions about that size's data), a size it did not run from the fits pooled over its
-// sizes per group of the other axes (logit P = b0 + b1 ln v + b2 ln N, CorrelationSet::size_pooled).
+// sizes per condition of the other axes (logit P = b0 + b1 ln v + b2 ln N: the correlations'
+// OUTCOME.speed.pooled.cK with ln N its one covariate).
 #include "orchestrator/export/fit_blocks.hpp"
 
 #include <algorithm>
@@ -25,21 +26,25 @@ bool speed_fit(const LogisticFit& fit) {
   return fit.dose == "impact_speed" && (fit.response == Outcome::stick || fit.response == Outcome::break_up);
 }
 
-// One group's own fit (not OUTCOME.speed.pooled, which has no covariate when the study's other axes
-// are none of the known covariates).
-bool per_group_fit(const LogisticFit& fit) {
-  return speed_fit(fit) && fit.covariates.empty() && !fit.common.name.ends_with(".pooled");
-}
+// One group's own fit (a pooled model has its covariates).
+bool per_group_fit(const LogisticFit& fit) { return speed_fit(fit) && fit.covariates.empty(); }
 
 bool usable_per_size(const LogisticFit& fit) {
   return per_group_fit(fit) && fit.common.coefficients.size() == 2 && !fit.common.validity.empty();
 }
 
+std::string size_axis_of(const CorrelationSet& set) { return set.request.size_axis.empty() ? "primaries" : set.request.size_axis; }
+
+// A fit pooled along the size alone (ln N its one covariate), one per condition of the other axes.
+bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
+  return speed_fit(fit) && fit.covariates.size() == 1 && fit.covariates.front().axis == size_axis;
+}
+
 // Firth's estimate under separation is finite, but its Wald band is unreliable (Heinze & Schemper,
 // Statist. Med. 21 (2002) 2409): a pooled fit is used to extrapolate across sizes only when ML converged.
-bool usable_pooled(const LogisticFit& fit) {
-  return speed_fit(fit) && fit.covariates.size() == 1 && fit.common.status == FitStatus::ok &&
-         fit.common.coefficients.size() == 3 && fit.common.validity.size() == 2;
+bool usable_pooled(const LogisticFit& fit, const std::string& size_axis) {
+  return pooled_over_size(fit, size_axis) && fit.common.status == FitStatus::ok && fit.common.coefficients.size() == 3 &&
+         fit.common.validity.size() == 2;
 }
 
 template <typename Usable>
@@ -55,8 +60,6 @@ std::vector<FitPair> fit_pairs(const std::vector<LogisticFit>& fits, Usable usab
   return pairs;
 }
 
-std::string size_axis_of(const CorrelationSet& set) { return set.request.size_axis.empty() ? "primaries" : set.request.size_axis; }
-
 // A group's axes without N: the group of the fits pooled over the sizes.
 std::string other_axes(nlohmann::ordered_json group, const std::string& size_axis) {
   group.erase(size_axis);
@@ -70,12 +73,13 @@ FitBlock block_of(const FitPair& pair, const std::string& size_axis, FitModel mo
 // Why clusters of `size` primaries have no fit in the group `key` of the other axes.
 std::string no_pooled_fit(const CorrelationSet& set, const std::string& key, double size) {
   std::string why = "clusters of " + number_text(size) + " primaries were not run";
-  if (set.request.size_axis.empty())
+  const std::string size_axis = size_axis_of(set);
+  if (std::none_of(set.logistic.begin(), set.logistic.end(), [&](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
     return why + ", and the study does not sweep the cluster size over several values: a size it did not run needs a fit pooled "
                  "over several sizes (logit P = b0 + b1 ln v + b2 ln N)";
-  why += "; the fit pooled over the study's sizes (logit P = b0 + b1 ln v + b2 ln N) cannot be used for the group " + key + ":";
-  for (const auto& fit : set.size_pooled)
-    if (speed_fit(fit) && fit.common.group.dump() == key)
+  why += "; the fit pooled over the study's sizes (logit P = b0 + b1 ln v + b2 ln N) cannot be used for the condition " + key + ":";
+  for (const auto& fit : set.logistic)
+    if (pooled_over_size(fit, size_axis) && fit.common.group.dump() == key)
       why += " " + fit.common.name + " " + std::string(to_string(fit.common.status)) +
              (fit.common.detail.empty() ? "" : " (" + fit.common.detail + ")") + ";";
   return why;
@@ -95,7 +99,8 @@ std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<
     if (per_group_fit(fit))
       run.insert({other_axes(fit.common.group, size_axis), key_value(fit.common.group.value(size_axis, kMissing))});
   std::map<std::string, FitPair> pooled;
-  for (auto& pair : fit_pairs(set.size_pooled, usable_pooled)) pooled.emplace(pair.group.dump(), pair);
+  const auto usable = [&size_axis](const LogisticFit& fit) { return usable_pooled(fit, size_axis); };
+  for (auto& pair : fit_pairs(set.logistic, usable)) pooled.emplace(pair.group.dump(), pair);
   std::vector<std::string> combinations;
   for (const auto& pair : per_size)
     if (std::find(combinations.begin(), combinations.end(), other_axes(pair.group, size_axis)) == combinations.end())

@@ -84,6 +84,9 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit) {
   line["dose"] = fit.dose;
   line["method"] = fit.method;
   line["coefficients"] = std::vector<double>(fit.common.coefficients.data(), fit.common.coefficients.data() + fit.common.coefficients.size());
+  nlohmann::ordered_json pooled_over = nlohmann::ordered_json::array();
+  for (const auto& covariate : fit.covariates) pooled_over.push_back(covariate.axis);
+  line["pooled_over"] = pooled_over;
   // A pooled model's critical values (one set per group's covariates) are in its full document only.
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
   for (const auto& value : fit.critical)

@@ -31,9 +31,8 @@ CorrelationSet compute_correlations(const CaseOutcomeTable& table, const Correla
   set.grid_points = summarise_grid_points(table);
   const auto groups = group_cases(table, request.speed_axis);
   set.logistic = fit_logistic_models(table, groups, request);
-  set.size_pooled = fit_size_pooled_models(table, request);
   set.multinomial = fit_multinomial_models(table, groups, request);
-  set.scaling = fit_scaling_laws(set.logistic, request);
+  set.scaling = fit_scaling_laws(set.logistic, condition_groups(table, request), request);
   set.retained_fraction = fit_retained_fractions(table, groups, request);
   set.fragment_sizes = fit_fragment_distributions(table);
   set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

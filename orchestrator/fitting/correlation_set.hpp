@@ -165,9 +165,6 @@ struct CorrelationSet {
   CorrelationRequest request;
   std::vector<GridPointSummary> grid_points;
   std::vector<LogisticFit> logistic;
-  // OUTCOME.speed.sizes.GROUP (only with request.size_axis; not served as documents): logit P =
-  // b0 + b1 log v + b2 log N over all sizes of one group of the axes other than speed and N.
-  std::vector<LogisticFit> size_pooled;
   std::vector<MultinomialFit> multinomial;
   std::vector<ScalingFit> scaling;
   std::vector<RetainedFractionFit> retained_fraction;

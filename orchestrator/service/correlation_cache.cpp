@@ -80,6 +80,7 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
   const auto axes = study_axes(study);
   CorrelationRequest request;
   request.speed_axis = axis_setting(axes, kSpeedPointer);
+  request.size_axis = axis_setting(axes, kPrimariesPointer);
   if (covariates) {
     std::set<std::string> seen;
     for (const auto& name : *covariates) {
@@ -88,24 +89,19 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
     }
     return request;
   }
-  for (const auto& known : kKnownCovariates) {
-    const std::string axis = axis_setting(axes, known.pointer);
-    if (!axis.empty() && sweeps_several(study, axis)) request.covariates.push_back({axis, known.logarithmic});
-  }
-  return request;
-}
-
-CorrelationRequest export_correlation_request(const StudyRecord& study) {
-  CorrelationRequest request = correlation_request(study, std::nullopt);
-  const std::string size_axis = axis_setting(study_axes(study), kPrimariesPointer);
-  if (!size_axis.empty() && sweeps_several(study, size_axis)) request.size_axis = size_axis;
+  // By default the pooled models model the size only: every other axis splits them.
+  if (!request.size_axis.empty() && sweeps_several(study, request.size_axis)) request.covariates.push_back({request.size_axis, true});
   return request;
 }
 
 std::string request_key(const CorrelationRequest& request) {
   nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
   for (const auto& covariate : request.covariates) covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});
-  return nlohmann::ordered_json{{"covariates", covariates}}.dump();
+  return nlohmann::ordered_json{{"speed_axis", request.speed_axis},
+                                {"size_axis", request.size_axis},
+                                {"covariates", covariates},
+                                {"levels", request.levels}}
+      .dump();
 }
 
 CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {

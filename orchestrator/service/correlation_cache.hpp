@@ -23,18 +23,16 @@ struct CorrelationRequestError : std::runtime_error {
   bool no_results;
 };
 
-// The request of a study's correlations: its speed axis and the pooled models' covariates, given by
-// name (gamma_over_kn, N or primaries, Df or fractal_dimension, angle, or any axis name of the
-// study); none given: every one of those four that the study sweeps over more than one value.
-// gamma/k_n and N enter as logarithms, the others as they are.
+// The request of a study's correlations: its speed and size axes and the axes the pooled models
+// model (their covariates), given by name (gamma_over_kn, N or primaries, Df or fractal_dimension,
+// angle, or any axis name of the study); none given: the size N when the study sweeps it over more
+// than one value, so that a pooled model pools along the size only and every other axis (wall,
+// gamma/k_n, generator, ...) splits it. gamma/k_n and N enter as logarithms, the others as they are.
+// The lookup-table export uses the default.
 CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates);
 
-// The request of the lookup-table export: correlation_request's default, with the size axis set
-// when the study sweeps N over several values, so that the fits pooled over the sizes
-// (CorrelationSet::size_pooled) are made too.
-CorrelationRequest export_correlation_request(const StudyRecord& study);
-
-// The canonical text of a request: the key its fits are stored under.
+// The canonical text of a whole request (speed and size axes, covariates, levels): the key its fits
+// are stored and cached under, so that two different requests never share an answer.
 std::string request_key(const CorrelationRequest& request);
 
 // A study's outcomes with each case's N filled in (from the primaries axis or the study's base).

@@ -234,7 +234,7 @@ test('the correlations service: fitted curves with bands over the points, critic
     await openStudy(page);
     const summary = await service.get(`/api/studies/${studyId}/correlations`);
     const groupFits = summary.fits.filter((fit) => fit.kind === 'logistic' && fit.response === 'break-up' &&
-      fit.dose === 'impact_speed' && !fit.name.endsWith('.pooled'));
+      fit.dose === 'impact_speed' && fit.pooled_over.length === 0);
     assert.equal(groupFits.length, 4, 'one fit per N and gamma/k_n');
     const documents = await Promise.all(groupFits.map((fit) => service.get(`/api/studies/${studyId}/correlations/${fit.name}`)));
     const withCurves = documents.filter((document) => document.curves.length > 0);

@@ -77,6 +77,33 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   }
 }
 
+// Two different requests never share a stored or cached answer: the key covers the levels, the size
+// and speed axes as well as the covariates (once it held the covariates only, and a request for
+// other levels was answered with the default levels' fits).
+TEST_CASE("The fits' cache keys on the whole request", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_request_key");
+  Store store(file.path());
+  const auto id = finished_correlation_study(store, "keys", 4, 2);
+  const StudyRecord study = *store.study(id);
+  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  CHECK(request.size_axis == "primaries");
+  CorrelationCache cache(store);
+  const auto first = cache.current(study, request);
+  CorrelationRequest other_levels = request;
+  other_levels.levels = {0.2, 0.5, 0.8};
+  const auto second = cache.current(study, other_levels);
+  CHECK(second->set_id != first->set_id);
+  CHECK(nlohmann::json::parse(second->summary).at("request").at("levels") == nlohmann::json{0.2, 0.5, 0.8});
+  const auto g1 = nlohmann::json::parse(*store.stored_fit(second->set_id, "break-up.speed.g1"));
+  CHECK(g1.at("critical")[0].at("level") == 0.2);
+  CHECK(cache.current(study, request)->set_id == first->set_id);  // each request keeps its own set
+  for (const auto& change : {&CorrelationRequest::size_axis, &CorrelationRequest::speed_axis}) {
+    CorrelationRequest changed = request;
+    changed.*change = "another_axis";
+    CHECK(request_key(changed) != request_key(request));
+  }
+}
+
 TEST_CASE("Correlation requests that do not fit the study are refused with the reason", "[store][correlations]") {
   TemporaryStoreFile file("correlation_requests");
   Store store(file.path());

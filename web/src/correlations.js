@@ -26,8 +26,9 @@ export async function loadCorrelationSummary(studyId) {
 const groupMatches = (group, gridPoint) => Object.entries(group).every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
 // Whether the group lies in the slice ({axis: valueKey}) the plots show.
 const inSlice = (group, slice) => Object.entries(slice).every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
+// A group's own fit: a pooled model names the axes it pools along.
 const isGroupFit = (fit, outcome, dose) => fit.kind === 'logistic' && fit.response === outcome && fit.dose === dose &&
-  !fit.name.endsWith('.pooled');
+  fit.pooled_over.length === 0;
 
 export class Correlations {
   constructor(studyId, summary) {
@@ -83,9 +84,12 @@ export class Correlations {
     return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
   }
 
-  // The scaling fit of v50 for `outcome` (exponents per axis), or null.
-  scaling(outcome) {
-    return this.summary.fits.find((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5) || null;
+  // The scaling fit of v50 for `outcome` (exponents per axis) of the one condition in `slice`, or null
+  // (one per condition of the axes it does not model: a slice of several would mix them).
+  scaling(outcome, slice) {
+    const fits = this.summary.fits.filter((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5 &&
+      inSlice(fit.group, slice));
+    return fits.length === 1 ? fits[0] : null;
   }
 }
 

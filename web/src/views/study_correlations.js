@@ -36,7 +36,7 @@ export function createCorrelationsPanel() {
     const fits = correlations.groupFits(outcome, xAxis, slice);
     const shownAxes = fits.length ? Object.keys(fits[0].group).filter((axis) => !(axis in slice)) : [];
     replaceChildren(body, fits.length === 0 ? el('p', { class: 'note' }, `No fit of ${outcome} along ${axisLabel(xAxis)}.`)
-      : table(criticalColumns(shownAxes), fits, { id: 'correlations-table' }), scalingText(correlations.scaling(outcome)));
+      : table(criticalColumns(shownAxes), fits, { id: 'correlations-table' }), scalingText(correlations.scaling(outcome, slice)));
   }
   return { node, draw };
 }
