@@ -280,7 +280,7 @@ struct Moments {
 struct GridPointStatistics {
   GridPointOutcomes outcomes;
   Moments retained_mass_fraction;
-  Moments restitution;
+  Moments restitution;  // of the bounces only (count: how many)
   Moments fragment_count;
   Moments largest_fragment_share;
   Moments damage_ratio;

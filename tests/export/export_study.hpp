@@ -62,7 +62,9 @@ inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, 
             {"damage_ratio", 1.0 - retained},
             {"largest_fragment_share", 1.0},
             {"fragment_count", fragments.size()},
-            {"restitution", {{"normal", 0.1}}}}},
+            // the largest fragment's restitution: of a bounce, and of a stick or break-up (negative on
+            // the wall), which the tables must not average in
+            {"restitution", {{"normal", outcome_of(fragments, size) == "bounce" ? 0.2 : -0.3}}}}},
           {"validity", {{"small_strain", true}}},
           {"fragments", {{"list", list}}}};
 }

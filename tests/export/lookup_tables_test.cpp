@@ -91,7 +91,13 @@ TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments fro
   CHECK(at(table, "p_bounce", fast) == 0.25);
   CHECK(at(table, "reentrained_m2", fast) == Approx((3 * (4 + 1 + 1) + 31 * 31) / 4.0));
   CHECK(at(table, "reentrained_m3", fast) == Approx((3 * (8 + 1 + 1) + 31.0 * 31 * 31) / 4.0));
-  CHECK(std::isnan(at(table, "fractal_dimension", fast)));
+  // Restitution over the bounces only, with their count (the one bounce: 0.2; the break-ups' -0.3
+  // left out); missing where nothing bounced.
+  CHECK(at(table, "restitution", fast) == Approx(0.2).epsilon(1e-12));
+  CHECK(at(table, "restitution_bounces", fast) == 1.0);
+  CHECK(std::isnan(at(table, "restitution_sd", fast)));
+  CHECK(std::isnan(at(table, "restitution", row)));
+  CHECK(at(table, "restitution_bounces", row) == 0.0);
 }
 
 TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {

@@ -298,7 +298,7 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
   CHECK(i == parts.size());
   CHECK(rows == kSpeeds.size());
 
-  const auto csv = openfoam_csv(table, "restitution");
+  const auto csv = openfoam_csv(table, "retained_mass_fraction");
   std::istringstream lines(csv);
   std::string line;
   std::getline(lines, line);
@@ -313,7 +313,7 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
     previous = x, ++data_rows;
   }
   CHECK(data_rows == kSpeeds.size());
-  const auto dictionary = openfoam_dictionary(table, "restitution", "r.csv");
+  const auto dictionary = openfoam_dictionary(table, "retained_mass_fraction", "r.csv");
   CHECK(std::count(dictionary.begin(), dictionary.end(), '{') == static_cast<long>(kSizes.size()));
   CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size()) + ");") != std::string::npos);
   CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size() + 1) + ");") == std::string::npos);
