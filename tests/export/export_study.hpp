@@ -148,6 +148,9 @@ inline std::vector<Fragment> wall_fragments_of(bool adhesive, int size, std::siz
 
 inline std::int64_t fill_wall_study(Store& store) {
   auto study = named_study("walls", 'w');
+  study.document["axes"] = {{"impact_speed", {{"values", kSpeeds}}},
+                            {"primaries", {{"values", kSizes}}},
+                            {"/wall/adhesive", {{"values", {true, false}}}}};
   for (const double speed : kSpeeds)
     for (const int size : kSizes)
       for (const bool adhesive : {true, false})

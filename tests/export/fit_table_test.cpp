@@ -10,6 +10,7 @@
 #include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/logistic_models.hpp"
+#include "orchestrator/fitting/proportion.hpp"
 #include "orchestrator/service/correlation_cache.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/fitting/synthetic_study.hpp"
@@ -64,6 +65,7 @@ Band band_by_hand(const FitCommon& fit, double speed, double size) {
 
 void check_row(const LookupTable& table, std::size_t row, const char* outcome, const Band& expected) {
   const std::string name = std::string("p_") + outcome;
+  CHECK(at(table, (name + "_status").c_str(), row) == 0.0);  // fitted by maximum likelihood
   CHECK(at(table, name.c_str(), row) == Approx(expected.p).epsilon(1e-9));
   CHECK(at(table, (name + "_lo").c_str(), row) == Approx(expected.lower).epsilon(1e-9));
   CHECK(at(table, (name + "_hi").c_str(), row) == Approx(expected.upper).epsilon(1e-9));
@@ -91,6 +93,7 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     CHECK(at(table, "d_ve", row) == Approx(std::cbrt(size)).epsilon(1e-12));
     if (size == 32) {  // run: the size's own fit (group g1 is N = 32)
       CHECK(at(table, "model", row) == 0.0);
+      check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.g1").common, speed, size));
       check_row(table, row, "stick", band_by_hand(fit_named(fixture.fits.logistic, "stick.speed.g1").common, speed, size));
       check_row(table, row, "break_up", band_by_hand(fit_named(fixture.fits.logistic, "break-up.speed.g1").common, speed, size));
       CHECK(at(table, "inside_validity", row) == 1.0);
@@ -98,6 +101,7 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     }
     CHECK(at(table, "model", row) == 1.0);
     check_row(table, row, "stick", band_by_hand(stick, speed, size));
+    check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.pooled.c1").common, speed, size));
     check_row(table, row, "break_up", band_by_hand(break_up, speed, size));
     // Between the sizes run (32 and 128): interpolation in ln N, inside the box; 16 and 512 outside.
     CHECK(at(table, "inside_validity", row) == (size == 64 ? 1.0 : 0.0));
@@ -178,6 +182,47 @@ TEST_CASE("Fit table at sizes not run: one pooled fit per condition of the other
     CHECK(at(table, "p_break_up", row) == Approx(band_by_hand(pooled.common, 0.05, 48).p).epsilon(1e-9));
   }
   CHECK(at(table, "p_break_up", 0) != Approx(at(table, "p_break_up", 1)).epsilon(1e-3));
+}
+
+// The two-wall study of export_study.hpp: nothing sticks on the wall without adhesion (12 determined
+// results per size there), so its stick fits have no transition.
+TEST_CASE("Fit table: every outcome with its band and status; no transition gives the observed 0 with its Wilson band",
+          "[export][fit]") {
+  ScratchDirectory directory("fit_table_walls");
+  Store store(directory.path() / "store.sqlite");
+  const auto study = fill_wall_study(store);
+  const auto fits = study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
+  ExportRequest request;
+  request.kind = TableKind::fit;
+  request.speeds = {0.01, 0.02, 0.05};
+  const auto table = study_lookup_table(store, study, request, &fits);
+  REQUIRE(table.rows() == 12);  // 2 sizes x 2 walls x 3 speeds
+  const auto no_stick = *wilson_interval(0, 12);
+  std::size_t without_adhesion = 0;
+  for (std::size_t row = 0; row < table.rows(); ++row)
+    for (const std::string outcome : {"p_stick", "p_bounce", "p_break_up"}) {
+      INFO("row " << row << " " << outcome);
+      const double status = at(table, (outcome + "_status").c_str(), row);
+      const double p = at(table, outcome.c_str(), row), lo = at(table, (outcome + "_lo").c_str(), row),
+                   hi = at(table, (outcome + "_hi").c_str(), row);
+      REQUIRE((status == 0.0 || status == 1.0 || status == 2.0 || status == 3.0));
+      if (status == 3.0) {
+        CHECK(std::isnan(p));
+        continue;
+      }
+      CHECK(lo <= p);
+      CHECK(p <= hi);
+      if (status == 2.0) CHECK((p == 0.0 || p == 1.0));
+      if (outcome == "p_stick" && at(table, "wall_adhesive", row) == 0.0) {
+        ++without_adhesion;
+        CHECK(status == 2.0);
+        CHECK(p == 0.0);
+        CHECK(lo == 0.0);
+        CHECK(hi == Approx(no_stick.upper).epsilon(1e-12));
+      }
+    }
+  CHECK(without_adhesion == 6);
+  CHECK(table.metadata.at("fit_models").at("status").get<std::string>().find("2 = no transition") != std::string::npos);
 }
 
 TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and the range (aerobreak export)", "[export][fit]") {
