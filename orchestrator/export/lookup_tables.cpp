@@ -65,6 +65,18 @@ nlohmann::ordered_json validity(const LookupTable& table, const StudyExportData&
   return json;
 }
 
+// The validity ranges with the speed's also in m/s when the table has SI columns: each range in the
+// unit of the column a reader takes x from (the MELCOR and OpenFOAM adapters read m/s then).
+nlohmann::ordered_json with_si_speed(const nlohmann::ordered_json& validity, const PhysicalScaling& scaling) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : validity.items()) {
+    out[key] = value;
+    if (key == "impact_speed" && value.is_array())
+      out["impact_speed_m_s"] = {value[0].get<double>() * scaling.speed_unit(), value[1].get<double>() * scaling.speed_unit()};
+  }
+  return out;
+}
+
 double material_gamma_over_kn(const ExportMaterial& material) {
   return PhysicalScaling{material.material, material.diameter, 1.0}.reduced().surface_energy;
 }
@@ -132,7 +144,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   if (request.material) table.metadata["material"] = material_json(*request.material);
   else if (scalings) table.metadata["material"] = "the study's own (physical units)";
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
-  table.metadata["validity"] = validity(table, data);
+  table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
   table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
   return table;

@@ -26,8 +26,12 @@ nlohmann::ordered_json table_json(const LookupTable& table);
 // An HDF5 file image: one dataset per column (attributes units, description, role), the metadata
 // as attributes of the root group.
 std::string hdf5_image(const LookupTable& table);
-// MELCOR 2 tabular functions (TF_INPUT / TF_ID / TF_TAB): one function per quantity and impact
-// condition, x = impact speed (m/s when SI, else d/tau), ascending.
+// MELCOR 2 tabular functions (TF_INPUT / TF_ID / TF_TAB): one function per quantity (every
+// outcome's probability and its 95 % interval ends, the restitution, the retained mass, the
+// sectional matrix) and impact condition, x = impact speed (m/s when SI, else d/tau), ascending;
+// named S<study><kind><quantity><bound><condition> (docs/EXPORT.md), unique across studies, table
+// kinds, quantities and conditions, at most kMelcorNameLength characters (ExportError 422 beyond).
+inline constexpr std::size_t kMelcorNameLength = 16;
 std::string melcor_text(const LookupTable& table);
 // OpenFOAM interpolation2DTable of `quantity` over (impact speed, volume-equivalent diameter), the
 // CSV data of a Function1 csvFile (speed, then one column per size), or the Function1 entries
