@@ -21,8 +21,8 @@ struct ExportOptions {
 
 // The options named as the REST query parameters (with '-' for '_').
 constexpr const char* kParameters[][2] = {
-    {"format", "csv | dat | json | hdf5 | melcor | openfoam [csv]"},
-    {"kind", "grid | sections | fit [grid]"},
+    {"format", "csv | dat | json | hdf5 | melcor | openfoam; for kind correlations: fortran | c | json [csv]"},
+    {"kind", "grid | sections | fit | correlations (the fits as code) [grid]"},
     {"youngs_modulus", "material: Young's modulus E, Pa (with the four below: SI columns)"},
     {"poisson_ratio", "material: Poisson ratio nu"},
     {"density", "material: density rho, kg/m^3"},
@@ -64,7 +64,7 @@ int run_export(const ExportOptions& options) {
     const auto request = parse_export_request({options.parameters.begin(), options.parameters.end()});
     const auto record = store.study(study);
     if (!record) throw ExportError(404, "study", "no study " + std::to_string(study) + " in " + options.store);
-    const auto rendered = render_table(export_lookup_table(store, *record, request), request, study);
+    const auto rendered = export_file(store, *record, request);
     if (options.output == "-") {
       std::cout << rendered.content;
       return 0;
@@ -91,25 +91,24 @@ std::vector<std::filesystem::path> write_default_tables(Store& store, std::int64
   const std::map<TableKind, std::vector<TableFormat>> formats{
       {TableKind::grid, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}},
       {TableKind::sections, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5}},
-      {TableKind::fit, {TableFormat::csv, TableFormat::dat}}};
+      {TableKind::fit, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}},
+      {TableKind::correlations, {TableFormat::fortran, TableFormat::c, TableFormat::json}}};
   std::vector<std::filesystem::path> written;
-  for (const auto& [kind, kind_formats] : formats) {
-    ExportRequest request;
-    request.kind = kind;
-    LookupTable table;
-    try {
-      table = export_lookup_table(store, *study, request);
-    } catch (const ExportError& error) {
-      if (kind == TableKind::fit) continue;  // a study without a fit in impact speed has no table (b)
-      throw;
-    }
+  for (const auto& [kind, kind_formats] : formats)
     for (const auto format : kind_formats) {
+      ExportRequest request;
+      request.kind = kind;
       request.format = format;
-      const auto rendered = render_table(table, request, study_id);
+      RenderedTable rendered;
+      try {
+        rendered = export_file(store, *study, request);
+      } catch (const ExportError& error) {
+        if (kind == TableKind::fit || kind == TableKind::correlations) break;  // no fit in impact speed: no table (b), no code
+        throw;
+      }
       written.push_back(directory / rendered.file_name);
       write_file(written.back(), rendered.content);
     }
-  }
   return written;
 }
 

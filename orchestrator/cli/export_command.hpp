@@ -15,10 +15,10 @@ namespace aerobreak {
 // parameter).
 void add_export_command(CLI::App& app, int& exit_code);
 
-// The default set of tables of a study written into `directory` (grid as CSV, .dat, JSON, HDF5 and
-// MELCOR tabular functions, sections as CSV, .dat, JSON and HDF5, fit as CSV and .dat when the
-// study has fits in impact speed); returns the files written. What `aerobreak run` leaves after a
-// study.
+// Writes a study's lookup tables into `directory` (docs/EXPORT.md): grid and fit (when the study
+// has fits in impact speed) as CSV, .dat, JSON, HDF5 and MELCOR tabular functions, sections as CSV,
+// .dat, JSON and HDF5, and the fitted correlations as a Fortran module, a C header and JSON; returns
+// the files written. What `aerobreak run` leaves after a study.
 std::vector<std::filesystem::path> write_default_tables(Store& store, std::int64_t study_id,
                                                         const std::filesystem::path& directory);
 

@@ -9,8 +9,9 @@
 
 namespace aerobreak {
 
-enum class TableKind { grid, fit, sections };
-enum class TableFormat { csv, dat, json, hdf5, melcor, openfoam };
+// kind=correlations is no table: the fitted correlations as code (formats json, fortran, c).
+enum class TableKind { grid, fit, sections, correlations };
+enum class TableFormat { csv, dat, json, hdf5, melcor, openfoam, fortran, c };
 
 // A material given at export (docs/EXPORT.md, "Units"): SI columns for it, provided its gamma/k_n
 // lies in the study's range.

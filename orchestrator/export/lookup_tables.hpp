@@ -4,6 +4,7 @@
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
 #include "orchestrator/export/study_export_data.hpp"
+#include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/store/store.hpp"
 
 namespace aerobreak {
@@ -48,5 +49,9 @@ void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scal
 // cannot serve.
 LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request,
                                const CorrelationSet* fits = nullptr);
+
+// kind=correlations: the study's fits as code (format fortran or c) or its JSON description
+// (correlation_code.hpp), headed by the study's provenance and units.
+RenderedTable correlation_code_file(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet& fits);
 
 }  // namespace aerobreak

@@ -75,7 +75,7 @@ std::string legend(const LookupTable& table, const std::vector<ConditionRows>& c
                      "mass to section kk>\n!   <_ value, L 95 % lower end, U 95 % upper end><condition number, below>\n";
   text += "! x: impact speed [" + adapter_speed(table).unit + "]; a function is left out where its quantity has no value\n";
   for (std::size_t c = 0; c < conditions.size(); ++c) {
-    char number[8];
+    char number[24];
     std::snprintf(number, sizeof number, "%03zu", c + 1);
     text += "! condition " + std::string(number) + ": " + condition_text(conditions[c]) + "\n";
   }

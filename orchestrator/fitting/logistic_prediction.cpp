@@ -31,7 +31,9 @@ bool inside_validity(const LogisticFit& fit, double dose, const Eigen::VectorXd&
       continue;
     }
     for (std::size_t k = 0; k < fit.covariates.size(); ++k)
-      if (fit.covariates[k].axis == range.input && !in_range(range, covariates[static_cast<Eigen::Index>(k)])) return false;
+      if (fit.covariates[k].axis == range.input &&
+          (static_cast<Eigen::Index>(k) >= covariates.size() || !in_range(range, covariates[static_cast<Eigen::Index>(k)])))
+        return false;
   }
   return true;
 }

@@ -22,8 +22,7 @@ void send_table(const httplib::Request& request, httplib::Response& response, St
   const auto study = existing_study(store, path_id(request));
   try {
     const auto export_request = parse_export_request(query_parameters(request));
-    const auto table = export_lookup_table(store, study, export_request);
-    auto rendered = render_table(table, export_request, study.id);
+    auto rendered = export_file(store, study, export_request);
     response.set_header("Content-Disposition", "attachment; filename=\"" + rendered.file_name + "\"");
     response.set_content(std::move(rendered.content), rendered.content_type);
   } catch (const ExportError& error) {
