@@ -35,6 +35,8 @@ constexpr const char* kParameters[][2] = {
     {"layout", "openfoam: table2d | csv | dict [table2d]"},
     {"speeds", "fit: comma-separated impact speeds"},
     {"sizes", "fit: comma-separated cluster sizes (primaries)"},
+    {"diameters", "fit: comma-separated cluster diameters instead of sizes (m with SI, else d)"},
+    {"diameter_type", "fit: mobility | volume | aerodynamic (m, SI only) [mobility]"},
     {"strict", "fit: true refuses rows outside the fit's validity box [false]"},
     {"select", "only the rows of one condition: NAME:VALUE[,NAME:VALUE], NAME an input column (e.g. wall_adhesive:1)"},
 };

@@ -109,6 +109,12 @@ void apply(ExportRequest& request, const std::string& name, const std::string& v
   } else if (name == "gamma_over_kn") request.gamma_over_kn = positive(name, value);
   else if (name == "speeds") request.speeds = positive_list(name, value);
   else if (name == "sizes") request.sizes = positive_list(name, value);
+  else if (name == "diameters") request.diameters = positive_list(name, value);
+  else if (name == "diameter_type")
+    request.diameter_type = choice(std::map<std::string, DiameterType>{{"mobility", DiameterType::mobility},
+                                                                       {"volume", DiameterType::volume},
+                                                                       {"aerodynamic", DiameterType::aerodynamic}},
+                                   name, value);
   else if (name == "strict") request.strict = flag(name, value);
   else if (name == "select") request.select = selections(name, value);
   else throw ExportError(400, name, "unknown parameter '" + name + "'");
@@ -135,6 +141,10 @@ ExportRequest parse_export_request(const std::vector<std::pair<std::string, std:
     throw ExportError(400, "format", "formats fortran and c are the code of kind=correlations");
   if (request.kind == TableKind::correlations && !code && request.format != TableFormat::json)
     throw ExportError(400, "format", "kind=correlations is written as fortran, c or json (got format " + to_string(request.format) + ")");
+  if (!request.diameters.empty() && !request.sizes.empty())
+    throw ExportError(400, "diameters", "give sizes as primaries (sizes) or as diameters (diameters), not both");
+  if (!request.diameters.empty() && request.kind != TableKind::fit)
+    throw ExportError(400, "diameters", "diameters are evaluated from the fits: kind=fit");
   if (request.material && request.gamma_over_kn)
     throw ExportError(400, "gamma_over_kn", "give either a material or gamma_over_kn, not both (a material fixes gamma/k_n)");
   return request;

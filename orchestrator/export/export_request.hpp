@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/material.hpp"
+#include "orchestrator/export/equivalent_diameters.hpp"
 
 namespace aerobreak {
 
@@ -33,6 +34,10 @@ struct ExportRequest {
   // kind=fit: the grid to evaluate (absent: the fit's own axes) and whether to refuse extrapolation.
   std::vector<double> speeds;
   std::vector<double> sizes;
+  // kind=fit: sizes as diameters instead (m when the table has SI, else d; aerodynamic in m only),
+  // each turned into N by the relations of docs/EXPORT.md section 2.
+  std::vector<double> diameters;
+  DiameterType diameter_type = DiameterType::mobility;
   bool strict = false;
   // select=NAME:VALUE[,NAME:VALUE]: only the rows whose input column NAME equals VALUE (a boolean
   // axis as 1 or 0), e.g. one wall of a study that sweeps /wall/adhesive.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/core/version.hpp"
+#include "orchestrator/export/equivalent_diameters.hpp"
 
 namespace aerobreak {
 namespace {
@@ -87,19 +88,40 @@ nlohmann::ordered_json material_json(const ExportMaterial& material) {
           {"diameter_m", material.diameter},                       {"gamma_over_kn", material_gamma_over_kn(material)}};
 }
 
-// SI for every row from one scaling (the export's material), or from the study's own material
-// (physical study): nullopt when the rows have none.
-std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& table, const StudyExportData& data,
-                                                         const ExportRequest& request) {
-  if (request.material)
-    return std::vector<PhysicalScaling>(table.rows(), PhysicalScaling{request.material->material, request.material->diameter, 1.0});
+// The SI of the tables: the export's material, or the study's own (physical study) when every grid
+// point has the same; nullopt without.
+std::optional<PhysicalScaling> export_scaling(const StudyExportData& data, const ExportRequest& request) {
+  if (request.material) return PhysicalScaling{request.material->material, request.material->diameter, 1.0};
   if (data.inputs.empty() || !data.inputs.front().scaling) return std::nullopt;
   const auto& first = *data.inputs.front().scaling;
   for (const auto& inputs : data.inputs)
     if (!inputs.scaling || inputs.scaling->diameter != first.diameter ||
         inputs.scaling->speed_unit() != first.speed_unit())
       return std::nullopt;  // a study sweeping the material: SI only with an export material
-  return std::vector<PhysicalScaling>(table.rows(), first);
+  return first;
+}
+
+// SI for every row from the export's scaling: nullopt when the rows have none.
+std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& table, const StudyExportData& data,
+                                                         const ExportRequest& request) {
+  const auto scaling = export_scaling(data, request);
+  if (!scaling) return std::nullopt;
+  return std::vector<PhysicalScaling>(table.rows(), *scaling);
+}
+
+// kind=fit with diameters: the request with their N as sizes (docs/EXPORT.md section 2); a diameter
+// in m when the table has SI, else in d; an aerodynamic one needs SI.
+ExportRequest with_sizes_of_diameters(const ExportRequest& request, const std::optional<PhysicalScaling>& scaling) {
+  ExportRequest asked = request;
+  if (request.diameters.empty()) return asked;
+  if (request.diameter_type == DiameterType::aerodynamic && !scaling)
+    throw ExportError(422, "diameter_type", "an aerodynamic diameter needs the primaries' diameter and density: a physical "
+                                            "study or a material given at export");
+  for (const double diameter : request.diameters)
+    asked.sizes.push_back(request.diameter_type == DiameterType::aerodynamic
+                              ? primaries_of_diameter(DiameterType::aerodynamic, diameter, scaling->diameter, scaling->material.density)
+                              : primaries_of_diameter(request.diameter_type, scaling ? diameter / scaling->diameter : diameter));
+  return asked;
 }
 
 // d/tau in the study's speed unit: a physical study's speeds (and its fits' doses) are in m/s.
@@ -126,7 +148,8 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   const auto data = read_study_export_data(store, study_id);
   LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
                       : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
-                                                            : fit_table(*fits, request, study_speed_unit(data));
+                                                            : fit_table(*fits, with_sizes_of_diameters(request, export_scaling(data, request)),
+                                                                        study_speed_unit(data));
   add_constant_gamma(table, data);
   if (!request.select.empty()) table = selected_rows(table, request.select);
   if (request.material)

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
@@ -268,6 +269,57 @@ TEST_CASE("Fit table: a size not run is refused with the reason when no pooled f
     CHECK(error.field == "sizes");
     CHECK(std::string(error.what()).find("separation") != std::string::npos);
   }
+}
+
+}  // namespace aerobreak::testing
+
+namespace aerobreak::testing {
+
+// The equivalent diameters of docs/EXPORT.md section 2 at limits with known answers: a sphere (N = 1)
+// much smaller than the mean free path settles like a unit-density sphere of rho_p/rho_0 times its
+// diameter (Cc proportional to 1/d), a much larger one like sqrt(rho_p/rho_0) times (Cc -> 1); each
+// diameter turned back into N gives N.
+TEST_CASE("Equivalent diameters: the aerodynamic limits of a sphere, and N back from every diameter", "[export][fit][diameters]") {
+  const double density = 1725.0;
+  CHECK(aerodynamic_diameter(1.0, 1e-9, density) == Approx(1e-9 * density / kUnitDensity).epsilon(2e-3));
+  CHECK(aerodynamic_diameter(1.0, 1e-4, density) == Approx(1e-4 * std::sqrt(density / kUnitDensity)).epsilon(2e-3));
+  for (const double n : {1.0, 32.0, 4675.0, 1e6}) {
+    INFO("N = " << n);
+    CHECK(primaries_of_diameter(DiameterType::volume, volume_equivalent_diameter(n)) == Approx(n).epsilon(1e-12));
+    CHECK(primaries_of_diameter(DiameterType::mobility, mobility_equivalent_diameter(n)) == Approx(n).epsilon(1e-12));
+    CHECK(primaries_of_diameter(DiameterType::aerodynamic, aerodynamic_diameter(n, 2e-8, density), 2e-8, density) ==
+          Approx(n).epsilon(1e-9));
+  }
+  // A fractal aggregate settles slower than its volume-equivalent sphere: d_ae below rho-scaled d_ve.
+  CHECK(aerodynamic_diameter(4675.0, 2e-8, density) < 2e-8 * std::cbrt(4675.0) * std::sqrt(density / kUnitDensity));
+}
+
+TEST_CASE("Fit table at diameters: each diameter's N, its rows those of that size, aerodynamic only with SI", "[export][fit][diameters]") {
+  PooledFixture fixture;
+  ExportRequest by_diameter;
+  by_diameter.speeds = {0.02, 0.1};
+  by_diameter.diameters = {5.0, 20.0};  // mobility diameters in d (reduced study): N = 5^2.16 and 20^2.16
+  ExportRequest by_size = by_diameter;
+  by_size.diameters.clear();
+  by_size.sizes = {std::pow(5.0, 2.16), std::pow(20.0, 2.16)};
+  const auto diameters = fixture.table(by_diameter), sizes = fixture.table(by_size);
+  REQUIRE(diameters.rows() == 4);
+  for (const char* column : {"primaries", "p_break_up", "p_break_up_lo", "p_break_up_hi", "inside_validity", "model"})
+    for (std::size_t row = 0; row < 4; ++row) CHECK(at(diameters, column, row) == Approx(at(sizes, column, row)).epsilon(1e-12));
+  CHECK(at(diameters, "d_mob", 0) == Approx(5.0).epsilon(1e-12));
+  CHECK(at(diameters, "inside_validity", 0) == 1.0);  // 5^2.16 = 32.3 lies between the sizes run, 32 and 128
+  CHECK(at(diameters, "inside_validity", 2) == 0.0);  // 20^2.16 = 646 beyond them: extrapolated, flagged
+  by_diameter.diameter_type = DiameterType::aerodynamic;
+  CHECK_THROWS_WITH(fixture.table(by_diameter), Catch::Contains("an aerodynamic diameter needs"));
+  // With a material (SI): diameters in m; the rows carry all three diameters.
+  by_diameter.material = ExportMaterial{{1e10, 0.3, 1725.0, 0.001 * 1e10 * 2e-8 / 2.73}, 2e-8};
+  by_diameter.diameters = {2e-7};
+  const auto si = fixture.table(by_diameter);
+  REQUIRE(si.rows() == 2);
+  CHECK(at(si, "d_ae_m", 0) == Approx(2e-7).epsilon(1e-9));
+  const double n = at(si, "primaries", 0);
+  CHECK(at(si, "d_mob_m", 0) == Approx(2e-8 * mobility_equivalent_diameter(n)).epsilon(1e-12));
+  CHECK(at(si, "d_ve_m", 0) == Approx(2e-8 * std::cbrt(n)).epsilon(1e-12));
 }
 
 }  // namespace aerobreak::testing
