@@ -169,7 +169,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
   table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
-  table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
+  table.metadata["missing_value"] = "NaN in HDF5, an empty field in CSV, null in JSON, -1.0e+30 in .dat; left out of MELCOR and OpenFOAM";
   return table;
 }
 

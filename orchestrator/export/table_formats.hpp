@@ -18,8 +18,15 @@ struct RenderedTable {
 // column count, of which the first gives header_lines (records before the names), the column
 // names, their units, the rows.
 std::string csv_text(const LookupTable& table);
-// Whitespace-separated columns for Fortran list-directed input: comment lines start with '#',
-// no quotes, no empty field (NaN for missing), the column order in the header.
+// Whitespace-separated columns for Fortran list-directed input, safe for older Fortran: no line
+// longer than kDatLineWidth characters (a row continues over lines of kDatValuesPerLine values, one
+// list-directed READ of C values reads it), comment lines start with '#' (the second gives their
+// number: "# header_lines: H"), index lines "# column I NAME 'UNIT'" that a list-directed READ
+// takes as they are, no quotes in the rows, no empty field and no NaN: a missing value is the
+// sentinel kDatMissingValue.
+inline constexpr std::size_t kDatLineWidth = 80;
+inline constexpr std::size_t kDatValuesPerLine = 4;
+inline constexpr double kDatMissingValue = -1.0e30;
 std::string dat_text(const LookupTable& table);
 // schemas/lookup.schema.json.
 nlohmann::ordered_json table_json(const LookupTable& table);

@@ -98,6 +98,7 @@ TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments fro
   CHECK(std::isnan(at(table, "restitution_sd", fast)));
   CHECK(std::isnan(at(table, "restitution", row)));
   CHECK(at(table, "restitution_bounces", row) == 0.0);
+  CHECK_FALSE(table.find("fractal_dimension"));  // the ballistic generator has no target D_f: no column
 }
 
 TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {

@@ -91,22 +91,34 @@ std::string compiled_dat_reader(const ScratchDirectory& directory) {
   INFO("gfortran is needed (scripts/setup.sh installs it)");
   REQUIRE_FALSE(gfortran.empty());
   const auto reader = directory.file("read_lookup_dat");
-  const auto compiled = run_command(gfortran + " -O0 -o " + reader + " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90");
+  // Built to stop on any invalid operation, division by zero or overflow: a NaN in the file would.
+  const auto compiled = run_command(gfortran + " -O0 -std=f2008 -ffpe-trap=invalid,zero,overflow -o " + reader +
+                                    " " AEROBREAK_SOURCE_DIR "/tests/export/read_lookup_dat.f90");
   INFO(compiled.text);
   REQUIRE(compiled.exit_code == 0);
   return reader;
 }
 
-// The Fortran reader reads every value of the .dat file, row by row, as the table has it.
+// The Fortran reader reads the index (each column's number, name and unit, list-directed) and every
+// value of the .dat file, row by row, as the table has it, the sentinel where a value is missing;
+// no line of the file is longer than 80 characters.
 void check_dat_read_back(const std::string& reader, const std::string& dat_file, const LookupTable& table) {
+  std::ifstream file(dat_file);
+  for (std::string line; std::getline(file, line);) CHECK(line.size() <= kDatLineWidth);
   const auto read = run_command(reader + " " + dat_file, true);
   REQUIRE(read.exit_code == 0);
   std::istringstream lines(read.text);
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    std::string line;
+    REQUIRE(std::getline(lines, line));
+    CHECK(line == "column " + std::to_string(c + 1) + " " + table.columns[c].name + " " + table.columns[c].unit);
+  }
   for (std::size_t row = 0; row < table.rows(); ++row)
     for (const auto& column : table.columns) {
       std::string line;
       REQUIRE(std::getline(lines, line));
-      check_value(std::strtod(line.c_str(), nullptr), column.values[row]);
+      const double written = column.values[row];
+      check_value(std::strtod(line.c_str(), nullptr), std::isnan(written) ? kDatMissingValue : written);
     }
   std::string last;
   std::getline(lines, last);
@@ -313,7 +325,7 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   CHECK(csv_text(table).find("#fit_models.pooled_ln_n,") != std::string::npos);
   const auto dat = dat_text(table);
   const auto model_number = std::to_string(model - table.columns.begin() + 1);
-  CHECK(dat.find("# column " + model_number + ": model [1]") != std::string::npos);
+  CHECK(dat.find("# column " + model_number + " model '1'\n") != std::string::npos);
   const auto dat_file = directory.file("fit.dat");
   std::ofstream(dat_file) << dat;
   check_dat_read_back(compiled_dat_reader(directory), dat_file, table);
