@@ -20,6 +20,7 @@ packages=(
   libeigen3-dev
   libboost-dev
   gfortran
+  openfoam
   chromium
 )
 # Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a

@@ -216,6 +216,12 @@ TEST_CASE("HDF5: the C API reads one dataset per column with its units, and the 
 namespace {
 
 // The text without comments (from `marker` to the end of a line), as whitespace-separated tokens.
+std::size_t count_of(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++count;
+  return count;
+}
+
 std::vector<std::string> tokens(const std::string& text, const std::string& marker) {
   std::vector<std::string> words;
   std::istringstream lines(text);
@@ -300,6 +306,12 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
   CHECK(std::count(dictionary.begin(), dictionary.end(), '{') == static_cast<long>(kSizes.size()));
   CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size()) + ");") != std::string::npos);
   CHECK(dictionary.find("componentColumns    (" + std::to_string(kSizes.size() + 1) + ");") == std::string::npos);
+  // Behaviour and header agree: nothing clamped outside the table, and the header says so.
+  CHECK(static_cast<std::size_t>(std::count(dictionary.begin(), dictionary.end(), '{')) ==
+        count_of(dictionary, "outOfBounds         error;"));
+  CHECK(count_of(dictionary, "outOfBounds         clamp") == 0);
+  for (const auto& text : {dictionary, openfoam_table2d(table, "p_break_up")})
+    CHECK(text.find("// outside its speeds and sizes this table has no value: read it with outOfBounds error") != std::string::npos);
 
   try {
     openfoam_table2d(fixture.table(), "p_stick");  // both gamma/k_n: two conditions
