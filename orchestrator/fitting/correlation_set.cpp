@@ -1,6 +1,7 @@
 #include "orchestrator/fitting/correlation_set.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/fragment_sizes.hpp"
@@ -20,6 +21,18 @@ std::string_view to_string(FitStatus status) {
     case FitStatus::not_converged: break;
   }
   return "not-converged";
+}
+
+std::optional<double> observed_crossing(const std::vector<std::pair<double, double>>& points, double level) {
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const auto [x0, y0] = points[i - 1];
+    const auto [x1, y1] = points[i];
+    if ((y0 - level) * (y1 - level) > 0.0 || y0 == y1) continue;
+    if (y0 == level) return x0;
+    const double t = (level - y0) / (y1 - y0);
+    return std::exp(std::log(x0) + t * (std::log(x1) - std::log(x0)));
+  }
+  return std::nullopt;
 }
 
 CorrelationSet compute_correlations(const CaseOutcomeTable& table, const CorrelationRequest& request,

@@ -84,6 +84,25 @@ export class Correlations {
     return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
   }
 
+  // The measured crossings of 0.5 against N, as the service computes them from each group's
+  // measured proportions (observed_crossings of the fits in impact speed): markers, one series per
+  // value of the other series axes.
+  observedCurves(outcome, xAxis, slice) {
+    const series = new Map();
+    for (const fit of this.groupFits(outcome, xAxis, slice)) {
+      const crossing = (fit.observed_crossings || []).find((c) => c.level === 0.5);
+      if (!('primaries' in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
+      const { primaries, ...rest } = fit.group;
+      const others = Object.entries(rest).filter(([axis]) => !(axis in slice));
+      const key = valueKey(others);
+      if (!series.has(key)) series.set(key, {
+        label: `measured crossing of 0.5${others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`).join('')}`,
+        pointsOnly: true, points: [] });
+      series.get(key).points.push({ x: primaries, y: crossing.dose });
+    }
+    return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
+  }
+
   // The scaling fit of v50 for `outcome` (exponents per axis) of the one condition in `slice`, or null
   // (one per condition of the axes it does not model: a slice of several would mix them).
   scaling(outcome, slice) {

@@ -87,37 +87,6 @@ export const meanOf = (quantity) => (row) => {
   return { y: estimate.mean, lo: estimate.ci95 ? estimate.ci95[0] : null, hi: estimate.ci95 ? estimate.ci95[1] : null };
 };
 
-// Where a curve first crosses `level`, interpolated linearly in log x between the two measured
-// points around it; null when it never does.
-export function crossing(points, level = 0.5) {
-  for (let i = 1; i < points.length; i++) {
-    const [a, b] = [points[i - 1], points[i]];
-    if ((a.y - level) * (b.y - level) > 0 || a.y === b.y) continue;
-    if (a.y === level) return a.x;
-    const t = (level - a.y) / (b.y - a.y);
-    return Math.exp(Math.log(a.x) + t * (Math.log(b.x) - Math.log(a.x)));
-  }
-  return null;
-}
-
-// Critical speed against N: one series per value of the series axes other than N, from the
-// crossings of each curve.
-export function criticalSpeedCurves(curves, level = 0.5) {
-  const series = new Map();
-  for (const curve of curves) {
-    if (!('primaries' in curve.groupValues)) continue;
-    const x = crossing(curve.points, level);
-    if (x === null) continue;
-    const { primaries, ...rest } = curve.groupValues;
-    const key = valueKey(rest);
-    if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest), points: [] });
-    series.get(key).points.push({ x: primaries, y: x });
-  }
-  const sorted = [...series.values()];
-  for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);
-  return sorted;
-}
-
 // Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
 // per result.
 export function fragmentCurves(response, xAxis) {

@@ -5,7 +5,7 @@ import { getJson } from '../api.js';
 import { el, replaceChildren, select } from '../dom.js';
 import { assignColors, plotCurves } from '../charts.js';
 import {
-  alongAxis, axisLabel, criticalSpeedCurves, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves, meanOf, probabilityOf,
+  alongAxis, axisLabel, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves, meanOf, probabilityOf,
   sliceAxes, valueKey,
 } from '../series.js';
 import { createFlags } from './study_flags.js';
@@ -73,7 +73,8 @@ export function createPlots({ state }) {
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
     const hasN = grid.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) && alongAxis(xAxis) !== 'primaries';
-    const measuredCritical = hasN ? criticalSpeedCurves(measured).map((curve) => ({ ...curve, pointsOnly: true })) : [];
+    // The measured crossings come from the service (observed_crossings), like the fitted ones.
+    const measuredCritical = hasN && correlations ? correlations.observedCurves(outcome, xAxis, slice) : [];
     const drawBoth = (fitted, fittedCritical) => {
       plotCurves(probability.chart, [...measured, ...fitted, ...markers], { xLabel, yLabel: `P(${outcome})`, yRange: [0, 1] });
       probability.chart.dataset.fitted = fitted.length;
