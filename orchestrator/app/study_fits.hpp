@@ -13,6 +13,8 @@
 
 namespace aerobreak {
 
+// The table model of a study's fits (orchestrator/fitting/correlation_set.hpp, which brings Eigen:
+// not included here, so that this header can follow cpp-httplib's, whose <resolv.h> defines _res).
 struct CorrelationSet;
 
 // A correlation request that does not fit the study (a covariate it does not sweep, a study without
@@ -39,20 +41,30 @@ std::string request_key(const CorrelationRequest& request);
 CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
                                  std::string* result_set_hash = nullptr);
 
-// A study's fits as the table model (not cached): for consumers in C++ such as the lookup-table
-// export. Throws CorrelationRequestError for a study without results.
+// A study's fits as the table model, fitted now (neither stored nor cached). Throws
+// CorrelationRequestError for a study without results.
 CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request);
 
-// The fits of a study, stored and served from the store while its result set is unchanged: a
-// request checks one row (the study's result-set version, Store::study_versions); a changed result set is read, its hash
-// compared with the stored set's, and refitted only when it differs. Fitting runs outside the
-// store's write lock, one study at a time; the new set is stored in one short transaction. The
-// latest set of each study and request is also kept in memory, so that a request served from the
-// cache reads one row, not the stored summary.
-class CorrelationCache {
+// A study's fits, the operation that `aerobreak run`, `aerobreak export` and the REST endpoints
+// share (docs/ARCHITECTURE.md, the application layer): stored and served from the store while its
+// result set is unchanged: a request checks one row (the study's result-set version,
+// Store::study_versions); a changed result set is read, its hash compared with the stored set's,
+// and refitted only when it differs. Fitting runs outside the store's write lock, one study at a
+// time; the new set is stored in one short transaction. The latest set of each study and request
+// is also kept in memory, so that a request served from the cache reads one row, not the stored
+// summary. The lookup-table export reads the stored fits back (logistic_fits) instead of fitting
+// the study again.
+class StudyFits {
  public:
-  explicit CorrelationCache(Store& store) : store_(store) {}
+  // read_only: the store is a reader (aerobreak export beside a running service): a current stored
+  // set is used, anything else fitted in memory and not stored.
+  enum class Mode { store, read_only };
+  explicit StudyFits(Store& store, Mode mode = Mode::store) : store_(store), mode_(mode) {}
   std::shared_ptr<const StoredCorrelations> current(const StudyRecord& study, const CorrelationRequest& request);
+  // The logistic fits of the default request (correlation_request(study, nullopt)) as the table
+  // model, read from the stored set of the current result set (fitted and stored first if there is
+  // none): what the fit table and the generated code evaluate. Kept in memory per stored set.
+  std::shared_ptr<const CorrelationSet> logistic_fits(const StudyRecord& study);
 
  private:
   std::shared_ptr<std::mutex> study_lock(std::int64_t study_id);
@@ -65,10 +77,16 @@ class CorrelationCache {
                                                        std::int64_t version) const;
   std::shared_ptr<const StoredCorrelations> remember(std::int64_t study_id, const std::string& key, StoredCorrelations set);
 
+  // The stored set's logistic fits parsed back, or fitted now (read_only without a current set).
+  std::shared_ptr<const CorrelationSet> read_back(const StoredCorrelations& stored, const CorrelationRequest& request);
+
   static constexpr std::size_t kMaxRemembered = 64;
   Store& store_;
+  const Mode mode_;
   mutable std::mutex memory_mutex_;
   std::map<std::pair<std::int64_t, std::string>, std::shared_ptr<const StoredCorrelations>> memory_;
+  // Per stored set (its id and the time it was fitted): its logistic fits read back.
+  std::map<std::pair<std::int64_t, double>, std::shared_ptr<const CorrelationSet>> read_back_;
   std::mutex locks_mutex_;
   std::map<std::int64_t, std::shared_ptr<std::mutex>> study_locks_;
 };

@@ -3,11 +3,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 
 #include "orchestrator/export/table_formats.hpp"
-#include "orchestrator/service/study_tables.hpp"
+#include "orchestrator/app/study_tables.hpp"
 
 namespace aerobreak {
 namespace {
@@ -48,6 +49,18 @@ std::int64_t only_study(Store& store) {
   return studies.items.front().id;
 }
 
+// A physical study's fit table at mobility diameters of 0.1, 0.3, 1 and 3 um (docs/EXPORT.md
+// section 2), at the speeds of its grid: what a system code tracking a diameter reads.
+std::optional<ExportRequest> mobility_diameter_request(const StudyRecord& study) {
+  const nlohmann::ordered_json::json_pointer units("/base/units"), speeds("/axes/impact_speed/values");
+  if (!study.document.contains(units) || study.document.at(units) != "physical") return std::nullopt;
+  ExportRequest request{.kind = TableKind::fit};
+  request.diameters = {1e-7, 3e-7, 1e-6, 3e-6};
+  if (study.document.contains(speeds))
+    for (const auto& speed : study.document.at(speeds)) request.speeds.push_back(speed.get<double>());
+  return request;
+}
+
 void write_file(const std::filesystem::path& path, const std::string& content) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary);
@@ -62,11 +75,12 @@ int run_export(const ExportOptions& options) {
   }
   try {
     Store store(options.store, Store::Access::reader);
+    StudyFits fits(store, StudyFits::Mode::read_only);  // the stored fits when current, else fitted in memory
     const std::int64_t study = options.study > 0 ? options.study : only_study(store);
     const auto request = parse_export_request({options.parameters.begin(), options.parameters.end()});
     const auto record = store.study(study);
     if (!record) throw ExportError(404, "study", "no study " + std::to_string(study) + " in " + options.store);
-    const auto rendered = export_file(store, *record, request);
+    const auto rendered = export_file(store, fits, *record, request);
     if (options.output == "-") {
       std::cout << rendered.content;
       return 0;
@@ -86,28 +100,30 @@ int run_export(const ExportOptions& options) {
 
 }  // namespace
 
-std::vector<std::filesystem::path> write_default_tables(Store& store, std::int64_t study_id,
+std::vector<std::filesystem::path> write_default_tables(Store& store, StudyFits& fits, std::int64_t study_id,
                                                         const std::filesystem::path& directory) {
   const auto study = store.study(study_id);
   if (!study) throw ExportError(404, "study", "no study " + std::to_string(study_id));
-  const std::map<TableKind, std::vector<TableFormat>> formats{
-      {TableKind::grid, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}},
-      {TableKind::sections, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5}},
-      {TableKind::fit, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor}},
-      {TableKind::correlations, {TableFormat::fortran, TableFormat::c, TableFormat::json}}};
+  const std::vector<TableFormat> tables{TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor};
+  std::vector<std::pair<ExportRequest, std::vector<TableFormat>>> files;
+  const auto add = [&files](ExportRequest request, std::vector<TableFormat> formats) { files.emplace_back(request, formats); };
+  add({.kind = TableKind::grid}, tables);
+  add({.kind = TableKind::sections}, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5});
+  add({.kind = TableKind::fit}, tables);
+  if (const auto mobility = mobility_diameter_request(*study)) add(*mobility, tables);
+  add({.kind = TableKind::correlations}, {TableFormat::fortran, TableFormat::c, TableFormat::json});
   std::vector<std::filesystem::path> written;
-  for (const auto& [kind, kind_formats] : formats)
-    for (const auto format : kind_formats) {
-      ExportRequest request;
-      request.kind = kind;
+  for (auto& [request, formats] : files)
+    for (const auto format : formats) {
       request.format = format;
       RenderedTable rendered;
       try {
-        rendered = export_file(store, *study, request);
+        rendered = export_file(store, fits, *study, request);
       } catch (const ExportError& error) {
-        if (kind == TableKind::fit || kind == TableKind::correlations) break;  // no fit in impact speed: no table (b), no code
+        if (request.kind == TableKind::fit || request.kind == TableKind::correlations) break;  // no fit in impact speed
         throw;
       }
+      if (!request.diameters.empty()) rendered.file_name.insert(rendered.file_name.find("_fit") + 4, "_mobility");
       written.push_back(directory / rendered.file_name);
       write_file(written.back(), rendered.content);
     }

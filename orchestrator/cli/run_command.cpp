@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/app/study_fits.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
@@ -17,7 +18,6 @@
 #include "orchestrator/cli/search_table.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/search_endpoints.hpp"
-#include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
 
@@ -105,11 +105,11 @@ void print_failures(Store& store, std::int64_t study_id) {
 }
 
 // The study's lookup tables for system codes (docs/EXPORT.md), next to the store.
-void print_tables(Store& store, std::int64_t study_id) {
+void print_tables(Store& store, StudyFits& fits, std::int64_t study_id) {
   auto directory = store.file();
   directory.replace_extension(".tables");
   try {
-    const auto files = write_default_tables(store, study_id, directory);
+    const auto files = write_default_tables(store, fits, study_id, directory);
     std::cout << "\nLookup tables for system codes (docs/EXPORT.md) in " << directory.string() << "/:\n";
     for (const auto& file : files) std::cout << "  " << file.filename().string() << "\n";
   } catch (const std::exception& error) {
@@ -117,13 +117,12 @@ void print_tables(Store& store, std::int64_t study_id) {
   }
 }
 
-// The critical speeds of the study's fits (computed and stored now, so that the service serves them
-// from the store afterwards).
-void print_critical_speeds(Store& store, std::int64_t study_id) {
+// The critical speeds of the study's fits (fitted and stored now: the tables and the service then
+// read them from the store).
+void print_critical_speeds(Store& store, StudyFits& fits, std::int64_t study_id) {
   const auto study = store.study(study_id);
   try {
-    CorrelationCache cache(store);
-    const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
+    const auto set = fits.current(*study, correlation_request(*study, std::nullopt));
     std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
               << ": logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
                  "intervals (docs/CORRELATIONS.md)\n\n"
@@ -192,9 +191,10 @@ int run(RunOptions options) {
     std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
   else
     std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)), speed_unit_label(study.document));
-  print_critical_speeds(store, receipt.study_id);
+  StudyFits fits(store);  // fitted once, for the critical speeds, the fit table and the code
+  print_critical_speeds(store, fits, receipt.study_id);
   print_failures(store, receipt.study_id);
-  print_tables(store, receipt.study_id);
+  print_tables(store, fits, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();

@@ -135,9 +135,11 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
                send_json(response, 200, page_json(store.results(study.id, outcome, page), page));
              }));
   register_summary_endpoints(server, store);
-  register_correlation_endpoints(server, store);
+  // A study's fits and tables, shared by the endpoints that serve them (the application layer).
+  const auto fits = std::make_shared<StudyFits>(store);
+  register_correlation_endpoints(server, store, fits);
   register_search_endpoints(server, store);
-  register_table_endpoints(server, store);
+  register_table_endpoints(server, store, std::make_shared<StudyTables>(store, fits));
   server.Post(R"(/api/studies/(\d+)/cancel)",
               guarded([&store](const httplib::Request& request, httplib::Response& response) {
                 const auto study = existing_study(store, path_id(request));

@@ -70,8 +70,18 @@ bool names_current_tag(const httplib::Request& request, const std::string& etag)
   return false;
 }
 
+bool accepts_gzip(const httplib::Request& request) {
+  return request.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
+}
+
 void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
                     std::shared_ptr<const void> owner, const std::string& body, const std::string& content_encoding) {
+  send_kept(request, response, etag, std::move(owner), body, "application/json", content_encoding);
+}
+
+void send_kept(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+               std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
+               const std::string& content_encoding) {
   response.set_header("ETag", etag);
   response.set_header("Cache-Control", "no-cache");
   if (names_current_tag(request, etag)) {
@@ -80,7 +90,7 @@ void send_kept_json(const httplib::Request& request, httplib::Response& response
   }
   response.status = 200;
   if (!content_encoding.empty()) response.set_header("Content-Encoding", content_encoding);
-  response.set_content_provider(body.size(), "application/json",
+  response.set_content_provider(body.size(), content_type.c_str(),
                                 [owner = std::move(owner), &body](std::size_t offset, std::size_t length,
                                                                   httplib::DataSink& sink) {
                                   return sink.write(body.data() + offset, length);

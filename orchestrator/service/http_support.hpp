@@ -50,6 +50,13 @@ bool names_current_tag(const httplib::Request& request, const std::string& etag)
 void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
                     std::shared_ptr<const void> owner, const std::string& body,
                     const std::string& content_encoding = "");
+// The same for a kept body of any content type.
+void send_kept(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+               std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
+               const std::string& content_encoding = "");
+
+// Whether the client accepts a gzip-encoded answer (Accept-Encoding names gzip).
+bool accepts_gzip(const httplib::Request& request);
 
 // Runs a handler, turning RequestError into its JSON answer.
 template <typename Handler>

@@ -2,7 +2,7 @@
 
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/service/http_support.hpp"
-#include "orchestrator/service/study_tables.hpp"
+#include <algorithm>
 
 namespace aerobreak {
 namespace {
@@ -18,13 +18,23 @@ RequestError request_error(const ExportError& error) {
           nlohmann::ordered_json::array({{{"parameter", error.field}, {"message", error.what()}}})};
 }
 
-void send_table(const httplib::Request& request, httplib::Response& response, Store& store) {
+// The request's canonical text: its parameters sorted (the key of a kept file).
+std::string request_key(std::vector<std::pair<std::string, std::string>> parameters) {
+  std::sort(parameters.begin(), parameters.end());
+  std::string key;
+  for (const auto& [name, value] : parameters) key += name + "=" + value + "\n";
+  return key;
+}
+
+void send_table(const httplib::Request& request, httplib::Response& response, Store& store, StudyTables& tables) {
   const auto study = existing_study(store, path_id(request));
   try {
-    const auto export_request = parse_export_request(query_parameters(request));
-    auto rendered = export_file(store, study, export_request);
-    response.set_header("Content-Disposition", "attachment; filename=\"" + rendered.file_name + "\"");
-    response.set_content(std::move(rendered.content), rendered.content_type);
+    const auto parameters = query_parameters(request);
+    const auto kept = tables.file(study, parse_export_request(parameters), request_key(parameters));
+    response.set_header("Content-Disposition", "attachment; filename=\"" + kept->file.file_name + "\"");
+    response.set_header("Vary", "Accept-Encoding");
+    if (accepts_gzip(request)) send_kept(request, response, kept->etag, kept, kept->gzip_body, kept->file.content_type, "gzip");
+    else send_kept(request, response, kept->etag, kept, kept->file.content, kept->file.content_type);
   } catch (const ExportError& error) {
     throw request_error(error);
   }
@@ -32,9 +42,10 @@ void send_table(const httplib::Request& request, httplib::Response& response, St
 
 }  // namespace
 
-void register_table_endpoints(httplib::Server& server, Store& store) {
-  server.Get(R"(/api/studies/(\d+)/tables)", guarded([&store](const httplib::Request& request, httplib::Response& response) {
-               send_table(request, response, store);
+void register_table_endpoints(httplib::Server& server, Store& store, std::shared_ptr<StudyTables> tables) {
+  server.Get(R"(/api/studies/(\d+)/tables)",
+             guarded([&store, tables](const httplib::Request& request, httplib::Response& response) {
+               send_table(request, response, store, *tables);
              }));
 }
 

@@ -12,7 +12,7 @@
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/logistic_models.hpp"
 #include "orchestrator/fitting/proportion.hpp"
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/app/study_fits.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/fitting/synthetic_study.hpp"
 #include "tests/support/run_command.hpp"

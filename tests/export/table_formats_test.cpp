@@ -16,7 +16,7 @@
 #include "engine/io/hdf5_attributes.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/export/table_formats.hpp"
-#include "orchestrator/service/study_tables.hpp"
+#include "orchestrator/app/study_tables.hpp"
 #include "tests/export/export_study.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/support/run_command.hpp"
@@ -329,7 +329,8 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   request.kind = TableKind::fit;
   request.speeds = {0.02, 0.05, 0.1};
   request.sizes = {32, 64, 128};
-  const auto table = export_lookup_table(store, *store.study(study), request);
+  StudyFits fits(store);
+  const auto table = export_lookup_table(store, fits, *store.study(study), request);
   const auto model = std::find_if(table.columns.begin(), table.columns.end(), [](const TableColumn& c) { return c.name == "model"; });
   REQUIRE(model != table.columns.end());
   CHECK(std::prev(model)->name == "inside_validity");
