@@ -131,7 +131,7 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
       [speed_unit_of_study](const FitRow& row) { return row.speed / speed_unit_of_study; });
   std::vector<const nlohmann::ordered_json*> groups;
   for (const auto& block : blocks) groups.push_back(&block.group);
-  const auto axes = axis_columns(groups, {});
+  const auto axes = axis_columns(groups, {}, speed_unit_of_study != 1.0);
   for (const auto& axis : axes)
     add(axis.name, axis.unit(), axis.description(), ColumnRole::input, [&axis](const FitRow& row) { return axis.value(row.block->group); });
   add_axis_labels(table.metadata, axes);

@@ -205,7 +205,7 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
       {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", false}, {"/model/friction", 0.3}, {"/odd", true}}};
   std::vector<const nlohmann::ordered_json*> pointers;
   for (const auto& point : points) pointers.push_back(&point);
-  const auto axes = axis_columns(pointers, {"primaries"});
+  const auto axes = axis_columns(pointers, {"primaries"}, false);
   REQUIRE(axes.size() == 4);
   const auto values = [&](std::size_t axis) {
     std::vector<double> column;
@@ -218,7 +218,15 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
   CHECK(values(1) == std::vector<double>{1, 0, 0});
   CHECK(axes[2].name == "model_friction");
   CHECK(values(2) == std::vector<double>{0.3, 0.5, 0.3});
-  CHECK(axes[2].unit() == "as in the case");
+  CHECK(axes[2].unit() == "1");  // a friction coefficient
+  CHECK(axes[1].unit() == "1");  // a boolean
+  // Every quantity with its unit: SI for a physical study's material, d, m, tau otherwise.
+  CHECK(axis_unit("/material/surface_energy", true) == "J/m^2");
+  CHECK(axis_unit("/material/surface_energy", false) == "m/tau^2");
+  CHECK(axis_unit("/model/rolling/critical_displacement", true) == "d");
+  CHECK(axis_unit("/impact/angle", false) == "deg");
+  CHECK(axis_unit("fractal_dimension", true) == "1");
+  CHECK(axis_unit("/somewhere/else", true) == "unknown");
   CHECK(values(3) == std::vector<double>{0, 1, 2});  // mixed values: labels "1", "x", "true"
   nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
   add_axis_labels(metadata, axes);
