@@ -39,7 +39,9 @@ std::string format_critical_table(const nlohmann::ordered_json& summary, const s
   Rows rows;
   std::vector<std::string> axes;
   for (const auto& fit : summary.at("fits")) {
-    if (fit.at("kind") != "logistic" || fit.at("dose") != dose || fit.at("group").empty()) continue;
+    // A group's own fits: a pooled model (pooled_over) has its critical values in its document only.
+    if (fit.at("kind") != "logistic" || fit.at("dose") != dose || fit.at("group").empty() || !fit.at("pooled_over").empty())
+      continue;
     if (rows.empty()) {
       for (const auto& [axis, value] : fit.at("group").items()) axes.push_back(axis);
       std::vector<std::string> header = axes;

@@ -169,6 +169,11 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
   table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
+  if (!request.diameters.empty())
+    table.metadata["sizes_from"] = std::string(request.diameter_type == DiameterType::mobility ? "mobility"
+                                               : request.diameter_type == DiameterType::volume ? "volume-equivalent"
+                                                                                                : "aerodynamic") +
+                                   " diameters (docs/EXPORT.md section 2), in " + (scalings ? "m" : "d");
   table.metadata["missing_value"] = "NaN in HDF5, an empty field in CSV, null in JSON, -1.0e+30 in .dat; left out of MELCOR and OpenFOAM";
   return table;
 }

@@ -1,6 +1,7 @@
 // MELCOR 2 tabular functions (docs/EXPORT.md, "MELCOR"). Input syntax after the MELCOR Computer
 // Code Manuals, Vol. 1: Primer and Users' Guide (SAND2017-0455 O), TF package: a TF_INPUT block,
 // per function TF_ID 'name' scale and TF_TAB n followed by n records "i x y"; '!' starts a comment.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -36,7 +37,14 @@ std::vector<TabulatedQuantity> tabulated(const LookupTable& table) {
   return quantities;
 }
 
-char kind_letter(const LookupTable& table) { return table.kind == "fit" ? 'F' : table.kind == "sections" ? 'S' : 'G'; }
+// G grid, S sections, F a fit table at sizes; M, V, A a fit table at mobility, volume-equivalent or
+// aerodynamic diameters (metadata sizes_from), so that the default files' names never collide.
+char kind_letter(const LookupTable& table) {
+  if (table.kind == "sections") return 'S';
+  if (table.kind != "fit") return 'G';
+  const std::string from = table.metadata.value("sizes_from", std::string());
+  return from.starts_with("mobility") ? 'M' : from.starts_with("volume") ? 'V' : from.starts_with("aerodynamic") ? 'A' : 'F';
+}
 
 // S<study><kind><tag><bound><condition>: unique across studies, table kinds, quantities, interval
 // ends and conditions (docs/EXPORT.md, "MELCOR").
@@ -50,9 +58,18 @@ std::string function_name(const LookupTable& table, const std::string& tag, std:
   return name;
 }
 
-std::string condition_text(const ConditionRows& condition) {
+// The condition's inputs, and the derived columns that are the same on all its rows (a size's
+// diameters; not lambda, which changes with the speed).
+std::string condition_text(const LookupTable& table, const ConditionRows& condition) {
   std::string text;
   for (const auto& [name, value] : condition.key) text += (text.empty() ? "" : ", ") + name + " = " + number_text(value);
+  for (const auto& column : table.columns) {
+    if (column.role != ColumnRole::derived) continue;
+    const double first = column.values[condition.rows.front()];
+    const bool constant = std::all_of(condition.rows.begin(), condition.rows.end(),
+                                      [&](std::size_t row) { return column.values[row] == first; });
+    if (constant && !std::isnan(first)) text += (text.empty() ? "" : ", ") + column.name + " = " + number_text(first);
+  }
   return text.empty() ? "(the table's one condition)" : text;
 }
 
@@ -61,7 +78,7 @@ std::string tabular_function(const LookupTable& table, const TableColumn& quanti
   const auto& speed = adapter_speed(table);
   std::string text = "!\n! " + name + ": " + quantity.name + " [" + quantity.unit + "] (" + quantity.description +
                      ") against impact speed [" + speed.unit + "] from " + number_text(speed.values[rows.front()]) + " to " +
-                     number_text(speed.values[rows.back()]) + "\n! at " + condition_text(condition) + "\nTF_ID '" + name +
+                     number_text(speed.values[rows.back()]) + "\n! at " + condition_text(table, condition) + "\nTF_ID '" + name +
                      "' 1.0\nTF_TAB " + std::to_string(rows.size()) + " ! n x y\n";
   std::size_t i = 0;
   for (const std::size_t row : rows)
@@ -70,14 +87,14 @@ std::string tabular_function(const LookupTable& table, const TableColumn& quanti
 }
 
 std::string legend(const LookupTable& table, const std::vector<ConditionRows>& conditions) {
-  std::string text = "! names S<study id><table: G grid, F fit, S sections><quantity: PSTK P(stick), PBNC P(bounce), PBRK "
-                     "P(break-up),\n!   REST restitution of the bounces, RETN retained mass fraction, WALL mass to the wall, TSkk "
+  std::string text = "! names S<study id><table: G grid, F fit at sizes, M/V/A fit at mobility/volume/aerodynamic diameters, "
+                     "S sections>\n!   <quantity: PSTK P(stick), PBNC P(bounce), PBRK P(break-up),\n!   REST restitution of the bounces, RETN retained mass fraction, WALL mass to the wall, TSkk "
                      "mass to section kk>\n!   <_ value, L 95 % lower end, U 95 % upper end><condition number, below>\n";
   text += "! x: impact speed [" + adapter_speed(table).unit + "]; a function is left out where its quantity has no value\n";
   for (std::size_t c = 0; c < conditions.size(); ++c) {
     char number[24];
     std::snprintf(number, sizeof number, "%03zu", c + 1);
-    text += "! condition " + std::string(number) + ": " + condition_text(conditions[c]) + "\n";
+    text += "! condition " + std::string(number) + ": " + condition_text(table, conditions[c]) + "\n";
   }
   return text;
 }

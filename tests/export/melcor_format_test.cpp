@@ -13,7 +13,9 @@
 
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/export/table_formats.hpp"
-#include "tests/export/export_study.hpp"
+#include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
+#include "tests/export/pooled_size_study.hpp"
 #include "tests/support/scratch_directory.hpp"
 
 namespace aerobreak::testing {
@@ -78,7 +80,7 @@ MelcorDeck parse(const std::string& text) {
 }
 
 // S<study><G|F|S><four-letter quantity><_|L|U><three-digit condition>.
-const std::regex kName(R"(S(\d+)([GFS])(PSTK|PBNC|PBRK|REST|RETN|WALL|TS\d\d)([_LU])(\d{3}))");
+const std::regex kName(R"(S(\d+)([GFMVAS])(PSTK|PBNC|PBRK|REST|RETN|WALL|TS\d\d)([_LU])(\d{3}))");
 
 struct Stores {
   ScratchDirectory directory{"melcor_format"};
@@ -132,19 +134,30 @@ TEST_CASE("MELCOR: every outcome with its interval, the restitution and the reta
 
 TEST_CASE("MELCOR: names are unique across quantities, conditions, table kinds and studies", "[export][melcor]") {
   Stores stores;
+  std::vector<std::pair<LookupTable, std::string>> tables;  // each with the table letter its names must carry
+  for (const auto study : {stores.walls, stores.gammas}) {
+    tables.emplace_back(stores.table(study, TableKind::grid), "G");
+    tables.emplace_back(stores.table(study, TableKind::sections), "S");
+  }
+  // The fit table at sizes and at mobility diameters, as aerobreak run writes both, of a third study.
+  const auto pooled = fill_pooled_wall_study(stores.store);
+  const auto fits = study_correlations(stores.store, *stores.store.study(pooled), correlation_request(*stores.store.study(pooled), std::nullopt));
+  ExportRequest at_sizes{.kind = TableKind::fit}, at_diameters{.kind = TableKind::fit};
+  at_diameters.diameters = {5.0, 8.0};  // in d: N = 32.3 and 89
+  tables.emplace_back(study_lookup_table(stores.store, pooled, at_sizes, &fits), "F");
+  tables.emplace_back(study_lookup_table(stores.store, pooled, at_diameters, &fits), "M");
   std::set<std::string> names;
   std::size_t functions = 0;
-  for (const auto study : {stores.walls, stores.gammas})
-    for (const auto kind : {TableKind::grid, TableKind::sections}) {
-      const auto deck = parse(melcor_text(stores.table(study, kind)));
-      for (const auto& function : deck.functions) {
-        names.insert(function.name);
-        ++functions;
-        std::smatch match;
-        REQUIRE(std::regex_match(function.name, match, kName));
-        CHECK(match[2] == (kind == TableKind::grid ? "G" : "S"));
-      }
+  for (const auto& [table, letter] : tables) {
+    const auto deck = parse(melcor_text(table));
+    for (const auto& function : deck.functions) {
+      names.insert(function.name);
+      ++functions;
+      std::smatch match;
+      REQUIRE(std::regex_match(function.name, match, kName));
+      CHECK(match[2] == letter);
     }
+  }
   CHECK(functions > 100);
   CHECK(names.size() == functions);
 }
