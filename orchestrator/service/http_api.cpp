@@ -17,6 +17,7 @@
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/service/study_templates.hpp"
 #include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/summary_endpoints.hpp"
 #include "orchestrator/service/table_endpoints.hpp"
@@ -88,9 +89,12 @@ void register_http_api(httplib::Server& server, Store& store, Scheduler* schedul
   server.Get("/api/health", guarded([&store, scheduler](const httplib::Request&, httplib::Response& response) {
     send_json(response, 200, health(store, scheduler));
   }));
-  server.Get("/api/openapi.json", [](const httplib::Request&, httplib::Response& response) {
+  server.Get("/api/openapi.json", guarded([](const httplib::Request&, httplib::Response& response) {
     response.set_content(std::string(openapi_text()), "application/json");
-  });
+  }));
+  server.Get("/api/templates", guarded([](const httplib::Request&, httplib::Response& response) {
+    send_json(response, 200, study_templates_json());
+  }));
   server.Get("/api/studies", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
     const auto page = page_request(request, options);
     const auto studies = store.studies(page);
