@@ -331,6 +331,16 @@ test('the correlations service: fitted curves with bands over the points, critic
       .flatMap((curve) => curve.points.map(([n], i) => [n, ...curve.band[i]]));
     assert.deepEqual(drawnV50.sort(), v50.sort());
     assert.equal(await page.locator('#correlations-table tbody tr').count(), 4);
+    // A warning for each critical value the data do not pin down: an estimate outside its fit's
+    // tested speeds, or an interval reaching more than 1.5 times beyond them; a mark in its cell.
+    const far = groupFits.flatMap((fit) => fit.critical.filter((value) => {
+      if (typeof value.estimate !== 'number') return false;
+      const { min, max } = fit.validity.impact_speed;
+      return value.estimate < min || value.estimate > max || value.ci95[0] < min / 1.5 || value.ci95[1] > max * 1.5;
+    }));
+    assert.ok(far.length > 0, 'three speeds, three replicates: some critical value is not pinned down');
+    assert.equal(await page.locator('#correlations-warnings li').count(), far.length);
+    assert.equal(await page.locator('#correlations-table .warning-mark').count(), far.length);
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
   });

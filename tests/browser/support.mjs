@@ -29,12 +29,14 @@ export async function until(condition, { timeoutMs = 30000, intervalMs = 100, wh
 }
 
 export class Service {
-  // `arguments_`: more options of `aerobreak serve` (e.g. --token-file).
-  static async start(arguments_ = []) {
+  // `arguments_`: more options of `aerobreak serve` (e.g. --token-file); `store`: a store file to
+  // serve instead of a fresh one.
+  static async start(arguments_ = [], { store } = {}) {
     if (!binary || !existsSync(binary)) throw new Error('AEROBREAK_BINARY must name the built aerobreak');
     const directory = mkdtempSync(path.join(tmpdir(), 'aerobreak-browser-'));
     const portFile = path.join(directory, 'port');
-    const child = spawn(binary, ['serve', '--store', path.join(directory, 'store.sqlite'), '--port', '0', '--port-file', portFile,
+    const storeFile = store || path.join(directory, 'store.sqlite');
+    const child = spawn(binary, ['serve', '--store', storeFile, '--port', '0', '--port-file', portFile,
       '--ranks', '2', '--idle-shutdown', '1', ...arguments_], { stdio: ['ignore', 'ignore', 'pipe'] });
     let log = '';
     child.stderr.on('data', (chunk) => { log += chunk; });

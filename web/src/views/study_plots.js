@@ -56,8 +56,8 @@ function createPanels() {
     probability: panel('probability', 'Outcome probability', kProbabilityNote),
     critical: panel('critical', 'Critical speed against N', kCriticalNote),
     retained: panel('retained', 'Retained mass fraction', `${kStudent} (within 0 and 1).`),
-    damage: panel('damage', 'Damage ratio', 'Initial contacts broken by the end over the initial contacts: ' +
-      `${kStudent.toLowerCase()} (within 0 and 1).`),
+    damage: panel('damage', 'Damage ratio', 'Initial contacts broken by the end over the initial contacts. ' +
+      `${kStudent} (within 0 and 1).`),
     restitution: panel('restitution', 'Restitution (largest fragment, normal)', `${kStudent}.`),
     fragments: panel('fragments', 'Fragment-size distribution',
       'Fragments of each size per result, one series per grid value.'),
