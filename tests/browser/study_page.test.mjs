@@ -55,7 +55,7 @@ function chartContents(page, id) {
       whiskers: (chart.whiskers || []).map((w) => ({ label: w.label, lo: w.lo.filter((v) => v !== null),
         hi: w.hi.filter((v) => v !== null) })),
       x: axis(0), y: axis(1), yLabelWidth: u ? labelWidth() : 0, plotHeight: u ? u.bbox.height / devicePixelRatio : 0,
-      legend: [...chart.querySelectorAll('.legend li')].map((li) => ({ text: li.textContent,
+      legend: [...chart.querySelectorAll('.legend li')].map((li) => ({ text: li.textContent, group: li.dataset.group,
         swatch: li.querySelector('.swatch').className })),
     };
   }, id);
@@ -103,14 +103,17 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     assert.equal(probability.whiskers.length, 4);
     const wilson = serverCurves((row) => row.outcomes['break-up'].ci95).flat().map(([, ci]) => ci);
     assert.deepEqual(probability.whiskers.flatMap((w) => w.lo.map((lo, i) => [lo, w.hi[i]])).sort(), wilson.sort());
-    const measuredEntries = probability.legend.filter((entry) => !/\(fit\)|^outside/.test(entry.text));
-    assert.ok(measuredEntries.every((entry) => /\bmeasured\b/.test(entry.swatch)));
+    // The legend: a key of the kinds (measured with whiskers), then one entry per group.
+    assert.deepEqual(probability.legend.filter((entry) => /\bmeasured\b/.test(entry.swatch)).map((entry) => entry.text),
+      ['measured, whiskers: 95 % interval']);
+    assert.equal(probability.legend.filter((entry) => entry.group !== undefined).length, 4);
 
     // A click on a legend entry hides its series, another shows it again.
     const shown = () => page.evaluate(() => document.getElementById('plot-probability').uplot.series[1].show);
-    await page.locator('#plot-probability .legend li').first().click();
+    const firstGroup = page.locator('#plot-probability .legend li[data-group]').first();
+    await firstGroup.click();
     assert.equal(await shown(), false);
-    await page.locator('#plot-probability .legend li').first().click();
+    await firstGroup.click();
     assert.equal(await shown(), true);
 
     // Every plot along the speed spans the tested speeds, not whole decades, with a tick at each.
@@ -311,11 +314,12 @@ test('the correlations service: fitted curves with bands over the points, critic
     // and the small-strain rings, in uPlot's data.
     assert.equal(probability.seriesLabels.length,
       4 + 3 * fitted.length + (probability.curves.length - 4 - fitted.length));
-    // The legend keeps fitted and measured apart: a dashed swatch over a band for each fit.
-    for (const entry of probability.legend.filter((e) => e.text.endsWith('(fit)'))) assert.match(entry.swatch,
-      /\bfitted\b.*\bband\b/);
-    for (const entry of probability.legend.filter((e) => !/\(fit\)|^outside/.test(e.text))) assert.match(entry.swatch,
-      /\bmeasured\b/);
+    // The legend keeps fitted and measured apart: its key has a swatch of each, a fit's dashed over
+    // a band; each group's entry stands for both of its series.
+    const kinds = probability.legend.filter((entry) => entry.group === undefined && !entry.text.startsWith('outside'));
+    assert.deepEqual(kinds.map((entry) => entry.text), ['measured, whiskers: 95 % interval', 'fit, band: 95 % interval']);
+    assert.match(kinds[0].swatch, /\bmeasured\b.*\bwhiskers\b/);
+    assert.match(kinds[1].swatch, /\bfitted\b.*\bband\b/);
 
     const critical = await chartContents(page, 'plot-critical');
     const expected = [];

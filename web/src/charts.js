@@ -12,17 +12,46 @@ import { el, replaceChildren } from './dom.js';
 import { axisTicks, paddedRange, spacedLabels } from './chart_scales.js';
 import { legend } from './chart_legend.js';
 
-const kPalette = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2', '#b3261e', '#00838f', '#8d6e00', '#455a64',
+const kPalette = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2', '#00838f', '#b3261e', '#8d6e00', '#455a64',
   '#d81b60', '#5d4037', '#3949ab', '#689f38'];
 const kHeight = 300;
 const kDashes = { dashed: [7, 4], dotted: [2, 3] };
 
-function translucent(color, alpha) {
+// The red, green and blue of '#rrggbb' or 'rgb(r, g, b)'.
+function channels(color) {
+  if (color.startsWith('rgb')) return color.match(/\d+/g).slice(0, 3).map(Number);
   const value = Number.parseInt(color.slice(1), 16);
-  return `rgba(${value >> 16}, ${(value >> 8) & 255}, ${value & 255}, ${alpha})`;
+  return [value >> 16, (value >> 8) & 255, value & 255];
+}
+
+function translucent(color, alpha) {
+  return `rgba(${channels(color).join(', ')}, ${alpha})`;
 }
 
 export const paletteColor = (i) => kPalette[i % kPalette.length];
+
+// `color` mixed with white by `share` (0: the colour, 1: white).
+function lighter(color, share) {
+  return `rgb(${channels(color).map((channel) => Math.round(channel + (255 - channel) * share)).join(', ')})`;
+}
+
+// Colours of curves grouped by up to two axes (curve.groupValues): one hue per value of one axis
+// and, where there is a second (N, say), lighter shades for its smaller values; a curve keeps its
+// colour in every plot of the page.
+export function colourGroups(curves) {
+  const keys = Object.keys((curves[0] || {}).groupValues || {});
+  const shadeAxis = keys.length === 2 ? (keys.includes('primaries') ? 'primaries' : keys[0]) : null;
+  const hueAxis = keys.find((key) => key !== shadeAxis);
+  const values = (axis) => [...new Set(curves.map((curve) => JSON.stringify(curve.groupValues[axis])))].sort((a, b) =>
+    (JSON.parse(a) < JSON.parse(b) ? -1 : 1));
+  const [hues, shades] = [values(hueAxis), shadeAxis ? values(shadeAxis) : []];
+  for (const curve of curves) {
+    const hue = paletteColor(Math.max(0, hues.indexOf(JSON.stringify(curve.groupValues[hueAxis]))));
+    const shade = shadeAxis ? shades.indexOf(JSON.stringify(curve.groupValues[shadeAxis])) : 0;
+    curve.color = shadeAxis && shades.length > 1 ? lighter(hue, (0.5 * (shades.length - 1 - shade)) / (shades.length - 1)) : hue;
+  }
+  return curves;
+}
 
 // Gives each curve without a colour the next one of the palette, and without a style 'measured'.
 export function assignColors(curves) {

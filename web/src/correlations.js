@@ -63,14 +63,16 @@ export class Correlations {
     const documents = await Promise.all(pairs.map(({ fit }) => this.document(fit.name)));
     return pairs.flatMap(({ curve, fit }, i) => (documents[i].curves || []).slice(0, 1).map((fitted) => ({
       label: `${curve.label} (fit)`, color: curve.color, style: 'fitted', fit: fit.name,
+      group: curve.group, groupLabel: curve.groupLabel, styleLabel: 'fit, band: 95 % interval',
       points: fitted.points.map((point) => ({ x: point.dose, y: point.value, lo: point.ci95[0], hi: point.ci95[1] })),
     })));
   }
 
   // Fitted critical values against N: per level and per condition (the values of the group's axes
   // other than N outside the slice), the groups' estimates; v50 carries its 95 % interval as a
-  // band and is drawn solid, v10 dashed, v90 dotted. `condition` keys the condition, so that the
-  // caller can give a condition's measured and fitted series one colour.
+  // band and is drawn solid, v10 dashed, v90 dotted. `group` keys the condition (its axis values
+  // in `groupValues`), so that a condition's measured and fitted series share a colour and an
+  // entry of the legend.
   criticalCurves(outcome, xAxis, slice) {
     const series = new Map();
     for (const fit of this.groupFits(outcome, xAxis, slice)) {
@@ -82,8 +84,11 @@ export class Correlations {
         const level = levelName(critical.level, fit.dose);
         const key = `${level} ${valueKey(others)}`;
         const where = others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`);
+        const groupValues = Object.fromEntries(others);
         if (!series.has(key)) series.set(key, { label: `fitted ${level}${where.join('')}`, level, style: 'fitted',
-          condition: conditionKey(Object.fromEntries(others)), dash: kLevelDashes[critical.level], points: [] });
+          groupValues, group: conditionKey(groupValues), groupLabel: where.join('').slice(2) || 'all',
+          styleLabel: `fitted ${level}${critical.level === 0.5 ? ', band: 95 % interval' : ''}`,
+          dash: kLevelDashes[critical.level], points: [] });
         const [lo, hi] = critical.level === 0.5 && critical.ci95 ? critical.ci95 : [null, null];
         series.get(key).points.push({ x: primaries, y: critical.estimate, lo, hi });
       }

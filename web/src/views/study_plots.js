@@ -5,7 +5,7 @@
 // draws; a newer draw stops an older one at its next chart.
 import { getJson } from '../api.js';
 import { el, replaceChildren, select } from '../dom.js';
-import { assignColors, paletteColor, plotCurves } from '../charts.js';
+import { colourGroups, plotCurves } from '../charts.js';
 import {
   alongAxis, axisLabel, conditionKey, criticalSpeedCurves, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
   meanOf, probabilityOf, shortAxisLabel, sliceAxes, valueKey,
@@ -64,15 +64,16 @@ function createPanels() {
   };
 }
 
-// The measured crossings and fitted critical values of one condition share its colour.
-function colourByCondition(curves) {
-  const conditions = [...new Set(curves.map((curve) => curve.condition))];
-  for (const curve of curves) curve.color = paletteColor(conditions.indexOf(curve.condition));
+// Measured curves of the series axes' groups (series.js curvesAlong), coloured by group, each the
+// measured member of its group in the legend (chart_legend.js).
+function measuredGroups(curves, styleLabel) {
+  return colourGroups(curves).map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
 }
 
 function measuredCritical(measured, xAxis) {
   return criticalSpeedCurves(measured).map((curve) => ({
-    ...curve, style: 'points', condition: conditionKey(curve.groupValues),
+    ...curve, style: 'points', group: conditionKey(curve.groupValues), groupLabel: curve.label,
+    styleLabel: `measured ${levelName(0.5, xAxis)}`,
     label: `measured ${levelName(0.5, xAxis)}${curve.label === 'all' ? '' : `, ${curve.label}`}` }));
 }
 
@@ -84,7 +85,7 @@ function drawCritical(critical, view, measured, fitted) {
   const speed = view.xAxis === 'impact_speed';
   critical.heading.textContent = `Critical ${speed ? 'speed' : axisLabel(view.xAxis)} of ${view.outcome} against N`;
   const points = measuredCritical(measured, view.xAxis);
-  colourByCondition([...points, ...fitted]);
+  colourGroups([...points, ...fitted]);
   plotCurves(critical.chart, [...points, ...fitted], { xLabel: 'N (primaries)',
     yLabel: speed ? withUnit('critical speed', view.units.speed) : `critical ${shortAxisLabel(view.xAxis)}`,
     yLog: true, fitIntervals: false });
@@ -125,7 +126,8 @@ function createOutcomePlots({ probability, critical }, correlationsPanel) {
     await nextTask();
     if (mine !== drawing) return;
     const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice };
-    const measured = assignColors(curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) }));
+    const measured = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) }),
+      'measured, whiskers: 95 % interval');
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
     const drawBoth = async (fitted, fittedCritical) => {
@@ -168,8 +170,9 @@ export function createPlots({ state }) {
     for (const [chart, quantity, yLabel, bounds] of charts) {
       await nextTask();
       if (mine !== drawing) return;
-      plotCurves(chart, curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
-        { xLabel: view.xLabel, yLabel, bounds });
+      const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
+        'mean, whiskers: 95 % interval');
+      plotCurves(chart, curves, { xLabel: view.xLabel, yLabel, bounds });
     }
     await nextTask();
     if (mine !== drawing) return;
