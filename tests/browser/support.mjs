@@ -7,6 +7,7 @@ import { mkdtempSync, readFileSync, existsSync, mkdirSync, writeFileSync, rmSync
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { setTimeout as sleep } from 'node:timers/promises';
+import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
 
 export const binary = process.env.AEROBREAK_BINARY;
@@ -120,6 +121,21 @@ export async function openPage(browser, service) {
 
 export function launchBrowser() {
   return chromium.launch({ executablePath: chromiumPath, args: chromiumArguments });
+}
+
+// A service with a fresh store and a browser, started before a file's tests (handed to
+// `started({ service, browser })`) and stopped after them.
+export function serviceAndBrowser(started) {
+  const shared = {};
+  before(async () => {
+    shared.service = await Service.start();
+    shared.browser = await launchBrowser();
+    started(shared);
+  });
+  after(async () => {
+    await shared.browser?.close();
+    await shared.service?.stop();
+  });
 }
 
 // Runs `body`; on failure writes a full-page screenshot named after the test, then fails.

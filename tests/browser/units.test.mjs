@@ -3,10 +3,10 @@
 // physical study and d/τ, k_n d², τ, d for a reduced one, and the numbers shown are the result's in
 // those units. The physical study is watched while it runs: its state, its progress bar, and its
 // correlations appearing once it ends, without a reload.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { Service, launchBrowser, openPage, smallStudy, until, withScreenshot } from './support.mjs';
+import { openPage, serviceAndBrowser, smallStudy, until, withScreenshot } from './support.mjs';
 
 let service;
 let browser;
@@ -23,15 +23,7 @@ function smallPhysicalStudy() {
   return study;
 }
 
-before(async () => {
-  service = await Service.start();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await service?.stop();
-});
+serviceAndBrowser((started) => ({ service, browser } = started));
 
 // Texts of the page's labels: headers, fact labels, chart axis labels and legend entries.
 function labels(page) {
