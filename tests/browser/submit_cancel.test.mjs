@@ -102,8 +102,17 @@ test('the form: the default study offered, fields checked as typed, the JSON vie
     assert.equal(await page.locator('#form-fractal_dimension').isVisible(), false);
     assert.equal('fractal_dimension' in (await jsonView(page)).base.cluster.generator, false);
 
-    // The JSON view: an edit there shows in the form.
+    // The reduced example: its one size, set in the base, shows as the sizes; its material is the
+    // JSON view's; its speeds are in d/τ. Back to the study being edited through the JSON view.
     const edited = await jsonView(page);
+    await page.selectOption('#choose-template', '1');
+    assert.equal(await page.inputValue('#form-primaries'), '16');
+    assert.equal(await message(page, 'primaries'), '');
+    assert.equal(await page.isDisabled('#form-youngs_modulus'), true);
+    assert.match(await page.textContent('#form-material-note'), /reduced units/);
+    assert.equal(await page.textContent('[data-pointer="/axes/impact_speed/values"] .unit'), 'd/τ');
+
+    // The JSON view: an edit there shows in the form.
     edited.name = 'from the form';
     await page.fill('#study-json', JSON.stringify(edited, null, 2));
     assert.equal(await page.inputValue('#form-name'), 'from the form');

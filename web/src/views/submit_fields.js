@@ -1,5 +1,6 @@
 // The fields of the submit form for the common physical study (docs/WEB.md): each names the study
-// field it writes (a JSON pointer), how its text reads, the limits of the schema at that field
+// field it writes (a JSON pointer; for an axis, `base` names the one value a study without the
+// axis sets in its base instead), how its text reads, the limits of the schema at that field
 // (`schema` names where: the browser test compares them with the schema files) and, where a value
 // is allowed but unlikely for an aerosol cluster, the range outside which the form says so
 // without refusing it. Pure data and functions: no DOM, so that node reads them too.
@@ -27,9 +28,11 @@ export const kFormFields = [
   { id: 'diameter', label: 'primary diameter d', unit: 'm', pointer: '/base/material/diameter', kind: 'number',
     exclusiveMinimum: 0, usual: [1e-9, 1e-5], schema: `${kMaterial}/diameter`, material: true },
   { id: 'speeds', label: 'impact speeds v₀', unit: 'speed', pointer: '/axes/impact_speed/values', kind: 'numbers',
-    exclusiveMinimum: 0, usual: [0, 1000], schema: 'case.schema.json#/$defs/impact/properties/speed' },
+    exclusiveMinimum: 0, usual: [0, 1000], schema: 'case.schema.json#/$defs/impact/properties/speed',
+    base: '/base/impact/speed' },
   { id: 'primaries', label: 'cluster sizes N', unit: 'primaries', pointer: '/axes/primaries/values', kind: 'integers',
-    minimum: 1, maximum: 10000000, usual: [2, 100000], schema: `${kGenerator}/primaries` },
+    minimum: 1, maximum: 10000000, usual: [2, 100000], schema: `${kGenerator}/primaries`,
+    base: '/base/cluster/generator/primaries' },
   { id: 'generator', label: 'generator', pointer: '/base/cluster/generator/method', kind: 'choice',
     options: [['ballistic', 'ballistic cluster-cluster'], ['dlca', 'diffusion-limited (DLCA)'],
       ['tunable', 'tunable D_f, k_f']],

@@ -22,12 +22,12 @@ export function caseCount(document) {
   return sizes.reduce((product, size) => product * size, 1) * (Number(getAt(document, '/replicates/count')) || 1);
 }
 
-// Writes a field's value; the generator also drops the fields the new one does not take and adds
-// those it needs, and the sizes axis replaces a size the base may set.
+// Writes a field's value; an axis replaces the one value the base may set, and the generator drops
+// the fields the new one does not take and adds those it needs.
 function writeField(document, field, value) {
   if (field.id !== 'generator') {
     setAt(document, field.pointer, value);
-    if (field.id === 'primaries') removeAt(document, '/base/cluster/generator/primaries');
+    if (field.base) removeAt(document, field.base);
     return;
   }
   for (const [other, fields] of Object.entries(kGeneratorFields))
@@ -103,6 +103,15 @@ export function createStudyForm({ current, changed }) {
     return entry.row;
   }), extra);
   const materialNote = el('p', { class: 'note', id: 'form-material-note' });
+  // An axis's values, or the one value the base sets; undefined for an axis given as a range.
+  const valueOf = (document, field) => {
+    const value = getAt(document, field.pointer);
+    if (value !== undefined || !field.base) return value;
+    const base = getAt(document, field.base);
+    return base === undefined ? undefined : [base];
+  };
+  const isRange = (document, field) => field.base && getAt(document, field.pointer) === undefined &&
+    getAt(document, field.pointer.slice(0, field.pointer.lastIndexOf('/'))) !== undefined;
   const summary = el('p', { class: 'note', id: 'form-summary' });
   const node = el('form', { class: 'study-form', id: 'study-form', onsubmit: (event) => event.preventDefault() },
     group('Study', ['name', 'description']),
@@ -118,10 +127,11 @@ export function createStudyForm({ current, changed }) {
     const method = getAt(document, '/base/cluster/generator/method') || 'ballistic';
     for (const { field, row, input, unit } of entries.values()) {
       row.hidden = Boolean(field.only && field.only !== method);
-      input.disabled = Boolean(field.material && !physical);
+      input.disabled = Boolean((field.material && !physical) || isRange(document, field));
+      input.title = isRange(document, field) ? 'a range of values: edit it in the JSON view' : '';
       unit.textContent = unitOf(field, document) || '';
       if (input !== globalThis.document.activeElement)
-        input.value = field.kind === 'choice' ? method : fieldText(field, getAt(document, field.pointer));
+        input.value = field.kind === 'choice' ? method : fieldText(field, valueOf(document, field));
     }
     walls.fill(getAt(document, kWallPointer) || [getAt(document, '/base/wall/adhesive') ?? true]);
     materialNote.textContent = physical ? ''
