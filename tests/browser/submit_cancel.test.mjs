@@ -112,6 +112,11 @@ test('the form: the default study offered, fields checked as typed, the JSON vie
     assert.match(await page.textContent('#form-material-note'), /reduced units/);
     assert.equal(await page.textContent('[data-pointer="/axes/impact_speed/values"] .unit'), 'd/τ');
 
+    // While the JSON view is not JSON the form waits, so that it cannot overwrite the text typed.
+    await page.fill('#study-json', '{"name": ');
+    assert.match(await page.textContent('#study-json-message'), /not JSON/);
+    assert.equal(await page.isDisabled('#form-name'), true);
+
     // The JSON view: an edit there shows in the form.
     edited.name = 'from the form';
     await page.fill('#study-json', JSON.stringify(edited, null, 2));

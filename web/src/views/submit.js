@@ -84,9 +84,11 @@ export async function showSubmit(view) {
         throw new Error('a study is a JSON object');
       document = parsed;
       jsonMessage.textContent = '';
+      form.lock(false);
       form.show(document);
     } catch (error) {
-      jsonMessage.textContent = `not JSON: ${error.message}`;
+      jsonMessage.textContent = `not JSON: ${error.message} (the form waits until it is)`;
+      form.lock(true);
     }
   });
   const file = el('input', { type: 'file', id: 'study-file', accept: '.json,application/json' });

@@ -152,6 +152,11 @@ export function createStudyForm({ current, changed }) {
       showMessage(walls, null, null);
     },
     problems: () => problems.size,
+    // Locks the form while the JSON view is not JSON, so that no field overwrites what the user is
+    // typing there.
+    lock(locked) {
+      for (const fieldset of node.querySelectorAll('fieldset')) fieldset.disabled = locked;
+    },
     // Shows a message of the service at the form field whose pointer is `pointer` or lies above
     // it; false when no shown field is there.
     markViolation(pointer, message) {
