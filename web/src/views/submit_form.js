@@ -68,6 +68,36 @@ function showMessage(entry, error, note) {
   entry.input?.setAttribute('aria-invalid', String(Boolean(error)));
 }
 
+// An axis's values, or the one value the base sets; undefined for an axis given as a range.
+function valueOf(document, field) {
+  const value = getAt(document, field.pointer);
+  if (value !== undefined || !field.base) return value;
+  const base = getAt(document, field.base);
+  return base === undefined ? undefined : [base];
+}
+
+const isRange = (document, field) => field.base && getAt(document, field.pointer) === undefined &&
+  getAt(document, field.pointer.slice(0, field.pointer.lastIndexOf('/'))) !== undefined;
+
+// Shows the document's values in the form's fields (leaving alone the one being typed in), the
+// walls, the note on a reduced material and the number of cases.
+function fillForm(document, { entries, walls, materialNote, summary }) {
+  const physical = isPhysical(document);
+  const method = getAt(document, '/base/cluster/generator/method') || 'ballistic';
+  for (const { field, row, input, unit } of entries.values()) {
+    row.hidden = Boolean(field.only && field.only !== method);
+    input.disabled = Boolean((field.material && !physical) || isRange(document, field));
+    input.title = isRange(document, field) ? 'a range of values: edit it in the JSON view' : '';
+    unit.textContent = unitOf(field, document) || '';
+    if (input !== globalThis.document.activeElement)
+      input.value = field.kind === 'choice' ? method : fieldText(field, valueOf(document, field));
+  }
+  walls.fill(getAt(document, kWallPointer) || [getAt(document, '/base/wall/adhesive') ?? true]);
+  materialNote.textContent = physical ? ''
+    : 'This study is in reduced units: its material (γ/k_n, ν) is edited in the JSON view.';
+  replaceChildren(summary, `${caseCount(document)} cases: every combination of the axes' values, times the replicates.`);
+}
+
 // `current()` gives the study document, `changed(document)` is called after the form wrote into it.
 export function createStudyForm({ current, changed }) {
   const entries = new Map();
@@ -102,43 +132,15 @@ export function createStudyForm({ current, changed }) {
     entries.set(id, entry);
     return entry.row;
   }), extra);
-  const materialNote = el('p', { class: 'note', id: 'form-material-note' });
-  // An axis's values, or the one value the base sets; undefined for an axis given as a range.
-  const valueOf = (document, field) => {
-    const value = getAt(document, field.pointer);
-    if (value !== undefined || !field.base) return value;
-    const base = getAt(document, field.base);
-    return base === undefined ? undefined : [base];
-  };
-  const isRange = (document, field) => field.base && getAt(document, field.pointer) === undefined &&
-    getAt(document, field.pointer.slice(0, field.pointer.lastIndexOf('/'))) !== undefined;
-  const summary = el('p', { class: 'note', id: 'form-summary' });
+  const parts = { entries, walls, materialNote: el('p', { class: 'note', id: 'form-material-note' }),
+    summary: el('p', { class: 'note', id: 'form-summary' }) };
   const node = el('form', { class: 'study-form', id: 'study-form', onsubmit: (event) => event.preventDefault() },
     group('Study', ['name', 'description']),
     group('Material of the primaries (SI)', ['youngs_modulus', 'poisson_ratio', 'density', 'surface_energy',
-      'diameter'],
-      [materialNote]),
+      'diameter'], [parts.materialNote]),
     group('Sweep', ['speeds', 'primaries', 'generator', 'fractal_dimension', 'prefactor'], [walls.row]),
-    group('Replicates', ['replicates', 'seed']), summary);
-
-  // Shows the document's values in the fields (leaving alone the one being typed in).
-  function fill(document) {
-    const physical = isPhysical(document);
-    const method = getAt(document, '/base/cluster/generator/method') || 'ballistic';
-    for (const { field, row, input, unit } of entries.values()) {
-      row.hidden = Boolean(field.only && field.only !== method);
-      input.disabled = Boolean((field.material && !physical) || isRange(document, field));
-      input.title = isRange(document, field) ? 'a range of values: edit it in the JSON view' : '';
-      unit.textContent = unitOf(field, document) || '';
-      if (input !== globalThis.document.activeElement)
-        input.value = field.kind === 'choice' ? method : fieldText(field, valueOf(document, field));
-    }
-    walls.fill(getAt(document, kWallPointer) || [getAt(document, '/base/wall/adhesive') ?? true]);
-    materialNote.textContent = physical ? ''
-      : 'This study is in reduced units: its material (γ/k_n, ν) is edited in the JSON view.';
-    replaceChildren(summary,
-      `${caseCount(document)} cases: every combination of the axes' values, times the replicates.`);
-  }
+    group('Replicates', ['replicates', 'seed']), parts.summary);
+  const fill = (document) => fillForm(document, parts);
 
   return {
     node,
