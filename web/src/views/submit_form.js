@@ -95,7 +95,8 @@ function fillForm(document, { entries, walls, materialNote, summary }) {
   walls.fill(getAt(document, kWallPointer) || [getAt(document, '/base/wall/adhesive') ?? true]);
   materialNote.textContent = physical ? ''
     : 'This study is in reduced units: its material (γ/k_n, ν) is edited in the JSON view.';
-  replaceChildren(summary, `${caseCount(document)} cases: every combination of the axes' values, times the replicates.`);
+  replaceChildren(summary,
+    `${caseCount(document)} cases: every combination of the axes' values, times the replicates.`);
 }
 
 // `current()` gives the study document, `changed(document)` is called after the form wrote into it.
