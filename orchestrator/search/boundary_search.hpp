@@ -26,7 +26,6 @@ inline constexpr std::size_t kMinimumSearchResults = 80;
 
 enum class GroupState { searching, converged, budget_spent, out_of_range, error };
 std::string_view to_string(GroupState state);
-std::optional<GroupState> parse_group_state(std::string_view text);
 
 // A crossing P(response) = level, in axis units, with its 95 % profile-likelihood interval.
 struct CrossingEstimate {
