@@ -126,7 +126,8 @@ void list_study_progress(Endpoints& e, const httplib::Request& request, httplib:
     json["progress"] = to_json(*e.store.progress(study.id));
     items.push_back(std::move(json));
   }
-  send_json(response, 200, {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  send_json(response, 200,
+            {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
 }
 
 void get_study_grid(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
@@ -140,7 +141,8 @@ void get_study_case_table(Endpoints& e, const httplib::Request& request, httplib
   const auto cases = e.store.cases(study.id, filter, page);
   nlohmann::ordered_json items = nlohmann::ordered_json::array();
   for (const auto& record : cases.items) items.push_back(case_row_json(record));
-  send_json(response, 200, {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  send_json(response, 200,
+            {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
 }
 
 void get_study_fragment_sizes(Endpoints& e, const httplib::Request& request, httplib::Response& response) {

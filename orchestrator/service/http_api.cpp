@@ -70,7 +70,8 @@ void list_studies(Endpoints& e, const httplib::Request& request, httplib::Respon
   const auto studies = e.store.studies(page);
   nlohmann::ordered_json items = nlohmann::ordered_json::array();
   for (const auto& study : studies.items) items.push_back(to_json(study, false));
-  send_json(response, 200, {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  send_json(response, 200,
+            {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
 }
 
 void submit_study(Endpoints& e, const httplib::Request& request, httplib::Response& response) {

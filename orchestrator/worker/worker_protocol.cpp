@@ -23,7 +23,8 @@ std::int64_t integer_field(const J& message, const char* name, std::int64_t lowe
   const bool fits = found->is_number_integer() &&
                     (found->is_number_unsigned()
                          ? found->template get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
-                         : found->template get<std::int64_t>() >= lowest && found->template get<std::int64_t>() <= highest);
+                         : found->template get<std::int64_t>() >= lowest &&
+                               found->template get<std::int64_t>() <= highest);
   if (!fits)
     throw ProtocolError(std::string("/") + name + ": must be an integer in [" + std::to_string(lowest) + ", " +
                         std::to_string(highest) + "] (got " + excerpt(found->dump()) + ")");

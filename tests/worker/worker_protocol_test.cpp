@@ -113,7 +113,8 @@ TEST_CASE("Every message a job writes decodes to its typed message with every fi
   CHECK(started.host == "n2");
 
   const Json result{{"outcome", "stick"}, {"retained_mass_fraction", 1.0}};
-  const auto with_file = std::get<CaseResult>(job_message(result_message(5, 0, 1, 12.5, result, "/d/5.h5", 2048, "ab12")));
+  const auto with_file =
+      std::get<CaseResult>(job_message(result_message(5, 0, 1, 12.5, result, "/d/5.h5", 2048, "ab12")));
   CHECK(with_file.case_id == 5);
   CHECK(with_file.rank == 1);
   CHECK(with_file.seconds == 12.5);
@@ -145,14 +146,17 @@ TEST_CASE("A job message with wrong fields is told apart: an answer for its case
   CHECK(no_result.case_id == 4);
   CHECK(no_result.attempt == 1);
   CHECK_THAT(no_result.problem, Contains("/result"));
-  const auto bad_kind = std::get<UnreadableAnswer>(job_message(
-      {{"type", "failed"}, {"case", 4}, {"attempt", 1}, {"rank", 0}, {"seconds", 1.0}, {"kind", "oom"}, {"error", "x"}}));
+  const auto bad_kind = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
+                                                                 {"rank", 0}, {"seconds", 1.0}, {"kind", "oom"},
+                                                                 {"error", "x"}}));
   CHECK_THAT(bad_kind.problem, Contains("/kind"));
-  const auto negative = std::get<UnreadableAnswer>(job_message(
-      {{"type", "failed"}, {"case", 4}, {"attempt", 1}, {"rank", 0}, {"seconds", -1.0}, {"kind", "error"}, {"error", "x"}}));
+  const auto negative = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
+                                                                 {"rank", 0}, {"seconds", -1.0}, {"kind", "error"},
+                                                                 {"error", "x"}}));
   CHECK_THAT(negative.problem, Contains("/seconds"));
   // Without its case or attempt, or of no known type, it is only logged.
-  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "started"}, {"attempt", 1}})).problem, Contains("/case"));
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "started"}, {"attempt", 1}})).problem,
+             Contains("/case"));
   CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "paused"}})).problem, Contains("unknown message type"));
   CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "ready"}, {"ranks", 2}, {"hosts", {"n1"}}})).problem,
              Contains("/hosts"));

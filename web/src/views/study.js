@@ -128,7 +128,10 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
-  loadResultParts(id, { hasResults: study.progress.counts.done > 0, plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
+  loadResultParts(id, {
+    hasResults: study.progress.counts.done > 0, plots, tablesHolder,
+    redraw: () => plots.draw(current.grid), stopped: () => stopped,
+  });
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
