@@ -102,7 +102,7 @@ TEST_CASE("Progress, outcomes and grid of a study that does not exist are 404 wi
   }
 }
 
-TEST_CASE("A study's and a case's answers name their units; the templates hold the default study", "[service]") {
+TEST_CASE("A study's and a case's answers name their units, and the templates hold the default study", "[service]") {
   ScratchDirectory scratch("read-endpoints-units");
   ServiceProcess service(scratch.path());
   const auto templates = service.get("/api/templates");

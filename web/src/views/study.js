@@ -1,11 +1,11 @@
 // A study: its description, progress and axes, plots of the server's per-grid-point statistics,
-// the optional correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
+// once it has results the correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
 import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
 import { progressBar, studyState } from '../progress.js';
-import { Correlations, loadCorrelationSummary, tableFormats } from '../correlations.js';
+import { Correlations, loadCorrelationSummary } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
 import { tablesPanel } from './study_tables.js';
@@ -83,24 +83,23 @@ function controls(state, grid, units, onChange) {
     slices);
 }
 
-// The parts other services add (correlations, lookup tables), asked for once the page is drawn:
-// fitting a large study the first time takes seconds, and the page does not wait for it. A study
-// without results has nothing to fit or tabulate (the services answer 404 or 409): neither is
-// asked then. While the study runs they are asked again when results first arrive, at most every
-// kCorrelationsRefreshMs while more arrive, and once more when it ends.
+// The parts a study has once it has results: the lookup-table links, and the correlations, asked
+// for once the page is drawn (fitting a large study the first time takes seconds, and the page
+// does not wait for it). A study without results has nothing to fit or tabulate (the correlations
+// answer 404, the tables 409): neither is shown then. While the study runs the correlations are
+// asked again when results first arrive, at most every kCorrelationsRefreshMs while more arrive,
+// and once more when it ends.
 const kCorrelationsRefreshMs = 30000;
 
-function createOptionalParts(id, { plots, tablesHolder, redraw, stopped }) {
+function createResultParts(id, { plots, tablesHolder, redraw, stopped }) {
   let asked = null;
   function ask(study) {
+    if (!asked) replaceChildren(tablesHolder, tablesPanel(id));
     asked = { done: study.progress.counts.done, complete: study.progress.complete, at: Date.now() };
     loadCorrelationSummary(id).then((summary) => {
       if (stopped()) return;
       plots.setCorrelations(summary ? new Correlations(id, summary) : null);
       redraw();
-    }).catch(() => {});
-    tableFormats(id).then((formats) => {
-      if (!stopped()) replaceChildren(tablesHolder, tablesPanel(id, formats));
     }).catch(() => {});
   }
   // Asks when `study` has results the last answer did not see and it is time to.
@@ -151,10 +150,9 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid, units), caseTable.load(grid.axes, units, firstCases)]);
-  const askOptionalParts = createOptionalParts(id, { plots, tablesHolder, redraw: () => plots.drawOutcome(current.grid,
-    units),
-    stopped: () => stopped });
-  askOptionalParts(study);
+  const askResultParts = createResultParts(id, { plots, tablesHolder,
+    redraw: () => plots.drawOutcome(current.grid, units), stopped: () => stopped });
+  askResultParts(study);
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`),
@@ -163,7 +161,7 @@ export async function showStudy(view, parameters, { showNotice }) {
     const gridChanged = countsKey(nextStudy) !== countsKey(current.study);
     current = { study: nextStudy, grid: nextGrid };
     replaceChildren(headerHolder, header(nextStudy, { onCancel }));
-    askOptionalParts(nextStudy);
+    askResultParts(nextStudy);
     if (!gridChanged) return;
     caseTable.forget();
     await Promise.all([plots.draw(nextGrid, units), caseTable.load(nextGrid.axes, units)]);
