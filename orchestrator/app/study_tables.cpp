@@ -30,8 +30,8 @@ RenderedTable export_file(Store& store, StudyFits& fits, const StudyRecord& stud
   return render_table(export_lookup_table(store, fits, study, request), request, study.id);
 }
 
-StudyTables::StudyTables(Store& store, std::shared_ptr<StudyFits> fits)
-    : store_(store), fits_(std::move(fits)), instance_(std::to_string(std::random_device{}())) {}
+StudyTables::StudyTables(Store& store, StudyFits& fits)
+    : store_(store), fits_(fits), instance_(std::to_string(std::random_device{}())) {}
 
 std::shared_ptr<const KeptFile> StudyTables::file(const StudyRecord& study, const ExportRequest& request,
                                                   const std::string& request_key) {
@@ -48,7 +48,7 @@ std::shared_ptr<const KeptFile> StudyTables::file(const StudyRecord& study, cons
 std::shared_ptr<const KeptFile> StudyTables::make(const StudyRecord& study, const ExportRequest& request, const Key& key) {
   // The version was read before the table: a file may be newer than its tag, never older.
   auto file = std::make_shared<KeptFile>();
-  file->file = export_file(store_, *fits_, study, request);
+  file->file = export_file(store_, fits_, study, request);
   file->gzip_body = gzip(file->file.content);
   file->etag = "\"" + instance_ + "-" + std::to_string(study.id) + "-" + std::to_string(std::get<1>(key)) + "-" +
                sha256_hex(std::get<2>(key)).substr(0, 16) + "\"";

@@ -37,7 +37,8 @@ struct KeptFile {
 // larger than kMaxFileBytes is built for its request and not kept.
 class StudyTables {
  public:
-  StudyTables(Store& store, std::shared_ptr<StudyFits> fits);
+  // `fits` outlives the tables: the study's fits the fit tables and the code read.
+  StudyTables(Store& store, StudyFits& fits);
   // `request_key`: the request's canonical text (its parameters, sorted).
   std::shared_ptr<const KeptFile> file(const StudyRecord& study, const ExportRequest& request, const std::string& request_key);
 
@@ -49,7 +50,7 @@ class StudyTables {
   static constexpr std::size_t kMaxBytes = 256u << 20;
   static constexpr std::size_t kMaxFileBytes = 32u << 20;
   Store& store_;
-  const std::shared_ptr<StudyFits> fits_;
+  StudyFits& fits_;
   const std::string instance_;  // drawn at start: a tag from another process never matches
   std::mutex mutex_;
   std::map<Key, std::shared_ptr<const KeptFile>> files_;

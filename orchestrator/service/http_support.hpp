@@ -14,8 +14,8 @@
 #include "orchestrator/study/study.hpp"
 
 // What every group of endpoints shares: the JSON error answer, query and path parameters, and the
-// wrapper that turns a RequestError into its answer. Each group of endpoints registers itself from a
-// file of its own (register_http_api calls them).
+// wrapper that turns a RequestError into its answer. Each group of endpoints lives in a file of its
+// own; routes.cpp lists them all.
 namespace aerobreak {
 
 // A request that cannot be served as asked: its status and the JSON body that says why.
@@ -55,10 +55,18 @@ void send_kept(const httplib::Request& request, httplib::Response& response, con
                std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
                const std::string& content_encoding = "");
 
-// Whether the client accepts a gzip-encoded answer (Accept-Encoding names gzip).
+
+// Whether the request's Accept-Encoding names gzip.
 bool accepts_gzip(const httplib::Request& request);
 
-// Runs a handler, turning RequestError into its JSON answer.
+// A successful answer of text, JSON or JavaScript goes out gzip-compressed when it is 1 kB or more
+// and the client accepts gzip, and as it is otherwise, through a content provider of known length,
+// which cpp-httplib sends untouched: left to itself, cpp-httplib compresses every such answer on every
+// request with Brotli at quality 11 (60 to 130 ms for a 15 kB page of the case table on a loaded
+// 2-core machine, over a second for the 145 kB plotting library; docs/PERFORMANCE.md, "Dashboard").
+void compress_answer(const httplib::Request& request, httplib::Response& response);
+
+// Runs a handler, turning RequestError into its JSON answer, and compresses the answer.
 template <typename Handler>
 httplib::Server::Handler guarded(Handler handler) {
   return [handler](const httplib::Request& request, httplib::Response& response) {
@@ -67,6 +75,7 @@ httplib::Server::Handler guarded(Handler handler) {
     } catch (const RequestError& error) {
       send_error(response, error);
     }
+    compress_answer(request, response);
   };
 }
 

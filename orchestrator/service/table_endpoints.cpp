@@ -1,8 +1,9 @@
 #include "orchestrator/service/table_endpoints.hpp"
 
+#include <algorithm>
+
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/service/http_support.hpp"
-#include <algorithm>
 
 namespace aerobreak {
 namespace {
@@ -26,11 +27,15 @@ std::string request_key(std::vector<std::pair<std::string, std::string>> paramet
   return key;
 }
 
-void send_table(const httplib::Request& request, httplib::Response& response, Store& store, StudyTables& tables) {
-  const auto study = existing_study(store, path_id(request));
+}  // namespace
+
+namespace endpoint {
+
+void get_study_table(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
   try {
     const auto parameters = query_parameters(request);
-    const auto kept = tables.file(study, parse_export_request(parameters), request_key(parameters));
+    const auto kept = e.tables.file(study, parse_export_request(parameters), request_key(parameters));
     response.set_header("Content-Disposition", "attachment; filename=\"" + kept->file.file_name + "\"");
     response.set_header("Vary", "Accept-Encoding");
     if (accepts_gzip(request)) send_kept(request, response, kept->etag, kept, kept->gzip_body, kept->file.content_type, "gzip");
@@ -40,13 +45,5 @@ void send_table(const httplib::Request& request, httplib::Response& response, St
   }
 }
 
-}  // namespace
-
-void register_table_endpoints(httplib::Server& server, Store& store, std::shared_ptr<StudyTables> tables) {
-  server.Get(R"(/api/studies/(\d+)/tables)",
-             guarded([&store, tables](const httplib::Request& request, httplib::Response& response) {
-               send_table(request, response, store, *tables);
-             }));
-}
-
+}  // namespace endpoint
 }  // namespace aerobreak

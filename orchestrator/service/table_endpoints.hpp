@@ -1,17 +1,12 @@
 #pragma once
-#include <httplib.h>
+#include "orchestrator/service/endpoints.hpp"
 
-#include <memory>
-
-#include "orchestrator/app/study_tables.hpp"
-#include "orchestrator/store/store.hpp"
-
-namespace aerobreak {
+namespace aerobreak::endpoint {
 
 // GET (and HEAD) /api/studies/ID/tables?format=...&kind=...: the study's lookup tables for
 // system codes (docs/EXPORT.md), computed on the store's reader connections (an export never
-// waits for, nor holds up, the scheduler), once per result-set version and request (`tables`),
-// sent gzip-compressed to a client that accepts it, with an ETag.
-void register_table_endpoints(httplib::Server& server, Store& store, std::shared_ptr<StudyTables> tables);
+// waits for, nor holds up, the scheduler), once per result-set version and request
+// (Endpoints::tables), sent gzip-compressed to a client that accepts it, with an ETag.
+void get_study_table(Endpoints&, const httplib::Request&, httplib::Response&);
 
-}  // namespace aerobreak
+}  // namespace aerobreak::endpoint

@@ -1,7 +1,6 @@
 #include "orchestrator/service/versioned_documents.hpp"
 
 #include <random>
-#include <stdexcept>
 #include <utility>
 
 #include "orchestrator/app/compression.hpp"
