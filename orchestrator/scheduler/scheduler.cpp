@@ -1,6 +1,7 @@
 #include "orchestrator/scheduler/scheduler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "orchestrator/worker/worker_protocol.hpp"
@@ -14,6 +15,7 @@ std::optional<AttemptEnd> attempt_end_of(const std::string& kind) {
   if (kind == "invalid") return AttemptEnd::invalid;
   if (kind == "wall_time") return AttemptEnd::wall_time;
   if (kind == "error") return AttemptEnd::error;
+  if (kind == "lost") return AttemptEnd::lost;
   return std::nullopt;
 }
 
@@ -114,12 +116,14 @@ void Scheduler::step() {
     // each may free a rank, and the freed rank gets its next case right after.
     auto message = job_->next_message(std::chrono::milliseconds(50));
     while (message && !stopping_) {
+      job_heard_ = Clock::now();
       handle(*message);
       message = job_->next_message(std::chrono::milliseconds(0));
     }
     if (!stopping_) {
       feed_job();
       check_hard_limits();
+      check_silence();
       stop_idle_job();
       reap_job();
     }
@@ -175,7 +179,9 @@ void Scheduler::launch_job() {
   }
   in_flight_.clear();
   job_told_to_stop_ = false;
+  job_silent_ = false;
   job_idle_since_ = Clock::now();
+  job_heard_ = Clock::now();
   {
     std::lock_guard lock(status_mutex_);
     status_.job_running = true;
@@ -223,6 +229,11 @@ void Scheduler::handle(const nlohmann::json& message) {
   }
   if (type == "protocol_error") {
     note("worker job reports a protocol error: " + text_or(message, "message", "(no message)"));
+    return;
+  }
+  if (type == "heartbeat") return;
+  if (type == "rank_lost") {
+    handle_rank_lost(message);
     return;
   }
   const auto case_id = message.value("case", std::int64_t{-1});
@@ -304,6 +315,29 @@ void Scheduler::check_hard_limits() {
   }
 }
 
+// A ready job that has said nothing (not even its heartbeat) for the silence limit is taken for
+// lost: seen with srun, which stayed running after Slurm had ended the job for a node failure
+// (tests/slurm/run_slurm_cluster.sh), holding its cases as running for ever.
+void Scheduler::check_silence() {
+  if (job_silent_ || !status().job_ready || Clock::now() - job_heard_ <= options_.silence_limit) return;
+  const auto silent = std::chrono::duration<double>(Clock::now() - job_heard_).count();
+  note("worker job " + std::to_string(status().job_id) + " has sent nothing for " + std::to_string(std::lround(silent)) +
+       " s; killing it");
+  job_silent_ = true;
+  job_->kill();
+}
+
+// Rank 0 gave up a rank that went silent; its case comes as a "failed" message of kind "lost".
+void Scheduler::handle_rank_lost(const nlohmann::json& message) {
+  const int ranks = message.value("ranks", 0);
+  note("worker job " + std::to_string(status().job_id) + " lost rank " + std::to_string(message.value("rank", -1)) +
+       " on " + text_or(message, "host", "?") + " (silent for " +
+       std::to_string(std::lround(message.value("silent_seconds", 0.0))) + " s); " + std::to_string(ranks) +
+       " rank(s) left");
+  std::lock_guard lock(status_mutex_);
+  if (ranks > 0) status_.ranks = std::min(status_.ranks, ranks);
+}
+
 void Scheduler::stop_idle_job() {
   if (job_told_to_stop_ || !in_flight_.empty() || !status().job_ready) return;
   if (Clock::now() - job_idle_since_ < options_.idle_shutdown) return;
@@ -328,7 +362,8 @@ void Scheduler::reap_job() {
   const auto job_id = status().job_id;
   const bool was_ready = status().job_ready;
   std::string note_text = job_told_to_stop_ && code == 0 ? "stopped when idle"
-                                                         : "ended with exit status " + std::to_string(code);
+                          : job_silent_ ? "was killed after sending nothing for the silence limit"
+                                        : "ended with exit status " + std::to_string(code);
   if (overdue_case_) {
     const auto& flight = in_flight_.at(overdue_case_->case_id);
     record_failure(overdue_case_->case_id, flight.attempt, AttemptEnd::wall_time,

@@ -61,6 +61,7 @@ std::string to_string(FailureKind kind) {
     case FailureKind::error: return "error";
     case FailureKind::wall_time: return "wall_time";
     case FailureKind::storage: return "storage";
+    case FailureKind::lost: return "lost";
   }
   return "error";
 }
@@ -148,6 +149,13 @@ Json failed_message(std::int64_t case_id, int attempt, int rank, double seconds,
 
 Json protocol_error_message(const std::string& message) {
   return Json{{"type", "protocol_error"}, {"message", message}};
+}
+
+Json heartbeat_message() { return Json{{"type", "heartbeat"}}; }
+
+Json rank_lost_message(int rank, const std::string& host, int ranks_left, double silent_seconds) {
+  return Json{{"type", "rank_lost"}, {"rank", rank}, {"host", host}, {"ranks", ranks_left},
+              {"silent_seconds", silent_seconds}};
 }
 
 std::optional<nlohmann::json> decode_job_line(std::string_view line) {

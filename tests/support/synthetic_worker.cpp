@@ -91,7 +91,12 @@ int main() {
   std::deque<std::string> lines;
   std::string buffer;
   bool stopping = false;
+  auto last_heartbeat = Clock::now();
   while (!stopping || !pending.empty()) {
+    if (Clock::now() - last_heartbeat >= kHeartbeatInterval) {  // as rank 0 of a real job does
+      send(heartbeat_message());
+      last_heartbeat = Clock::now();
+    }
     while (!pending.empty() && (stopping || pending.front().due <= Clock::now())) {
       answer(pending.front().assignment);
       pending.pop_front();
