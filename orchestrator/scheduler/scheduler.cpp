@@ -140,10 +140,15 @@ void Scheduler::step() {
 void Scheduler::end_job_on_stop() {
   const bool written = storage_.retry_now();
   if (job_) {
-    job_->kill();
+    // A job with no case in flight is told to stop and ends by itself (srun then ends its step and
+    // gives its allocation back before the orchestrator goes); one that does not in time is killed.
+    const bool stopped =
+        in_flight_.empty() && status().job_ready && job_->stop_within(WorkerJob::kTerminationGrace);
+    if (!stopped) job_->kill();
     try {
       store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
-      store_.end_job(status_.job_id, *job_->exit_status(), "killed: the orchestrator stopped");
+      store_.end_job(status_.job_id, *job_->exit_status(),
+                     stopped ? "stopped with the orchestrator" : "killed: the orchestrator stopped");
     } catch (const SqliteError& error) {
       if (!error.storage_fault()) throw;
       note(std::string("could not record the end of the worker job: ") + error.what());
