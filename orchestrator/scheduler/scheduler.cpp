@@ -326,8 +326,8 @@ void Scheduler::check_hard_limits() {
 void Scheduler::check_silence() {
   if (job_silent_ || !status().job_ready || Clock::now() - job_heard_ <= options_.silence_limit) return;
   const auto silent = std::chrono::duration<double>(Clock::now() - job_heard_).count();
-  note("worker job " + std::to_string(status().job_id) + " has sent nothing for " + std::to_string(std::lround(silent)) +
-       " s; killing it");
+  note("worker job " + std::to_string(status().job_id) + " has sent nothing for " +
+       std::to_string(std::lround(silent)) + " s; killing it");
   job_silent_ = true;
   job_->kill();
 }

@@ -49,12 +49,12 @@ TEST_CASE("An installed prefix, moved, runs a case, a study and serves its dashb
   CHECK_THAT(help.text, Catch::Contains((share / "web").string()));
 
   SECTION("a case, validated and run") {
-    const auto result = run_in(elsewhere, "'" + aerobreak + "' impact '" + (share / "studies/examples/stick.case.json").string() +
-                                              "' -o stick.result.json");
+    const auto example = share / "studies" / "examples" / "stick.case.json";
+    const auto result = run_in(elsewhere, "'" + aerobreak + "' impact '" + example.string() + "' -o stick.result.json");
     INFO(result.text);
     CHECK(result.exit_code == 0);
     CHECK(Json::parse(file_text(elsewhere / "stick.result.json"))["outcome"]["class"] == "stick");
-    auto bad = Json::parse(file_text(share / "studies/examples/stick.case.json"));
+    auto bad = Json::parse(file_text(example));
     bad["cluster"]["generator"]["primaries"] = 0;
     std::ofstream(elsewhere / "bad.case.json") << bad.dump();
     const auto refused = run_in(elsewhere, "'" + aerobreak + "' impact bad.case.json -o bad.result.json");
@@ -64,7 +64,8 @@ TEST_CASE("An installed prefix, moved, runs a case, a study and serves its dashb
 
   SECTION("a study on workers that are the installed binary") {
     std::ofstream(elsewhere / "tiny.study.json") << small_study("installed", {0.005, 0.05}, 2, 8).dump();
-    const auto run = run_in(elsewhere, "'" + aerobreak + "' run tiny.study.json --store tiny.sqlite --ranks 1 --port 0");
+    const auto run =
+        run_in(elsewhere, "'" + aerobreak + "' run tiny.study.json --store tiny.sqlite --ranks 1 --port 0");
     INFO(run.text);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.text, Catch::Contains("4 done, 0 failed"));

@@ -30,7 +30,8 @@ echo "@aerobreak {\"type\":\"ready\",\"ranks\":2,\"hosts\":[\"a\",\"b\"],\"pid\"
 read line
 set -- $(echo "$line" | sed -n 's/.*"case":\([0-9]*\),"attempt":\([0-9]*\).*/\1 \2/p')
 echo '@aerobreak {"type":"rank_lost","rank":1,"host":"b","ranks":1,"silent_seconds":61}'
-echo "@aerobreak {\"type\":\"failed\",\"case\":$1,\"attempt\":$2,\"rank\":1,\"kind\":\"lost\",\"error\":\"rank 1 went silent\"}"
+echo "@aerobreak {\"type\":\"failed\",\"case\":$1,\"attempt\":$2,\"rank\":1,"\
+"\"kind\":\"lost\",\"error\":\"rank 1 went silent\"}"
 exec sleep 600
 )";
 

@@ -153,7 +153,8 @@ check_data_files() {
   while IFS='|' read -r file size sha; do
     [[ -z "$file" ]] && continue
     [[ "$file" == /* ]] || file=$data/$file
-    if [[ ! -f "$file" || "$(stat -c %s "$file")" != "$size" || "$(sha256sum <"$file" | cut -d' ' -f1)" != "$sha" ]]; then
+    if [[ ! -f "$file" || "$(stat -c %s "$file")" != "$size" ||
+          "$(sha256sum <"$file" | cut -d' ' -f1)" != "$sha" ]]; then
       bad=$((bad + 1))
     fi
   done < <(query "$store" "SELECT data_file, data_file_size, data_file_sha256 FROM results")
@@ -186,8 +187,11 @@ check_store() {
                          coalesce(exit_status, '-') || ', ' || coalesce(note, '') FROM jobs"
 }
 
-hosts_used() { query "$1" "SELECT group_concat(h, ' ') FROM (SELECT DISTINCT substr(worker, 1, instr(worker, ':') - 1) AS h
-                           FROM cases WHERE worker IS NOT NULL ORDER BY h)"; }
+hosts_used() {
+  query "$1" "SELECT group_concat(h, ' ') FROM (SELECT DISTINCT substr(worker, 1, instr(worker, ':') - 1) AS h
+              FROM cases WHERE worker IS NOT NULL ORDER BY h)"
+}
+done_cases() { query "$1" "SELECT count(*) FROM cases WHERE status = 'done'"; }
 
 # Cases per hour from the store: cases over the span from the first start to the last finish.
 cases_per_hour() {
@@ -215,14 +219,11 @@ scenario_spread() {
   for round in $(seq "${ROUNDS:-2}"); do
     for placement in one three; do
       store=$work/spread-$placement-$round.sqlite
-      if [[ $placement == one ]]; then
-        "$aerobreak" run "$work/spread.json" --store "$store" $(run_args --launcher-arg=--nodes=1) >"$work/spread.out" 2>&1 ||
-          fail "spread: aerobreak run failed"
-      else
-        "$aerobreak" run "$work/spread.json" --store "$store" \
-          $(run_args --launcher-arg=--nodes=3 --launcher-arg=--ntasks-per-node=$((ranks / 3))) >"$work/spread.out" 2>&1 ||
-          fail "spread: aerobreak run failed"
-      fi
+      placement_args=(--launcher-arg=--nodes=1)
+      [[ $placement == one ]] ||
+        placement_args=(--launcher-arg=--nodes=3 "--launcher-arg=--ntasks-per-node=$((ranks / 3))")
+      "$aerobreak" run "$work/spread.json" --store "$store" $(run_args "${placement_args[@]}") \
+        >"$work/spread.out" 2>&1 || fail "spread: aerobreak run failed"
       rate=$(cases_per_hour "$store")
       rates[$placement]="${rates[$placement]:-} $rate"
       say "spread: $ranks ranks on $placement node(s) ($(hosts_used "$store")): $rate cases/hour"
@@ -241,18 +242,21 @@ lose_node_mid_study() {
   start_run "$work/$label.json" "$store" --launcher-arg=--nodes=2-3 --launcher-arg=--ntasks-per-node=$((ranks / 2)) \
     --launcher-arg=--distribution=cyclic
   pid=$last_pid
-  wait_done "$store" 30 300 && wait_running_on "$store" "$host" 60 || fail "$label: the study did not get going on $host"
+  wait_done "$store" 30 300 && wait_running_on "$store" "$host" 60 ||
+    fail "$label: the study did not get going on $host"
   snapshot "$store" "$work/$label.snapshot"
   lost_at=$(date +%s.%N)
   "$fault" "$node"
-  say "$label: $fault $host with $(query "$store" "SELECT count(*) FROM cases WHERE status = 'done'") cases done"
+  say "$label: $fault $host with $(done_cases "$store") cases done"
   wait_process "$pid" 900 || fail "$label: the study did not finish within 15 minutes"
   wait "$pid" || fail "$label: aerobreak run failed ($(tail -n 3 "${store%.sqlite}.out"))"
   check_store "$label" "$store" 150 "$work/$label.snapshot"
   local after
-  after=$(query "$store" "SELECT count(*) FROM cases WHERE started_at > $lost_at + $silence + 15 AND worker LIKE '$host:%'")
+  after=$(query "$store" "SELECT count(*) FROM cases
+                          WHERE started_at > $lost_at + $silence + 15 AND worker LIKE '$host:%'")
   ((after == 0)) || fail "$label: $after case(s) started on $host after it was lost"
-  say "$label: study finished $(query "$store" "SELECT printf('%.0f', max(finished_at) - $lost_at) FROM cases") s after the loss"
+  say "$label: study finished" \
+    "$(query "$store" "SELECT printf('%.0f', max(finished_at) - $lost_at) FROM cases") s after the loss"
   revive_node "$node"
 }
 
@@ -279,7 +283,7 @@ scenario_scancel() {
   snapshot "$store" "$work/scancel.snapshot"
   job=$(squeue -h -o %i | head -n 1)
   scancel "$job"
-  say "scancel: cancelled Slurm job $job with $(query "$store" "SELECT count(*) FROM cases WHERE status = 'done'") cases done"
+  say "scancel: cancelled Slurm job $job with $(done_cases "$store") cases done"
   wait_process "$pid" 600 || fail "scancel: the study did not finish within 10 minutes"
   wait "$pid" || fail "scancel: aerobreak run failed"
   check_store "scancel" "$store" 120 "$work/scancel.snapshot"
@@ -305,8 +309,8 @@ scenario_batch() {
   snapshot "$store" "$work/batch.snapshot"
   scancel "$job"
   wait_batch_end "$job" 60 || fail "batch: job $job did not end"
-  say "batch: cancelled the orchestrator's job $job with $(query "$store" "SELECT count(*) FROM cases WHERE status = 'done'")" \
-    "cases done, $(query "$store" "SELECT count(*) FROM cases WHERE status = 'running'") left running"
+  say "batch: cancelled the orchestrator's job $job with $(done_cases "$store") cases done," \
+    "$(query "$store" "SELECT count(*) FROM cases WHERE status = 'running'") left running"
   job=$(submit_batch)
   wait_batch_end "$job" 600 || fail "batch: the second job $job did not finish within 10 minutes"
   check_store "batch" "$store" 120 "$work/batch.snapshot"

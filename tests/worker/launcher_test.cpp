@@ -25,7 +25,8 @@ TEST_CASE("Worker job command lines: mpirun, srun with PMIx, stdin to task 0 and
         "srun --ntasks=4 --input=0 --mpi=pmix --kill-on-bad-exit=1 --mpi=pmi2 /opt/aerobreak worker");
   config.silence_limit = 2.5;
   CHECK(join_command(worker_job_command(config)) ==
-        "srun --ntasks=4 --input=0 --mpi=pmix --kill-on-bad-exit=1 --mpi=pmi2 /opt/aerobreak worker --silence-limit 2.5");
+        "srun --ntasks=4 --input=0 --mpi=pmix --kill-on-bad-exit=1 --mpi=pmi2 /opt/aerobreak worker "
+        "--silence-limit 2.5");
   config = {"direct", 1, {}, "/opt/aerobreak"};
   CHECK(join_command(worker_job_command(config)) == "/opt/aerobreak worker");
   config.ranks = 2;
