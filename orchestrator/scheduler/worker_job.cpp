@@ -149,7 +149,7 @@ void WorkerJob::read_output() {
   arrived_.notify_all();
 }
 
-std::optional<nlohmann::json> WorkerJob::next_message(std::chrono::milliseconds timeout) {
+std::optional<JobMessage> WorkerJob::next_message(std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   arrived_.wait_for(lock, timeout, [this] { return !messages_.empty() || output_ended_; });
   if (messages_.empty()) return std::nullopt;
@@ -172,7 +172,7 @@ std::optional<int> WorkerJob::exit_status() {
 }
 
 bool WorkerJob::stop_within(std::chrono::milliseconds patience) {
-  send({{"type", "stop"}});
+  send(to_json(StopRequest{}));
   close_input();
   const auto deadline = std::chrono::steady_clock::now() + patience;
   while (!exit_status() && std::chrono::steady_clock::now() < deadline)

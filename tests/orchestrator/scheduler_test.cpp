@@ -30,7 +30,7 @@ echo "@aerobreak {\"type\":\"ready\",\"ranks\":2,\"hosts\":[\"a\",\"b\"],\"pid\"
 read line
 set -- $(echo "$line" | sed -n 's/.*"case":\([0-9]*\),"attempt":\([0-9]*\).*/\1 \2/p')
 echo '@aerobreak {"type":"rank_lost","rank":1,"host":"b","ranks":1,"silent_seconds":61}'
-echo "@aerobreak {\"type\":\"failed\",\"case\":$1,\"attempt\":$2,\"rank\":1,"\
+echo "@aerobreak {\"type\":\"failed\",\"case\":$1,\"attempt\":$2,\"rank\":1,\"seconds\":61,"\
 "\"kind\":\"lost\",\"error\":\"rank 1 went silent\"}"
 exec sleep 600
 )";
@@ -67,7 +67,7 @@ bool within(std::chrono::seconds limit, Condition condition) {
 
 }  // namespace
 
-TEST_CASE("A case killed at its hard limit is reported with the time it had really run (issue 15 #12)",
+TEST_CASE("A case killed at its hard limit is reported with the time it had really run",
           "[scheduler]") {
   ScratchDirectory scratch("hard-limit");
   const auto worker = scratch.write("stuck-worker.sh", kStuckWorker);
