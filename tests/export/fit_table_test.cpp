@@ -187,7 +187,7 @@ TEST_CASE("Fit table at sizes not run: one pooled fit per condition of the other
 
 // The two-wall study of export_study.hpp: nothing sticks on the wall without adhesion (12 determined
 // results per size there), so its stick fits have no transition.
-TEST_CASE("Fit table: every outcome with its band and status; no transition gives the observed 0 with its Wilson band",
+TEST_CASE("Fit table: every outcome with its band and status: no transition gives the observed 0 with its Wilson band",
           "[export][fit]") {
   ScratchDirectory directory("fit_table_walls");
   Store store(directory.path() / "store.sqlite");
