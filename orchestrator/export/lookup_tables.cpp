@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <sstream>
+#include <vector>
 
 #include "engine/core/version.hpp"
 #include "orchestrator/export/equivalent_diameters.hpp"
@@ -141,6 +144,33 @@ void add_constant_gamma(LookupTable& table, const StudyExportData& data) {
       .values.assign(table.rows(), gamma);
 }
 
+std::string plain_number(double value) {
+  std::ostringstream text;
+  text << value;  // the shortest of %g: 1, 1.08, 6.73e-08
+  return text.str();
+}
+
+// How the table's diameter columns follow from N (docs/EXPORT.md section 2): the relations, their
+// constants with sources, and with SI the primaries' diameter and density they were computed with.
+nlohmann::ordered_json diameter_metadata(const std::optional<std::vector<PhysicalScaling>>& scalings) {
+  nlohmann::ordered_json diameters = {
+      {"volume", "d_ve = d N^(1/3)"},
+      {"mobility", "d_mob = d (N/k_a)^(1/(2 D_alpha)), k_a = " + plain_number(kProjectedAreaPrefactor) +
+                       ", D_alpha = " + plain_number(kProjectedAreaExponent) +
+                       ": projected-area scaling (Eggersdorfer et al., J. Aerosol Sci. 46 (2012) 7), equal to the "
+                       "mobility diameter for primaries smaller than the gas mean free path (Rogak et al., Aerosol "
+                       "Sci. Technol. 18 (1993) 25)"}};
+  if (!scalings) return diameters;
+  diameters["aerodynamic"] = "rho_0 d_ae^2 Cc(d_ae) = rho_p d_ve^3 Cc(d_mob) / d_mob, rho_0 = " +
+                             plain_number(kUnitDensity) + " kg/m^3, Cc the slip correction in air at 296.15 K and "
+                             "101.3 kPa, mean free path " + plain_number(kAirMeanFreePath) +
+                             " m (Kim et al., J. Res. NIST 110 (2005) 31; DeCarlo et al., Aerosol Sci. Technol. 38 "
+                             "(2004) 1185)";
+  diameters["primary_diameter_m"] = scalings->front().diameter;
+  diameters["primary_density_kg_m3"] = scalings->front().material.density;
+  return diameters;
+}
+
 }  // namespace
 
 LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
@@ -168,6 +198,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   else if (scalings) table.metadata["material"] = "the study's own (physical units)";
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
   table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
+  table.metadata["diameters"] = diameter_metadata(scalings);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
   if (!request.diameters.empty())
     table.metadata["sizes_from"] = std::string(request.diameter_type == DiameterType::mobility ? "mobility"

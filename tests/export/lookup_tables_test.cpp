@@ -277,6 +277,16 @@ TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by h
   CHECK(table.find("impact_speed_m_s")->unit == "m/s");
   CHECK(table.find("d_ve_m")->unit == "m");
   CHECK(table.metadata.at("units") == "reduced and SI");
+  // The diameters say what they were computed with: the material's d and density, k_a and D_alpha.
+  const auto& diameters = table.metadata.at("diameters");
+  CHECK(diameters.at("primary_diameter_m") == 2e-8);
+  CHECK(diameters.at("primary_density_kg_m3") == 1725.0);
+  CHECK_THAT(diameters.at("mobility").get<std::string>(), Catch::Contains("k_a = 1, D_alpha = 1.08"));
+  CHECK_THAT(diameters.at("aerodynamic").get<std::string>(), Catch::Contains("rho_0 = 1000 kg/m^3"));
+  // Without SI, the relations in d only.
+  const auto reduced = fixture.table(ExportRequest{});
+  CHECK(reduced.metadata.at("diameters").contains("mobility"));
+  CHECK_FALSE(reduced.metadata.at("diameters").contains("primary_density_kg_m3"));
 }
 
 TEST_CASE("A material outside the study's gamma/k_n range is refused, and one between two values is taken only when interpolated", "[export]") {
