@@ -6,9 +6,12 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "engine/io/bounded_input.hpp"
 
 namespace aerobreak {
 
@@ -227,8 +230,7 @@ Cluster read_xyz_cluster(std::istream& in, double default_radius, std::string_vi
 }
 
 Cluster read_xyz_cluster(const std::filesystem::path& path, double default_radius) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open for reading: " + path.string());
+  std::istringstream in(read_regular_file(path, kMaxClusterTextBytes, "cluster file"));
   return read_xyz_cluster(in, default_radius, path.string());
 }
 

@@ -1,0 +1,136 @@
+// Every file the command line reads is bounded as the service bounds a request (regular files
+// only, 1 MiB for a JSON document, 64 levels of nesting, numbers a double holds), and a bad one
+// gets an exit status and a message naming the file and the problem, never an abort, a segfault
+// or a wait for good. Each command runs as the real program under `timeout`, so that a hang
+// fails the test instead of holding it.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/support/run_command.hpp"
+#include "tests/support/scratch_directory.hpp"
+
+namespace {
+
+using aerobreak::testing::CommandOutput;
+using aerobreak::testing::ScratchDirectory;
+
+// `timeout` exits 124 for a command that ran past 20 s; a signal shows as 128 + its number.
+CommandOutput run_aerobreak(const std::string& arguments) {
+  return aerobreak::testing::run_command("timeout 20 " + std::string(AEROBREAK_BINARY) + " " + arguments);
+}
+
+std::string nested_arrays(std::size_t depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+std::string small_case(const std::string& cluster) {
+  return R"({"cluster": )" + cluster +
+         R"(, "material": {"gamma_over_kn": 0.001}, "impact": {"speed": 0.01}, "run": {"time_limit": 100}})";
+}
+
+// A case naming 16 primaries that all sit at one point.
+std::string one_point_cluster() {
+  std::string text;
+  for (int i = 0; i < 16; ++i) text += "0 0 0 0.5\n";
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("100,000 nested arrays are refused by impact --check and study expand, naming the file", "[cli][hostile]") {
+  const ScratchDirectory dir("nested_input");
+  const auto file = dir.write("nested.json", nested_arrays(100000));
+  const CommandOutput impact = run_aerobreak("impact --check " + file.string());
+  INFO(impact.text);
+  CHECK(impact.exit_code == 1);
+  CHECK_THAT(impact.text, Catch::Contains(file.string()) && Catch::Contains("nest deeper than 64 levels"));
+
+  const CommandOutput expand = run_aerobreak("study expand " + file.string());
+  INFO(expand.text);
+  CHECK(expand.exit_code == 2);
+  CHECK_THAT(expand.text, Catch::Contains(file.string()) && Catch::Contains("nest deeper than 64 levels"));
+}
+
+TEST_CASE("a number no double holds (1e999) in a case is refused, not an abort", "[cli][hostile]") {
+  const ScratchDirectory dir("huge_number");
+  const auto file = dir.write("huge.case.json", R"({"cluster": {"generator": {"primaries": 8, "seed": 1}},
+      "material": {"gamma_over_kn": 1e999}, "impact": {"speed": 0.01}, "run": {"time_limit": 100}})");
+  const CommandOutput impact = run_aerobreak("impact --check " + file.string());
+  INFO(impact.text);
+  CHECK(impact.exit_code == 1);
+  CHECK_THAT(impact.text, Catch::Contains(file.string()) && Catch::Contains("beyond what a double holds"));
+}
+
+TEST_CASE("a document over 1 MiB is refused before it is read", "[cli][hostile]") {
+  const ScratchDirectory dir("large_input");
+  const auto file = dir.write("large.study.json", "{\"name\": \"" + std::string(1100000, 'x') + "\"}");
+  const CommandOutput expand = run_aerobreak("study expand " + file.string());
+  INFO(expand.text.substr(0, 2000));
+  CHECK(expand.exit_code == 2);
+  CHECK_THAT(expand.text, Catch::Contains(file.string()) && Catch::Contains("bytes, more than the 1048576 read here"));
+}
+
+TEST_CASE("a FIFO or a device named as an input is refused at once, not waited on", "[cli][hostile]") {
+  const ScratchDirectory dir("special_input");
+  const std::string fifo = dir.file("case.json");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const CommandOutput impact = run_aerobreak("impact --check " + fifo);
+  INFO(impact.text);
+  CHECK(impact.exit_code == 1);
+  CHECK_THAT(impact.text, Catch::Contains(fifo) && Catch::Contains("is a FIFO (named pipe), not a regular file"));
+
+  const CommandOutput expand = run_aerobreak("study expand " + fifo);
+  CHECK(expand.exit_code == 2);
+  CHECK_THAT(expand.text, Catch::Contains("is a FIFO (named pipe), not a regular file"));
+
+  const CommandOutput analyse = run_aerobreak("cluster analyse /dev/zero");
+  INFO(analyse.text);
+  CHECK(analyse.exit_code != 0);
+  CHECK(analyse.exit_code != 124);
+  CHECK_THAT(analyse.text, Catch::Contains("/dev/zero") && Catch::Contains("is a device, not a regular file"));
+
+  const auto fifo_cluster = dir.write("fifo_cluster.case.json", small_case(R"({"file": {"path": "cluster.xyz"}})"));
+  REQUIRE(::mkfifo(dir.file("cluster.xyz").c_str(), 0600) == 0);
+  const CommandOutput cluster = run_aerobreak("impact --check " + fifo_cluster.string());
+  INFO(cluster.text);
+  CHECK(cluster.exit_code == 1);
+  CHECK_THAT(cluster.text, Catch::Contains("cluster.xyz"));
+}
+
+TEST_CASE("a truncated cluster library is an invalid case naming the file, not an uncaught exception", "[cli][hostile]") {
+  const ScratchDirectory dir("truncated_library");
+  const std::string library = dir.file("clusters.h5");
+  const CommandOutput generated = run_aerobreak("cluster generate --primaries 16 --count 2 --output " + library);
+  REQUIRE(generated.exit_code == 0);
+  std::filesystem::resize_file(library, 4000);
+  const auto case_file = dir.write("truncated.case.json",
+                                   small_case(R"({"file": {"path": "clusters.h5", "name": "ballistic-N16-seed1-0"}})"));
+  for (const std::string options : {"--check ", "-q "}) {
+    const CommandOutput impact = run_aerobreak("impact " + options + case_file.string());
+    INFO(impact.text);
+    CHECK(impact.exit_code == 1);
+    CHECK_THAT(impact.text, Catch::Contains("/cluster/file/path") && Catch::Contains(library) &&
+                                Catch::Contains("truncated file"));
+  }
+}
+
+TEST_CASE("16 primaries at one point are refused at input, naming the pair", "[cli][hostile]") {
+  const ScratchDirectory dir("one_point");
+  dir.write("cluster.xyz", one_point_cluster());
+  const auto case_file = dir.write("one_point.case.json", small_case(R"({"file": {"path": "cluster.xyz"}})"));
+  for (const std::string options : {"--check ", "-q "}) {
+    const CommandOutput impact = run_aerobreak("impact " + options + case_file.string());
+    INFO(impact.text);
+    CHECK(impact.exit_code == 1);
+    CHECK_THAT(impact.text, Catch::Contains("primaries 0 and ") && Catch::Contains("overlap by 1 d") &&
+                                Catch::Contains("small-strain range"));
+  }
+
+  // Overlaps within the range (a tenth of the radius) are accepted.
+  dir.write("cluster.xyz", "0 0 0 0.5\n0 0 0.95 0.5\n");
+  const CommandOutput accepted = run_aerobreak("impact --check " + case_file.string());
+  INFO(accepted.text);
+  CHECK(accepted.exit_code == 0);
+}
