@@ -29,7 +29,8 @@ std::size_t utf8_sequence_length(std::string_view bytes, std::size_t at) {
 }
 
 void check_encoding_marks(std::string_view text) {
-  if (text.starts_with("\xEF\xBB\xBF")) throw JsonTextError("it starts with a byte-order mark, which JSON text must not have", 0);
+  if (text.starts_with("\xEF\xBB\xBF"))
+    throw JsonTextError("it starts with a byte-order mark, which JSON text must not have", 0);
   if (text.starts_with("\xFE\xFF") || text.starts_with("\xFF\xFE"))
     throw JsonTextError("it is UTF-16 (it starts with a UTF-16 byte-order mark); send UTF-8", 0);
 }

@@ -34,7 +34,8 @@ struct RunOptions {
 
 // ", 3 computed again: data file lost or damaged", or the advice when lost files were not asked for.
 std::string lost_files_text(const SubmissionReceipt& receipt) {
-  if (receipt.recomputed) return ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged";
+  if (receipt.recomputed)
+    return ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged";
   if (!receipt.data_files_lost) return {};
   return ", " + std::to_string(receipt.data_files_lost) +
          " with a data file lost or damaged (their results are kept; --recompute-data-files computes the files again)";

@@ -116,7 +116,8 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
 int run_client(const std::string& action, const ClientOptions& options) {
   ApiClient api(options);
   if (action == "submit") {
-    const auto receipt = api.post("/api/studies", read_regular_file(options.study_file, kMaxDocumentBytes, "study file"));
+    const std::string study = read_regular_file(options.study_file, kMaxDocumentBytes, "study file");
+    const auto receipt = api.post("/api/studies", study);
     if (options.json) {
       std::cout << receipt.dump(2) << "\n";
     } else {

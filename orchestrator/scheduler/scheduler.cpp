@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+#include <variant>
 
 #include "orchestrator/worker/worker_protocol.hpp"
 
@@ -9,18 +11,6 @@ namespace aerobreak {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::optional<AttemptEnd> attempt_end_of(const std::string& kind) {
-  if (kind == "invalid") return AttemptEnd::invalid;
-  if (kind == "wall_time") return AttemptEnd::wall_time;
-  if (kind == "error") return AttemptEnd::error;
-  return std::nullopt;
-}
-
-std::string text_or(const nlohmann::json& message, const char* key, const std::string& fallback) {
-  const auto found = message.find(key);
-  return found != message.end() && found->is_string() ? found->get<std::string>() : fallback;
-}
 
 // "still running 47.3 s after its start (wall-time limit 10 s); its worker job was killed".
 std::string overdue_text(double seconds, double limit) {
@@ -209,73 +199,104 @@ void Scheduler::feed_job() {
   status_.in_flight = in_flight_.size();
 }
 
-void Scheduler::handle(const nlohmann::json& message) {
-  const std::string type = text_or(message, "type", "");
-  if (type == "ready") {
-    const int ranks = message.value("ranks", 0);
-    storage_.write([this, job_id = status().job_id, pid = message.value("pid", std::int64_t{0}),
-                    hosts = message.value("hosts", nlohmann::json::array())] { store_.job_started(job_id, pid, hosts); });
-    std::lock_guard lock(status_mutex_);
-    status_.job_ready = ranks > 0;
-    status_.ranks = ranks;
-    status_.consecutive_launch_failures = 0;
-    return;
-  }
-  if (type == "protocol_error") {
-    note("worker job reports a protocol error: " + text_or(message, "message", "(no message)"));
-    return;
-  }
-  const auto case_id = message.value("case", std::int64_t{-1});
-  const int attempt = message.value("attempt", -1);
+void Scheduler::handle(JobMessage& message) {
+  std::visit([this](auto& each) { handle(each); }, message);
+}
+
+void Scheduler::handle(const JobReady& ready) {
+  storage_.write([this, job_id = status().job_id, pid = ready.pid, hosts = nlohmann::ordered_json(ready.hosts)] {
+    store_.job_started(job_id, pid, hosts);
+  });
+  std::lock_guard lock(status_mutex_);
+  status_.job_ready = true;
+  status_.ranks = ready.ranks;
+  status_.consecutive_launch_failures = 0;
+}
+
+void Scheduler::handle(const JobProtocolError& error) {
+  note("worker job reports a protocol error: " + error.message);
+}
+
+void Scheduler::handle(const UnknownJobMessage& message) { note("ignored a worker message: " + message.problem); }
+
+Scheduler::Flight Scheduler::flight_of(const std::string& type, std::int64_t case_id, int attempt) {
   const auto flight = in_flight_.find(case_id);
-  if (flight == in_flight_.end() || flight->second.attempt != attempt) {
-    note("ignored a '" + type + "' message for case " + std::to_string(case_id) + " attempt " +
-         std::to_string(attempt) + ", which this job does not run");
-    return;
-  }
-  if (type == "started") {
-    storage_.write([this, case_id, attempt,
-                    worker = text_or(message, "host", "?") + ":" + std::to_string(message.value("rank", -1))] {
-      store_.record_worker(case_id, attempt, worker);
-    });
-    return;
-  }
-  searches_due_ = true;
-  if (type == "result") {
-    if (storage_.write([this, case_id, attempt, message] { commit_result(case_id, attempt, message); }))
-      storage_.clear();
-  } else if (type == "failed" && text_or(message, "kind", "") == "storage") {
-    // The worker could not write the case's data file: not the case's fault.
-    const std::string error = text_or(message, "error", "(no error text)");
-    storage_.write([this, case_id, attempt, error] {
-      store_.requeue_attempt(case_id, attempt, "its data file could not be written: " + error);
-    });
-    storage_.note(error);
-  } else if (type == "failed") {
-    const auto end = attempt_end_of(text_or(message, "kind", "error")).value_or(AttemptEnd::error);
-    record_failure(case_id, attempt, end, text_or(message, "error", "(no error text)"));
-  } else {
-    note("ignored a worker message of unknown type '" + type + "'");
-    return;
-  }
+  if (flight != in_flight_.end() && flight->second.attempt == attempt) return flight;
+  note("ignored a '" + type + "' message for case " + std::to_string(case_id) + " attempt " + std::to_string(attempt) +
+       ", which this job does not run");
+  return in_flight_.end();
+}
+
+void Scheduler::landed(Flight flight) {
   in_flight_.erase(flight);
+  searches_due_ = true;
   std::lock_guard lock(status_mutex_);
   status_.in_flight = in_flight_.size();
 }
 
-void Scheduler::commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message) {
+void Scheduler::handle(const CaseStarted& started) {
+  if (flight_of("started", started.case_id, started.attempt) == in_flight_.end()) return;
+  storage_.write([this, case_id = started.case_id, attempt = started.attempt,
+                  worker = started.host + ":" + std::to_string(started.rank)] {
+    store_.record_worker(case_id, attempt, worker);
+  });
+}
+
+void Scheduler::handle(CaseResult& result) {
+  const auto flight = flight_of("result", result.case_id, result.attempt);
+  if (flight == in_flight_.end()) return;
+  // Held, with the writes after it, while storage fails: kept once, not copied per retry.
+  auto kept = std::make_shared<const CaseResult>(std::move(result));
+  if (storage_.write([this, kept] { commit_result(*kept); })) storage_.clear();
+  landed(flight);
+}
+
+void Scheduler::handle(const CaseFailed& failed) {
+  const auto flight = flight_of("failed", failed.case_id, failed.attempt);
+  if (flight == in_flight_.end()) return;
+  if (failed.kind == FailureKind::storage) {
+    // The worker could not write the case's data file: not the case's fault.
+    storage_.write([this, case_id = failed.case_id, attempt = failed.attempt, error = failed.error] {
+      store_.requeue_attempt(case_id, attempt, "its data file could not be written: " + error);
+    });
+    storage_.note(failed.error);
+  } else {
+    const AttemptEnd end = failed.kind == FailureKind::invalid     ? AttemptEnd::invalid
+                           : failed.kind == FailureKind::wall_time ? AttemptEnd::wall_time
+                                                                   : AttemptEnd::error;
+    record_failure(failed.case_id, failed.attempt, end, failed.error);
+  }
+  landed(flight);
+}
+
+// A result or failure that cannot be read fails the attempt rather than leave the case in flight;
+// a start that cannot be read only goes unrecorded.
+void Scheduler::handle(const UnreadableAnswer& answer) {
+  const auto flight = flight_of(answer.type, answer.case_id, answer.attempt);
+  if (flight == in_flight_.end()) return;
+  if (answer.type == "started") {
+    note("ignored a 'started' message for case " + std::to_string(answer.case_id) + ": " + answer.problem);
+    return;
+  }
+  record_failure(answer.case_id, answer.attempt, AttemptEnd::error,
+                 "the worker's '" + answer.type + "' message could not be read: " + answer.problem);
+  landed(flight);
+}
+
+void Scheduler::commit_result(const CaseResult& result) {
   try {
-    if (store_.commit_result(case_id, attempt, message.at("result"), text_or(message, "data_file", ""),
-                             message.value("seconds", 0.0),
-                             {message.value("data_file_size", std::int64_t{-1}), text_or(message, "data_file_sha256", "")})) {
+    if (store_.commit_result(result.case_id, result.attempt, result.result, result.data_file, result.seconds,
+                             {result.data_file_size, result.data_file_sha256})) {
       std::lock_guard lock(status_mutex_);
       ++status_.results_committed;
     }
   } catch (const SqliteError& error) {
     if (error.storage_fault()) throw;
-    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+    store_.record_failure(result.case_id, result.attempt, AttemptEnd::error,
+                          std::string("result refused: ") + error.what());
   } catch (const std::exception& error) {
-    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+    store_.record_failure(result.case_id, result.attempt, AttemptEnd::error,
+                          std::string("result refused: ") + error.what());
   }
 }
 
@@ -311,7 +332,7 @@ void Scheduler::stop_idle_job() {
     job_idle_since_ = Clock::now();
     return;
   }
-  job_->send({{"type", "stop"}});
+  job_->send(to_json(StopRequest{}));
   job_->close_input();
   job_told_to_stop_ = true;
 }

@@ -99,8 +99,21 @@ class Scheduler {
   void end_job_on_stop();
   void launch_job();
   void feed_job();
-  void handle(const nlohmann::json& message);
-  void commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message);
+  using Flight = std::map<std::int64_t, InFlight>::iterator;
+  // One handler per message type of the worker protocol (worker_protocol.hpp).
+  void handle(JobMessage& message);
+  void handle(const JobReady& ready);
+  void handle(const JobProtocolError& error);
+  void handle(const UnknownJobMessage& message);
+  void handle(const CaseStarted& started);
+  void handle(CaseResult& result);
+  void handle(const CaseFailed& failed);
+  void handle(const UnreadableAnswer& answer);
+  // The case a message is about, in flight on this job; in_flight_.end() (and a log line) otherwise.
+  Flight flight_of(const std::string& type, std::int64_t case_id, int attempt);
+  // The case's answer has been dealt with: it is no longer in flight.
+  void landed(Flight flight);
+  void commit_result(const CaseResult& result);
   void record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error);
   void publish_storage_status();
   void check_hard_limits();

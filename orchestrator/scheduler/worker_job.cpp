@@ -149,7 +149,7 @@ void WorkerJob::read_output() {
   arrived_.notify_all();
 }
 
-std::optional<nlohmann::json> WorkerJob::next_message(std::chrono::milliseconds timeout) {
+std::optional<JobMessage> WorkerJob::next_message(std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   arrived_.wait_for(lock, timeout, [this] { return !messages_.empty() || output_ended_; });
   if (messages_.empty()) return std::nullopt;

@@ -12,6 +12,8 @@
 #include <thread>
 #include <vector>
 
+#include "orchestrator/worker/worker_protocol.hpp"
+
 namespace aerobreak {
 
 // One running worker job (a launcher process and its ranks) seen from the orchestrator: its stdin
@@ -36,9 +38,9 @@ class WorkerJob {
   // Closes the job's stdin (a job told to stop needs nothing more).
   void close_input();
 
-  // The next message, waiting at most `timeout`; nullopt on timeout or once the job's output has
-  // ended and every message was taken.
-  std::optional<nlohmann::json> next_message(std::chrono::milliseconds timeout);
+  // The next message, decoded (decode_job_line), waiting at most `timeout`; nullopt on timeout or
+  // once the job's output has ended and every message was taken.
+  std::optional<JobMessage> next_message(std::chrono::milliseconds timeout);
   // The job's output has ended and every message was taken.
   bool finished();
 
@@ -61,7 +63,7 @@ class WorkerJob {
   std::thread reader_;
   std::mutex mutex_;
   std::condition_variable arrived_;
-  std::deque<nlohmann::json> messages_;
+  std::deque<JobMessage> messages_;
   bool output_ended_ = false;
   int log_ = -1;  // O_APPEND: the job's stderr and the reader thread write whole lines to it
 };

@@ -108,7 +108,8 @@ void answer_parts(httplib::Response& response, const std::vector<ByteRange>& par
   for (const auto& part : parts) {
     body += "--" + boundary + "\r\nContent-Type: " + type + "\r\nContent-Range: " + content_range(part, length) +
             "\r\n\r\n";
-    body.append(response.body, static_cast<std::size_t>(part.first), static_cast<std::size_t>(part.last - part.first + 1));
+    body.append(response.body, static_cast<std::size_t>(part.first),
+                static_cast<std::size_t>(part.last - part.first + 1));
     body += "\r\n";
   }
   body += "--" + boundary + "--\r\n";

@@ -101,8 +101,8 @@ ConnectionStream::Clock::time_point ConnectionStream::read_deadline(bool* by_rat
   const auto timeout = request_started_ + (in_headers_ ? limits_.header_timeout : limits_.request_timeout);
   if (by_rate) *by_rate = false;
   if (limits_.min_bytes_per_second == 0) return timeout;
-  const auto earned = std::chrono::duration_cast<Clock::duration>(
-      std::chrono::duration<double>(static_cast<double>(request_bytes_) / static_cast<double>(limits_.min_bytes_per_second)));
+  const double seconds_earned = static_cast<double>(request_bytes_) / static_cast<double>(limits_.min_bytes_per_second);
+  const auto earned = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_earned));
   const auto by_minimum_rate = request_started_ + limits_.rate_grace + earned;
   if (by_minimum_rate >= timeout) return timeout;
   if (by_rate) *by_rate = true;

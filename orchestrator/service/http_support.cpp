@@ -35,7 +35,8 @@ std::optional<std::string> single_parameter(const httplib::Request& request, con
 bool flag_parameter(const httplib::Request& request, const std::string& name) {
   const auto text = single_parameter(request, name);
   if (!text || *text == "false") return false;
-  if (*text != "true") throw RequestError{400, "query parameter '" + name + "' must be true or false (got '" + *text + "')"};
+  if (*text != "true")
+    throw RequestError{400, "query parameter '" + name + "' must be true or false (got '" + *text + "')"};
   return true;
 }
 

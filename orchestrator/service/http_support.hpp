@@ -15,8 +15,8 @@
 #include "orchestrator/study/study.hpp"
 
 // What every group of endpoints shares: the JSON error answer, query and path parameters, and the
-// wrapper that turns a RequestError into its answer. Each group of endpoints registers itself from a
-// file of its own (register_http_api calls them).
+// wrapper that turns a RequestError into its answer. Each group of endpoints lives in a file of its
+// own; routes.cpp lists them all.
 namespace aerobreak {
 
 // A request that cannot be served as asked: its status and the JSON body that says why.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "orchestrator/service/bounded_server.hpp"
+#include "orchestrator/service/endpoints.hpp"
 #include "orchestrator/service/http_api.hpp"
 
 namespace aerobreak {
@@ -36,7 +37,8 @@ void Service::start() {
   server_->set_payload_max_length(options_.max_body_bytes);
   // Small JSON answers: without TCP_NODELAY, Nagle's algorithm and delayed ACKs add ~40 ms to each.
   server_->set_tcp_nodelay(true);
-  register_http_api(*server_, store_, scheduler_, options_);
+  endpoints_ = std::make_unique<Endpoints>(store_, scheduler_, options_);
+  register_http_api(*server_, *endpoints_);
   errno = 0;
   port_ = options_.port == 0 ? server_->bind_to_any_port(options_.host)
                              : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);

@@ -19,6 +19,8 @@ class Server;
 
 namespace aerobreak {
 
+struct Endpoints;
+
 struct ServiceOptions {
   std::string host = "127.0.0.1";
   int port = 8080;  // 0: any free port (see Service::port())
@@ -68,6 +70,7 @@ class Service {
   Store& store_;
   Scheduler* scheduler_;
   ServiceOptions options_;
+  std::unique_ptr<Endpoints> endpoints_;  // what the server's handlers answer with: outlives it
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   std::atomic<bool> listening_ended_{false};  // the listening thread has returned

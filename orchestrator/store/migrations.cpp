@@ -238,7 +238,8 @@ CREATE TABLE search_rounds (
 constexpr std::string_view kVersion8 = R"sql(
 UPDATE results SET data_file = (SELECT 'cases/' || c.hash || '.h5' FROM cases c WHERE c.id = results.case_id)
 WHERE data_file LIKE '/%'
-  AND EXISTS (SELECT 1 FROM cases c WHERE c.id = results.case_id AND results.data_file LIKE '%/cases/' || c.hash || '.h5');
+  AND EXISTS (SELECT 1 FROM cases c
+              WHERE c.id = results.case_id AND results.data_file LIKE '%/cases/' || c.hash || '.h5');
 )sql";
 
 constexpr std::array kMigrations{

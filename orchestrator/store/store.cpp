@@ -18,7 +18,8 @@ double unix_seconds() {
 
 Store::Store(const std::filesystem::path& file, Access access, const std::filesystem::path& data_directory)
     : file_(file),
-      data_directory_(std::filesystem::absolute(data_directory.empty() ? default_data_directory(file) : data_directory)) {
+      data_directory_(
+          std::filesystem::absolute(data_directory.empty() ? default_data_directory(file) : data_directory)) {
   if (access == Access::reader) {
     open_for_reading();
     return;

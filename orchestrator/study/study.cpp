@@ -50,11 +50,13 @@ struct SweptField {
   std::string label;  // "axis \"NAME\"" or "the search"
 };
 
-std::vector<SweptField> swept_fields(const std::vector<StudyAxis>& axes, const std::optional<BoundarySearchSpec>& search) {
+std::vector<SweptField> swept_fields(const std::vector<StudyAxis>& axes,
+                                     const std::optional<BoundarySearchSpec>& search) {
   std::vector<SweptField> fields;
   for (const auto& axis : axes)
     fields.push_back({axis.pointer, pointer_child("/axes", axis.name), "axis \"" + axis.name + "\""});
-  if (search && !search->pointer.empty()) fields.push_back({search->pointer, "/search/axis", "the search (/search/axis)"});
+  if (search && !search->pointer.empty())
+    fields.push_back({search->pointer, "/search/axis", "the search (/search/axis)"});
   return fields;
 }
 
@@ -63,8 +65,9 @@ bool sets_field(const std::vector<SweptField>& fields, const std::string& pointe
 }
 
 // The primaries a study may ask for at most: an axis's values, the search's range, or the base's.
-void check_primaries(const Json& base, const std::vector<StudyAxis>& axes, const std::optional<BoundarySearchSpec>& search,
-                     const StudyLimits& limits, std::vector<SchemaViolation>& violations) {
+void check_primaries(const Json& base, const std::vector<StudyAxis>& axes,
+                     const std::optional<BoundarySearchSpec>& search, const StudyLimits& limits,
+                     std::vector<SchemaViolation>& violations) {
   auto too_many = [&](const Json& primaries) {
     return primaries.is_number() && primaries.get<double>() > static_cast<double>(limits.max_primaries);
   };
@@ -100,8 +103,9 @@ void check_base(const Json& base, const std::vector<StudyAxis>& axes, const std:
   }
   for (const char* seed : {"/cluster/generator/seed", "/impact/orientation_seed"})
     if (!sets_field(swept, seed) && has_field(base, seed))
-      violations.push_back({"/base" + std::string(seed), "is derived for each replicate from /replicates/seed: leave it out of the "
-                                            "base (or sweep it as an axis to choose it)"});
+      violations.push_back({"/base" + std::string(seed),
+                            "is derived for each replicate from /replicates/seed: leave it out of the base (or sweep "
+                            "it as an axis to choose it)"});
 
   if (!limits.allow_cluster_files) {
     const std::string refused = "cluster files are not accepted here (the service reads no file a client names): use "

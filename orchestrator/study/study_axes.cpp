@@ -197,7 +197,8 @@ std::string axis_name_problem(const std::string& name) {
   const std::string pointer = axis_pointer(name);
   if (pointer.empty())
     return name.empty() || name.front() != '/'
-               ? "is neither an axis alias (" + alias_names() + ") nor a JSON pointer into the case (starting with \"/\")"
+               ? "is neither an axis alias (" + alias_names() +
+                     ") nor a JSON pointer into the case (starting with \"/\")"
                : "is not a valid JSON pointer (RFC 6901: \"~\" must be written \"~0\" or \"~1\")";
   const std::size_t tokens = static_cast<std::size_t>(std::count(pointer.begin(), pointer.end(), '/'));
   if (tokens > kMaxPointerTokens)

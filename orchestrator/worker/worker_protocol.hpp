@@ -89,10 +89,70 @@ nlohmann::ordered_json result_message(std::int64_t case_id, int attempt, int ran
 nlohmann::ordered_json failed_message(std::int64_t case_id, int attempt, int rank, double seconds, FailureKind kind,
                                       const std::string& error);
 nlohmann::ordered_json protocol_error_message(const std::string& message);
+nlohmann::ordered_json to_json(const StopRequest& stop);
+
+// Job -> orchestrator, as the orchestrator reads them: one type per message, decoded in one place
+// (decode_job_line). Each field is checked when the line is read; a message whose case and attempt
+// can be read but whose other fields cannot becomes an UnreadableAnswer, so that no case is left
+// without an answer.
+struct JobReady {
+  int ranks = 0;
+  std::vector<std::string> hosts;  // of each rank, in rank order
+  std::int64_t pid = 0;
+  std::string version;
+};
+
+struct CaseStarted {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  int rank = 0;
+  std::string host;
+};
+
+struct CaseResult {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  int rank = 0;
+  double seconds = 0.0;
+  nlohmann::json result;               // schemas/result.schema.json
+  std::string data_file;               // the HDF5 bulk file written; empty: none
+  std::int64_t data_file_size = -1;    // bytes; -1: not given (no data file)
+  std::string data_file_sha256;        // empty: not given
+};
+
+struct CaseFailed {
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  int rank = 0;
+  double seconds = 0.0;
+  FailureKind kind = FailureKind::error;
+  std::string error;
+};
+
+// A "result", "failed" or "started" message for a case and attempt whose other fields are wrong.
+struct UnreadableAnswer {
+  std::string type;
+  std::int64_t case_id = 0;
+  int attempt = 0;
+  std::string problem;
+};
+
+struct JobProtocolError {
+  std::string message;
+};
+
+// A protocol line that is none of the above (an unknown type, a ready message with wrong fields, a
+// case message without its case or attempt): the orchestrator logs it.
+struct UnknownJobMessage {
+  std::string problem;
+};
+
+using JobMessage = std::variant<JobReady, CaseStarted, CaseResult, CaseFailed, UnreadableAnswer, JobProtocolError,
+                                UnknownJobMessage>;
 
 // Decodes one line from a worker job (without its '\n'), for the orchestrator: the message when
 // the line carries the prefix and a JSON object after it; nullopt for any other line (output
 // that is not protocol, which the orchestrator logs).
-std::optional<nlohmann::json> decode_job_line(std::string_view line);
+std::optional<JobMessage> decode_job_line(std::string_view line);
 
 }  // namespace aerobreak

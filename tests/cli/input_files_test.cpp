@@ -99,7 +99,8 @@ TEST_CASE("a FIFO or a device named as an input is refused at once, not waited o
   CHECK_THAT(cluster.text, Catch::Contains("cluster.xyz"));
 }
 
-TEST_CASE("a truncated cluster library is an invalid case naming the file, not an uncaught exception", "[cli][hostile]") {
+TEST_CASE("a truncated cluster library is an invalid case naming the file, not an uncaught exception",
+          "[cli][hostile]") {
   const ScratchDirectory dir("truncated_library");
   const std::string library = dir.file("clusters.h5");
   const CommandOutput generated = run_aerobreak("cluster generate --primaries 16 --count 2 --output " + library);

@@ -1,5 +1,6 @@
 // Connections that hold on (slow-loris, slow bodies, idle sockets, too many at once) cannot keep the
-// service from answering, and a port another service listens on is refused (issue 15 #4, #7).
+// service from answering, and a port another service listens on is refused (docs/ORCHESTRATOR.md,
+// "Limits" and "What happens when things fail").
 // Real `aerobreak serve`, real sockets, loopback only (other clients from 127.0.0.2 and up, which
 // Linux routes over loopback too); every wait is bounded.
 #include <cstdio>
@@ -56,7 +57,7 @@ struct SlowSender {
 
 }  // namespace
 
-TEST_CASE("Health answers while 8 connections dribble headers and 24 sockets sit idle, and both are cut off (issue 15 #4)",
+TEST_CASE("Health answers while 8 connections dribble headers and 24 sockets sit idle, and both are cut off",
           "[service][hostile]") {
   ScratchDirectory scratch("slow-loris");
   ServiceProcess service(scratch.path());
@@ -133,7 +134,7 @@ TEST_CASE("80 sockets dripping headers and 70 dripping bodies, reconnecting, sta
 }
 
 TEST_CASE("Past --max-connections a newcomer takes the slot of a connection awaiting its request, health keeps slots "
-          "of its own, and the rest get an immediate 503 (issue 15 #4)",
+          "of its own, and the rest get an immediate 503",
           "[service][hostile]") {
   ScratchDirectory scratch("max-connections");
   ServiceProcess service(scratch.path(), {"--max-connections", "4"});
@@ -168,7 +169,7 @@ TEST_CASE("Past --max-connections a newcomer takes the slot of a connection awai
   CHECK(eventually([&] { return health_answers(service.port()); }, 5s));
 }
 
-TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port (issue 15 #7)",
+TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port",
           "[service][hostile]") {
   ScratchDirectory scratch("port-taken");
   ServiceProcess first(scratch.path());

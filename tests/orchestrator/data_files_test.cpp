@@ -1,7 +1,8 @@
-// Each case's HDF5 file is checked against the size and SHA-256 its worker recorded (issue 15
-// #11): a damaged or deleted file shows in the case; submitting the study again reports it, keeps
-// its result, and recomputes it when asked. A store moved or copied with its data folder finds its
-// files. Also the receipt of a study submitted again when all its cases are done (issue 15 #12).
+// Each case's HDF5 file is checked against the size and SHA-256 its worker recorded
+// (docs/ORCHESTRATOR.md, Store, "Data files checked"): a damaged or deleted file shows in the case;
+// submitting the study again reports it, keeps its result, and recomputes it when asked. A store
+// moved or copied with its data folder finds its files. Also the receipt of a study submitted again
+// when all its cases are done.
 #include <fstream>
 
 #include "tests/orchestrator/service_process.hpp"

@@ -62,7 +62,8 @@ TEST_CASE("Range requests are bounded: parts merged, many parts answered whole, 
     const std::string repeated = round_trip(port, get_with(target, "Range: " + many_parts(1500) + "\r\n"));
     CHECK(status_of(repeated) == 206);
     CHECK(body_text(repeated).size() == length);
-    CHECK(header_of(repeated, "Content-Range") == "bytes 0-" + std::to_string(length - 1) + "/" + std::to_string(length));
+    const std::string whole_range = "bytes 0-" + std::to_string(length - 1) + "/" + std::to_string(length);
+    CHECK(header_of(repeated, "Content-Range") == whole_range);
 
     // Overlapping parts merge; two apart are multipart; more than 8 apart are the whole answer.
     const std::string merged = round_trip(port, get_with(target, "Range: bytes=0-9, 5-19\r\n"));
@@ -125,7 +126,8 @@ TEST_CASE("Every JSON pointer a study names is bounded before anything is set, t
   const std::string answer = round_trip(port, post_study(indexed));
   CHECK(std::chrono::steady_clock::now() - asked < 2s);
   CHECK(status_of(answer) == 422);
-  CHECK_THAT(body_of(answer).at("violations").dump(), Catch::Contains("/search/axis") && Catch::Contains("would create an array"));
+  CHECK_THAT(body_of(answer).at("violations").dump(),
+             Catch::Contains("/search/axis") && Catch::Contains("would create an array"));
 
   // Too deep, too long: for an axis and for the search axis alike.
   const std::string deep = "/model/a/b/c/d/e/f/g/h/i";

@@ -35,7 +35,7 @@ StudySubmission one_case_study(double wall_time) {
 
 }  // namespace
 
-TEST_CASE("A case killed at its hard limit is reported with the time it had really run (issue 15 #12)",
+TEST_CASE("A case killed at its hard limit is reported with the time it had really run",
           "[scheduler]") {
   ScratchDirectory scratch("hard-limit");
   const auto worker = scratch.write("stuck-worker.sh", kStuckWorker);

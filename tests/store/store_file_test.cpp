@@ -34,7 +34,8 @@ std::int64_t commit_one(Store& store, const std::string& data_file) {
   const auto job = store.start_job("test", 1);
   const auto claimed = store.claim_next_case(job);
   REQUIRE(claimed);
-  REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, testing::result_document("stick", {4}), data_file, 1.0));
+  const auto result = testing::result_document("stick", {4});
+  REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result, data_file, 1.0));
   return claimed->case_id;
 }
 

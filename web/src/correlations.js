@@ -3,9 +3,8 @@
 // their 95 % bands over the measured points; the fitted critical speeds v10, v50, v90 against N with
 // their profile-likelihood intervals; a table of them and the scaling exponents of v50. The summary
 // (GET /api/studies/ID/correlations) names every fit with its group and critical values; a fit's
-// curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (no
-// such service, or no results yet) hides these parts; so does a 409, which older services gave for
-// a study without results.
+// curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (the study
+// has no results yet) hides these parts.
 import { ApiError, getJson } from './api.js';
 import { valueKey } from './series.js';
 
@@ -17,7 +16,7 @@ export async function loadCorrelationSummary(studyId) {
   try {
     return await getJson(`/api/studies/${studyId}/correlations`);
   } catch (error) {
-    if (error instanceof ApiError && (error.status === 404 || error.status === 409)) return null;
+    if (error instanceof ApiError && error.status === 404) return null;
     throw error;
   }
 }
@@ -87,13 +86,4 @@ export class Correlations {
   scaling(outcome) {
     return this.summary.fits.find((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5) || null;
   }
-}
-
-// The lookup-table formats of the export service (docs/WEB.md), offered when it answers HEAD for
-// CSV; [] when it has no such endpoint.
-const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor'];
-
-export async function tableFormats(studyId) {
-  const response = await fetch(`/api/studies/${studyId}/tables?format=${kTableFormats[0]}`, { method: 'HEAD' });
-  return response.status === 404 ? [] : kTableFormats;
 }

@@ -1,10 +1,10 @@
 // A study: its description, progress and axes, plots of the server's per-grid-point statistics,
-// the optional correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
+// once it has results the correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
 import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
-import { Correlations, loadCorrelationSummary, tableFormats } from '../correlations.js';
+import { Correlations, loadCorrelationSummary } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
 import { tablesPanel } from './study_tables.js';
@@ -79,19 +79,17 @@ function controls(state, grid, onChange) {
     slices);
 }
 
-// The parts other services add (correlations, lookup tables), asked for once the page is drawn:
-// fitting a large study the first time takes seconds, and the page does not wait for it.
-// A study without results has nothing to fit or tabulate (the services answer 404 or 409): neither
-// is asked then.
-function loadOptionalParts(id, { hasResults, plots, tablesHolder, redraw, stopped }) {
+// The parts a study has once it has results: the lookup-table links, and the correlations, asked
+// for once the page is drawn (fitting a large study the first time takes seconds, and the page
+// does not wait for it). A study without results has nothing to fit or tabulate (the correlations
+// answer 404, the tables 409): neither is shown then.
+function loadResultParts(id, { hasResults, plots, tablesHolder, redraw, stopped }) {
   if (!hasResults) return;
+  replaceChildren(tablesHolder, tablesPanel(id));
   loadCorrelationSummary(id).then((summary) => {
     if (!summary || stopped()) return;
     plots.setCorrelations(new Correlations(id, summary));
     redraw();
-  }).catch(() => {});
-  tableFormats(id).then((formats) => {
-    if (!stopped()) replaceChildren(tablesHolder, tablesPanel(id, formats));
   }).catch(() => {});
 }
 
@@ -130,7 +128,10 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
-  loadOptionalParts(id, { hasResults: study.progress.counts.done > 0, plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
+  loadResultParts(id, {
+    hasResults: study.progress.counts.done > 0, plots, tablesHolder,
+    redraw: () => plots.draw(current.grid), stopped: () => stopped,
+  });
 
   async function refresh() {
     const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
