@@ -108,7 +108,7 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--max-connections", options->max_connections,
                       "Connections served at once; beyond, a newcomer takes the slot of one that awaits its "
-                      "request, or one of 4 kept for /api/health, or is answered 503 at once")
+                      "request, or one of 4 kept for /api/health, or is answered 503")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   command->add_option("--max-connections-per-client", options->max_connections_per_client,

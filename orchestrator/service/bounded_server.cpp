@@ -18,10 +18,9 @@ namespace {
 
 // Threads that answer connections beyond max_connections with a 503 (a few microseconds each).
 constexpr std::size_t kOverflowThreads = 8;
-// A connection closed before its request was read whole (refused early) is drained for this long,
-// at most this much, so that the client reads the answer instead of a reset (RFC 9112 9.6).
+// A connection closed before its request was read whole (refused early) is drained for this long
+// (LingeringCloses), so that the client reads the answer instead of a reset (RFC 9112 9.6).
 constexpr auto kLingerTime = std::chrono::seconds(2);
-constexpr std::size_t kLingerBytes = 4 << 20;
 
 // A thread per connection, started when every thread is busy, up to `max_threads` (then the
 // connection waits for one); threads are kept for later connections until shutdown.
@@ -87,24 +86,6 @@ const char* reason_phrase(int status) {
   }
 }
 
-// Sends FIN, then reads and drops what the client still sends until it closes (or the time or
-// byte allowance is spent): closing with unread bytes would send a reset that can destroy the
-// answer before the client reads it.
-void linger_close(socket_t socket, std::chrono::steady_clock::duration allowance) {
-  ::shutdown(socket, SHUT_WR);
-  const auto deadline = std::chrono::steady_clock::now() + allowance;
-  std::size_t drained = 0;
-  char sink[16384];
-  while (drained < kLingerBytes) {
-    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    pollfd watched{socket, POLLIN, 0};
-    if (left.count() < 0 || ::poll(&watched, 1, static_cast<int>(left.count())) <= 0) break;
-    const ssize_t n = ::recv(socket, sink, sizeof sink, MSG_DONTWAIT);
-    if (n <= 0) break;
-    drained += static_cast<std::size_t>(n);
-  }
-}
-
 // The library answers Range with as many parts as asked (1,500 "0-" parts made a 47-byte file
 // 201 KB) and 206 even for an unsatisfiable one on a streamed answer: its ranges are dropped here,
 // and the service's post-routing handler answers Range instead (byte_ranges.hpp).
@@ -156,18 +137,24 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
     answer_directly(socket, 503,
                     "the service is serving its limit of " + std::to_string(limits_.max_connections) +
                         " connections; try again shortly");
-    linger_close(socket, std::chrono::milliseconds(0));
-  } else {
-    const bool health_only = ticket.kind == ConnectionSlots::Kind::health;
+    lingering_.close(socket, std::chrono::milliseconds(0));
+    return true;
+  }
+  const bool health_only = ticket.kind == ConnectionSlots::Kind::health;
+  bool refused_unread = false;
+  {
     ConnectionStream stream(socket, health_only ? health_limits_ : limits_, svr_sock_);
     slots_.attach(ticket, stream);
-    const bool refused_unread = serve_requests(stream, health_only);
+    refused_unread = serve_requests(stream, health_only);
     // Before the stream ends: a newcomer looks at the streams of the slots it may take.
     slots_.release(ticket);
-    if (refused_unread) linger_close(socket, kLingerTime);
   }
-  ::shutdown(socket, SHUT_RDWR);
-  ::close(socket);
+  if (refused_unread) {
+    lingering_.close(socket, kLingerTime);
+  } else {
+    ::shutdown(socket, SHUT_RDWR);
+    ::close(socket);
+  }
   return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include "orchestrator/service/connection_slots.hpp"
 #include "orchestrator/service/connection_stream.hpp"
+#include "orchestrator/service/lingering_closes.hpp"
 
 namespace aerobreak {
 
@@ -45,6 +46,7 @@ class BoundedServer : public httplib::Server {
   ConnectionLimits health_limits_;
   std::function<void(const std::string&)> refusals_;
   ConnectionSlots slots_{limits_};
+  LingeringCloses lingering_;
 };
 
 // For handlers on a BoundedServer's connection thread (elsewhere they do nothing or return null):

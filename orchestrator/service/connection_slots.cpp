@@ -39,8 +39,17 @@ bool ConnectionSlots::close_longest_waiting(Kind kind, const std::string& client
 }
 
 ConnectionSlots::Ticket ConnectionSlots::admit(const std::string& client, std::size_t& closed) {
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
   closed = 0;
+  const auto deadline = std::chrono::steady_clock::now() + kWaitForSlot;
+  for (;;) {
+    const Ticket ticket = try_admit(client, closed);
+    if (ticket.kind != Kind::refused) return ticket;
+    if (freed_.wait_until(lock, deadline) == std::cv_status::timeout) return try_admit(client, closed);
+  }
+}
+
+ConnectionSlots::Ticket ConnectionSlots::try_admit(const std::string& client, std::size_t& closed) {
   const auto held = per_client_.find(client);
   const bool client_full = held != per_client_.end() && held->second >= limits_.max_connections_per_client;
   if (client_full) {
@@ -67,6 +76,7 @@ void ConnectionSlots::release(const Ticket& ticket) {
   if (found == holders_.end()) return;
   if (!found->closed) count(*found, false);
   holders_.erase(found);
+  freed_.notify_all();
 }
 
 }  // namespace aerobreak

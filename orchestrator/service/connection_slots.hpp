@@ -1,4 +1,6 @@
 #pragma once
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <mutex>
 #include <string>
@@ -19,9 +21,12 @@ namespace aerobreak {
 //    closed; first among the newcomer's own, then among all;
 //  - where every slot holds a request being served, one of health_connections more slots, whose
 //    connection may ask only for GET or HEAD /api/health (health_connection_limits);
-//  - beyond those, the newcomer is refused (503 at once).
+//  - beyond those, the newcomer waits up to kWaitForSlot for a slot to be given back (a health
+//    slot is held for the milliseconds of one short answer), then is refused (503 at once).
 class ConnectionSlots {
  public:
+  static constexpr std::chrono::milliseconds kWaitForSlot{250};
+
   enum class Kind { regular, health, refused };
   struct Ticket {
     Kind kind = Kind::refused;
@@ -52,9 +57,11 @@ class ConnectionSlots {
   bool close_longest_waiting(Kind kind, const std::string& client);
   void count(const Holder& holder, bool taken);
   Ticket take(const std::string& client, Kind kind);
+  Ticket try_admit(const std::string& client, std::size_t& closed);
 
   const ConnectionLimits& limits_;
   std::mutex mutex_;
+  std::condition_variable freed_;  // a slot was given back
   std::vector<Holder> holders_;  // at most max_connections + health_connections: scanned, not indexed
   std::unordered_map<std::string, std::size_t> per_client_;  // regular slots by client address
   std::size_t regular_ = 0;
