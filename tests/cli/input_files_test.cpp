@@ -5,9 +5,12 @@
 // fails the test instead of holding it.
 #include <catch2/catch.hpp>
 
+#include <sqlite3.h>
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tests/support/run_command.hpp"
@@ -134,4 +137,51 @@ TEST_CASE("16 primaries at one point are refused at input, naming the pair", "[c
   const CommandOutput accepted = run_aerobreak("impact --check " + case_file.string());
   INFO(accepted.text);
   CHECK(accepted.exit_code == 0);
+}
+
+namespace {
+
+// An SQLite database made by `sql`, as another program (or a newer aerobreak) would leave it.
+void make_database(const std::string& file, const std::string& sql) {
+  sqlite3* db = nullptr;
+  REQUIRE(sqlite3_open(file.c_str(), &db) == SQLITE_OK);
+  REQUIRE(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(db);
+}
+
+std::string bytes_of(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("serve and export refuse a file that is not their store, and leave it unchanged", "[cli][hostile]") {
+  const ScratchDirectory dir("foreign_store");
+  const std::string foreign = dir.file("addresses.sqlite");
+  make_database(foreign, "CREATE TABLE addresses (name TEXT, street TEXT); INSERT INTO addresses VALUES ('a', 'b');");
+  const std::string before = bytes_of(foreign);
+  const CommandOutput serve = run_aerobreak("serve --port 0 --store " + foreign);
+  INFO(serve.text);
+  CHECK(serve.exit_code == 1);
+  CHECK_THAT(serve.text, Catch::Contains("is an SQLite database of another program, not an aerobreak store"));
+  CHECK(bytes_of(foreign) == before);
+  CHECK_FALSE(std::filesystem::exists(foreign + "-wal"));
+
+  // A store of a newer aerobreak: no advice to upgrade it with this one.
+  const std::string newer = dir.file("newer.sqlite");
+  std::string tables;
+  for (const char* table : {"studies", "jobs", "cases", "study_cases", "attempts", "results", "fragments"})
+    tables += "CREATE TABLE " + std::string(table) + " (id INTEGER);";
+  make_database(newer, tables + "PRAGMA user_version = 999;");
+  const CommandOutput export_newer = run_aerobreak("export --store " + newer + " --study 1");
+  INFO(export_newer.text);
+  CHECK(export_newer.exit_code == 1);
+  CHECK_THAT(export_newer.text, Catch::Contains("a store of a newer aerobreak (schema version 999"));
+  CHECK_THAT(export_newer.text, !Catch::Contains("upgrade"));
+
+  const CommandOutput negative = run_aerobreak("export --store " + newer + " --study -1");
+  INFO(negative.text);
+  CHECK(negative.exit_code != 0);
+  CHECK_THAT(negative.text, Catch::Contains("--study"));
 }
