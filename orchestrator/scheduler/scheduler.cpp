@@ -1,6 +1,7 @@
 #include "orchestrator/scheduler/scheduler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <variant>
@@ -104,12 +105,14 @@ void Scheduler::step() {
     // each may free a rank, and the freed rank gets its next case right after.
     auto message = job_->next_message(std::chrono::milliseconds(50));
     while (message && !stopping_) {
+      job_heard_ = Clock::now();
       handle(*message);
       message = job_->next_message(std::chrono::milliseconds(0));
     }
     if (!stopping_) {
       feed_job();
       check_hard_limits();
+      check_silence();
       stop_idle_job();
       reap_job();
     }
@@ -126,10 +129,15 @@ void Scheduler::step() {
 void Scheduler::end_job_on_stop() {
   const bool written = storage_.retry_now();
   if (job_) {
-    job_->kill();
+    // A job with no case in flight is told to stop and ends by itself (srun then ends its step and
+    // gives its allocation back before the orchestrator goes); one that does not in time is killed.
+    const bool stopped =
+        in_flight_.empty() && status().job_ready && job_->stop_within(WorkerJob::kTerminationGrace);
+    if (!stopped) job_->kill();
     try {
       store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
-      store_.end_job(status_.job_id, *job_->exit_status(), "killed: the orchestrator stopped");
+      store_.end_job(status_.job_id, *job_->exit_status(),
+                     stopped ? "stopped with the orchestrator" : "killed: the orchestrator stopped");
     } catch (const SqliteError& error) {
       if (!error.storage_fault()) throw;
       note(std::string("could not record the end of the worker job: ") + error.what());
@@ -165,7 +173,9 @@ void Scheduler::launch_job() {
   }
   in_flight_.clear();
   job_told_to_stop_ = false;
+  job_silent_ = false;
   job_idle_since_ = Clock::now();
+  job_heard_ = Clock::now();
   {
     std::lock_guard lock(status_mutex_);
     status_.job_running = true;
@@ -219,6 +229,17 @@ void Scheduler::handle(const JobProtocolError& error) {
 
 void Scheduler::handle(const UnknownJobMessage& message) { note("ignored a worker message: " + message.problem); }
 
+void Scheduler::handle(const JobHeartbeat&) {}  // every message counts as a sign of life (step())
+
+// Rank 0 gave up a rank that went silent; its case comes as a failure of kind lost.
+void Scheduler::handle(const RankLost& lost) {
+  note("worker job " + std::to_string(status().job_id) + " lost rank " + std::to_string(lost.rank) + " on " +
+       lost.host + " (silent for " + std::to_string(std::lround(lost.silent_seconds)) + " s); " +
+       std::to_string(lost.ranks) + " rank(s) left");
+  std::lock_guard lock(status_mutex_);
+  status_.ranks = std::min(status_.ranks, lost.ranks);
+}
+
 Scheduler::Flight Scheduler::flight_of(const std::string& type, std::int64_t case_id, int attempt) {
   const auto flight = in_flight_.find(case_id);
   if (flight != in_flight_.end() && flight->second.attempt == attempt) return flight;
@@ -263,6 +284,7 @@ void Scheduler::handle(const CaseFailed& failed) {
   } else {
     const AttemptEnd end = failed.kind == FailureKind::invalid     ? AttemptEnd::invalid
                            : failed.kind == FailureKind::wall_time ? AttemptEnd::wall_time
+                           : failed.kind == FailureKind::lost      ? AttemptEnd::lost
                                                                    : AttemptEnd::error;
     record_failure(failed.case_id, failed.attempt, end, failed.error);
   }
@@ -325,6 +347,18 @@ void Scheduler::check_hard_limits() {
   }
 }
 
+// A ready job that has said nothing (not even its heartbeat) for the silence limit is taken for
+// lost: seen with srun, which stayed running after Slurm had ended the job for a node failure
+// (tests/slurm/run_slurm_cluster.sh), holding its cases as running for ever.
+void Scheduler::check_silence() {
+  if (job_silent_ || !status().job_ready || Clock::now() - job_heard_ <= options_.silence_limit) return;
+  const auto silent = std::chrono::duration<double>(Clock::now() - job_heard_).count();
+  note("worker job " + std::to_string(status().job_id) + " has sent nothing for " +
+       std::to_string(std::lround(silent)) + " s; killing it");
+  job_silent_ = true;
+  job_->kill();
+}
+
 void Scheduler::stop_idle_job() {
   if (job_told_to_stop_ || !in_flight_.empty() || !status().job_ready) return;
   if (Clock::now() - job_idle_since_ < options_.idle_shutdown) return;
@@ -349,7 +383,8 @@ void Scheduler::reap_job() {
   const auto job_id = status().job_id;
   const bool was_ready = status().job_ready;
   std::string note_text = job_told_to_stop_ && code == 0 ? "stopped when idle"
-                                                         : "ended with exit status " + std::to_string(code);
+                          : job_silent_ ? "was killed after sending nothing for the silence limit"
+                                        : "ended with exit status " + std::to_string(code);
   if (overdue_case_) {
     const auto& flight = in_flight_.at(overdue_case_->case_id);
     record_failure(overdue_case_->case_id, flight.attempt, AttemptEnd::wall_time,

@@ -171,6 +171,15 @@ std::optional<int> WorkerJob::exit_status() {
   return exit_status_;
 }
 
+bool WorkerJob::stop_within(std::chrono::milliseconds patience) {
+  send(to_json(StopRequest{}));
+  close_input();
+  const auto deadline = std::chrono::steady_clock::now() + patience;
+  while (!exit_status() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  return exit_status().has_value();
+}
+
 void WorkerJob::kill() {
   if (exit_status()) return;
   // SIGTERM first: the launcher then ends its ranks itself, on other machines too, and srun ends

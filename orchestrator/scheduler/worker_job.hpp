@@ -46,6 +46,9 @@ class WorkerJob {
 
   // Exit status once the process has ended (waitpid, non-blocking): the exit code, or 128 + signal.
   std::optional<int> exit_status();
+  // Tells the job to stop (a stop message, then end of input) and waits up to `patience` for its
+  // launcher to end by itself; true if it did.
+  bool stop_within(std::chrono::milliseconds patience);
   // Ends the job: SIGTERM to its process group, so that the launcher ends its ranks and (srun)
   // its Slurm job step and allocation; SIGKILL to the group after kTerminationGrace, or once the
   // launcher has ended, for whatever is left on this machine. Reaps the launcher.

@@ -16,6 +16,7 @@
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/routes.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/service/study_templates.hpp"
 
 namespace aerobreak {
 namespace {
@@ -64,6 +65,10 @@ void get_health(Endpoints& e, const httplib::Request&, httplib::Response& respon
 
 void get_openapi(Endpoints&, const httplib::Request&, httplib::Response& response) {
   response.set_content(std::string(openapi_text()), "application/json");
+}
+
+void get_templates(Endpoints&, const httplib::Request&, httplib::Response& response) {
+  send_json(response, 200, study_templates_json());
 }
 
 void list_studies(Endpoints& e, const httplib::Request& request, httplib::Response& response) {

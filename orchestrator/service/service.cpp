@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "orchestrator/scheduler/launcher.hpp"
 #include "orchestrator/service/bounded_server.hpp"
 #include "orchestrator/service/endpoints.hpp"
 #include "orchestrator/service/http_api.hpp"
@@ -20,7 +21,13 @@ bool is_loopback_host(const std::string& host) {
   return ::inet_pton(AF_INET, host.c_str(), &address) == 1 && (ntohl(address.s_addr) >> 24) == 127;
 }
 
-std::filesystem::path default_web_directory() { return AEROBREAK_WEB_DIR; }
+std::filesystem::path default_web_directory() {
+  const std::filesystem::path installed =
+      (current_executable().parent_path() / AEROBREAK_INSTALLED_WEB_DIR).lexically_normal();
+  for (const auto& folder : {installed, std::filesystem::path(AEROBREAK_WEB_DIR)})
+    if (std::filesystem::is_regular_file(folder / "index.html")) return folder;
+  return installed;  // where a page was looked for first, for the message that there is none
+}
 
 Service::Service(Store& store, Scheduler* scheduler, ServiceOptions options)
     : store_(store), scheduler_(scheduler), options_(std::move(options)) {}

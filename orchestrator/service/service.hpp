@@ -44,7 +44,11 @@ struct ServiceOptions {
   std::filesystem::path data_directory;
 };
 
-// The source tree's web/ folder, compiled in (the default of --web-dir).
+// The dashboard's folder when --web-dir is not given: the first of these that holds index.html,
+//   1. ../share/aerobreak/web beside the running executable's bin/ (an install, cmake/Install.cmake,
+//      wherever its prefix was moved),
+//   2. the source tree's web/ this binary was built from (a build run in place, build/aerobreak);
+// the first when neither does (the service then says it found no page there).
 std::filesystem::path default_web_directory();
 
 // True for 127.0.0.0/8, ::1 and "localhost".

@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace aerobreak {
 
@@ -32,13 +31,6 @@ std::optional<TextMessage> try_receive_text(int source, int tag) {
   MPI_Recv(message.text.data(), length, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
   return message;
-}
-
-TextMessage wait_for_text(int source) {
-  while (true) {
-    if (auto message = try_receive_text(source, MPI_ANY_TAG)) return std::move(*message);
-    std::this_thread::sleep_for(kPollPause);
-  }
 }
 
 }  // namespace aerobreak

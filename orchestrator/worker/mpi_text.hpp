@@ -13,6 +13,7 @@ enum MessageTag : int {
   kTagCase = 1,    // rank 0 -> worker rank: a serialized case assignment
   kTagStop = 2,    // rank 0 -> worker rank: no more cases (empty)
   kTagAnswer = 3,  // worker rank -> rank 0: the serialized result or failed message
+  kTagAlive = 4,   // worker rank -> rank 0: still running its case (empty), every kHeartbeatInterval
 };
 
 // How long a waiting rank sleeps between two looks for a message. Open MPI's blocking receive
@@ -31,8 +32,5 @@ void send_text(int destination, int tag, std::string_view text);
 // The next message from `source` with `tag` (MPI_ANY_SOURCE, MPI_ANY_TAG allowed) if one has
 // arrived; never blocks.
 std::optional<TextMessage> try_receive_text(int source, int tag);
-
-// Waits for the next message from `source` with any tag, sleeping kPollPause between looks.
-TextMessage wait_for_text(int source);
 
 }  // namespace aerobreak

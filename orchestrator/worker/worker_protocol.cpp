@@ -77,9 +77,10 @@ int rank_field(const nlohmann::json& message) {
 }
 
 FailureKind failure_kind(const std::string& text) {
-  for (const auto kind : {FailureKind::invalid, FailureKind::error, FailureKind::wall_time, FailureKind::storage})
+  for (const auto kind :
+       {FailureKind::invalid, FailureKind::error, FailureKind::wall_time, FailureKind::storage, FailureKind::lost})
     if (to_string(kind) == text) return kind;
-  throw ProtocolError("/kind: must be invalid, error, wall_time or storage (got \"" + excerpt(text) + "\")");
+  throw ProtocolError("/kind: must be invalid, error, wall_time, storage or lost (got \"" + excerpt(text) + "\")");
 }
 
 JobReady ready_from_json(const nlohmann::json& message) {
@@ -95,6 +96,18 @@ JobReady ready_from_json(const nlohmann::json& message) {
   ready.pid = integer_field(message, "pid", 0, kHighestCase);
   ready.version = string_field(message, "version");
   return ready;
+}
+
+RankLost rank_lost_from_json(const nlohmann::json& message) {
+  RankLost lost;
+  lost.rank = rank_field(message);
+  lost.host = string_field(message, "host");
+  lost.ranks = static_cast<int>(integer_field(message, "ranks", 1, std::numeric_limits<int>::max()));
+  const auto silent = message.find("silent_seconds");
+  if (silent == message.end() || !silent->is_number() || !std::isfinite(silent->get<double>()))
+    throw ProtocolError("/silent_seconds: must be a number of seconds");
+  lost.silent_seconds = silent->get<double>();
+  return lost;
 }
 
 CaseStarted started_from_json(const nlohmann::json& message, std::int64_t case_id, int attempt) {
@@ -131,6 +144,8 @@ JobMessage job_message_from_json(nlohmann::json&& message) {
   try {
     if (type == "ready") return ready_from_json(message);
     if (type == "protocol_error") return JobProtocolError{string_field(message, "message")};
+    if (type == "heartbeat") return JobHeartbeat{};
+    if (type == "rank_lost") return rank_lost_from_json(message);
   } catch (const ProtocolError& error) {
     return UnknownJobMessage{"a '" + type + "' message: " + error.what()};
   }
@@ -161,6 +176,7 @@ std::string to_string(FailureKind kind) {
     case FailureKind::error: return "error";
     case FailureKind::wall_time: return "wall_time";
     case FailureKind::storage: return "storage";
+    case FailureKind::lost: return "lost";
   }
   return "error";
 }
@@ -248,6 +264,13 @@ Json failed_message(std::int64_t case_id, int attempt, int rank, double seconds,
 
 Json protocol_error_message(const std::string& message) {
   return Json{{"type", "protocol_error"}, {"message", message}};
+}
+
+Json heartbeat_message() { return Json{{"type", "heartbeat"}}; }
+
+Json rank_lost_message(int rank, const std::string& host, int ranks_left, double silent_seconds) {
+  return Json{{"type", "rank_lost"}, {"rank", rank}, {"host", host}, {"ranks", ranks_left},
+              {"silent_seconds", silent_seconds}};
 }
 
 Json to_json(const StopRequest&) { return Json{{"type", "stop"}}; }

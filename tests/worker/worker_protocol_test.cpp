@@ -127,7 +127,8 @@ TEST_CASE("Every message a job writes decodes to its typed message with every fi
   CHECK(without_file.data_file_size == -1);
   CHECK(without_file.data_file_sha256.empty());
 
-  for (const auto kind : {FailureKind::invalid, FailureKind::error, FailureKind::wall_time, FailureKind::storage}) {
+  for (const auto kind :
+       {FailureKind::invalid, FailureKind::error, FailureKind::wall_time, FailureKind::storage, FailureKind::lost}) {
     const auto failed = std::get<CaseFailed>(job_message(failed_message(6, 2, 0, 0.5, kind, "why")));
     CHECK(failed.case_id == 6);
     CHECK(failed.attempt == 2);
@@ -136,6 +137,13 @@ TEST_CASE("Every message a job writes decodes to its typed message with every fi
     CHECK(failed.error == "why");
   }
   CHECK(std::get<JobProtocolError>(job_message(protocol_error_message("not JSON"))).message == "not JSON");
+
+  CHECK(std::holds_alternative<JobHeartbeat>(job_message(heartbeat_message())));
+  const auto lost = std::get<RankLost>(job_message(rank_lost_message(3, "n3", 5, 61.5)));
+  CHECK(lost.rank == 3);
+  CHECK(lost.host == "n3");
+  CHECK(lost.ranks == 5);
+  CHECK(lost.silent_seconds == 61.5);
 }
 
 TEST_CASE("A job message with wrong fields is told apart: an answer for its case, or a line to log") {
@@ -160,6 +168,8 @@ TEST_CASE("A job message with wrong fields is told apart: an answer for its case
   CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "paused"}})).problem, Contains("unknown message type"));
   CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "ready"}, {"ranks", 2}, {"hosts", {"n1"}}})).problem,
              Contains("/hosts"));
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "rank_lost"}, {"rank", 3}, {"host", "n3"}})).problem,
+             Contains("/ranks"));
   // Lines that are not protocol: no prefix, or no JSON object after it.
   CHECK_FALSE(decode_job_line(R"({"type":"ready"})"));
   CHECK_FALSE(decode_job_line("@aerobreak {\"type\":"));
