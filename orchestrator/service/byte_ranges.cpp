@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -119,6 +120,26 @@ void answer_parts(httplib::Response& response, const std::vector<ByteRange>& par
   replace_header(response, "Content-Length", std::to_string(response.body.size()));
 }
 
+// The whole of an answer streamed by a provider of known length, at most kMaxGatheredBytes, as
+// one string; nullopt for a longer one or a provider that fails or stops short.
+std::optional<std::string> gathered(const httplib::Response& response) {
+  const std::size_t length = response.content_length_;
+  if (length > kMaxGatheredBytes) return std::nullopt;
+  std::string body;
+  body.reserve(length);
+  httplib::DataSink sink;
+  sink.write = [&body, length](const char* data, std::size_t size) {
+    body.append(data, std::min(size, length - body.size()));
+    return true;
+  };
+  sink.is_writable = [] { return true; };
+  while (body.size() < length) {
+    const std::size_t before = body.size();
+    if (!response.content_provider_(before, length - before, sink) || body.size() == before) return std::nullopt;
+  }
+  return body;
+}
+
 }  // namespace
 
 RangePlan plan_byte_ranges(std::string_view header, std::uint64_t length) {
@@ -150,7 +171,14 @@ void apply_byte_ranges(const httplib::Request& request, httplib::Response& respo
   if (plan.kind == RangePlan::Kind::unsatisfiable) return answer_unsatisfiable(response, length);
   if (plan.kind == RangePlan::Kind::whole) return;
   if (plan.parts.size() == 1) return answer_part(response, plan.parts.front(), length);
-  if (!response.content_provider_) answer_parts(response, plan.parts, length);
+  if (response.content_provider_) {
+    auto body = gathered(response);
+    if (!body) return;  // the whole answer
+    response.content_provider_ = nullptr;
+    response.content_length_ = 0;
+    response.body = std::move(*body);
+  }
+  answer_parts(response, plan.parts, length);
 }
 
 }  // namespace aerobreak

@@ -12,11 +12,14 @@ namespace aerobreak {
 // Range requests (RFC 9110 14), answered the way common servers bound them (Apache after
 // CVE-2011-3192, Go's ServeContent): the parts are resolved against the answer's length, the
 // unsatisfiable ones dropped, the rest sorted and overlapping or adjacent parts merged; none left
-// is 416 with "Content-Range: bytes */LENGTH"; one is 206 with that part; more than
-// kMaxRangeParts, or several of an answer streamed from a file, are the whole answer (200, as
-// RFC 9110 14.2 allows a server to ignore Range). So no Range header can make an answer longer
-// than the whole answer plus kMaxRangeParts part headers.
+// is 416 with "Content-Range: bytes */LENGTH"; one is 206 with that part; 2 to kMaxRangeParts a
+// multipart/byteranges 206; more than kMaxRangeParts, or several of a streamed answer longer than
+// kMaxGatheredBytes (a large case file), are the whole answer (200, as RFC 9110 14.2 allows a
+// server to ignore Range). So no Range header can make an answer longer than the whole answer plus
+// kMaxRangeParts part headers.
 constexpr std::size_t kMaxRangeParts = 8;
+// The longest streamed answer read into memory to cut several parts from.
+constexpr std::size_t kMaxGatheredBytes = std::size_t{1} << 20;
 
 // One part, both ends included, as resolved against an answer of known length.
 struct ByteRange {

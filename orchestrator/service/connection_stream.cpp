@@ -75,6 +75,7 @@ bool ConnectionStream::await_request() {
   in_headers_ = true;
   header_bytes_ = 0;
   header_lines_ = 0;
+  header_line_bytes_ = 0;
   header_tail_ = 0;
   request_bytes_ = 0;
   bytes_written_ = 0;
@@ -126,7 +127,17 @@ bool ConnectionStream::account_header_bytes(const char* bytes, std::size_t count
   for (std::size_t i = 0; i < count && in_headers_; ++i) {
     const auto byte = static_cast<unsigned char>(bytes[i]);
     header_tail_ = (header_tail_ << 8) | byte;
-    if (byte == '\n') ++header_lines_;
+    if (++header_line_bytes_ > limits_.max_header_line_bytes) {
+      const bool request_line = header_lines_ == 0;
+      fail(request_line ? 414 : 431, std::string(request_line ? "the request line" : "a header line") +
+                                         " is longer than " + std::to_string(limits_.max_header_line_bytes) +
+                                         " bytes");
+      return false;
+    }
+    if (byte == '\n') {
+      ++header_lines_;
+      header_line_bytes_ = 0;
+    }
     if (++header_bytes_ > limits_.max_header_bytes) {
       fail(431, "the request line and headers are longer than " + std::to_string(limits_.max_header_bytes) + " bytes");
       return false;

@@ -24,6 +24,9 @@ struct ConnectionLimits {
   std::chrono::milliseconds rate_grace{std::chrono::seconds(2)};
   std::size_t max_header_bytes = 32 * 1024;  // request line and headers
   std::size_t max_header_lines = 100;        // request line and headers
+  // One line, its line end included: cpp-httplib's own limit (CPPHTTPLIB_HEADER_MAX_LENGTH), past
+  // which it answered a bare 400 and read the rest of the line as further requests.
+  std::size_t max_header_line_bytes = 8192;
   std::size_t requests_per_connection = 100; // keep-alive
 };
 
@@ -92,6 +95,7 @@ class ConnectionStream final : public httplib::Stream {
   bool in_headers_ = true;
   std::size_t header_bytes_ = 0;
   std::size_t header_lines_ = 0;
+  std::size_t header_line_bytes_ = 0;  // of the line arriving, so far
   unsigned header_tail_ = 0;  // the last bytes of the header section, to spot its blank line
   std::size_t request_bytes_ = 0;  // of the current request, handed to the library so far
   std::atomic<bool> awaiting_{true};

@@ -44,11 +44,12 @@ bool accepts_gzip(const httplib::Request& request) {
 
 void compress_answer(const httplib::Request& request, httplib::Response& response) {
   // Error answers keep their body, where the service's error handler looks for it (error_answers.cpp).
-  if (response.status >= 400 || response.body.empty() || !request.ranges.empty() || response.has_header("Content-Encoding"))
-    return;
+  if (response.status >= 400 || response.body.empty() || response.has_header("Content-Encoding")) return;
   const std::string content_type = response.get_header_value("Content-Type");
   if (!compressible(content_type)) return;
-  const bool gzipped = response.body.size() >= kCompressFromBytes && accepts_gzip(request);
+  // A Range counts the bytes of the answer as it is (byte_ranges.hpp): one asked for is not gzipped.
+  const bool gzipped =
+      response.body.size() >= kCompressFromBytes && accepts_gzip(request) && !request.has_header("Range");
   auto body = std::make_shared<const std::string>(gzipped ? gzip(response.body) : std::move(response.body));
   response.body.clear();
   response.headers.erase("Content-Type");
