@@ -183,5 +183,5 @@ TEST_CASE("serve and export refuse a file that is not their store, and leave it 
   const CommandOutput negative = run_aerobreak("export --store " + newer + " --study -1");
   INFO(negative.text);
   CHECK(negative.exit_code != 0);
-  CHECK_THAT(negative.text, Catch::Contains("--study"));
+  CHECK_THAT(negative.text, Catch::Contains("--study") && Catch::Contains("not in range 1 to"));
 }
