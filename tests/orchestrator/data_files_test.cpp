@@ -38,7 +38,7 @@ void flip_a_byte(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("A damaged or deleted case file shows in the case; resubmitting reports it and recomputes it when asked",
+TEST_CASE("A damaged or deleted case file shows in the case, resubmitting reports it and recomputes it when asked",
           "[service]") {
   ScratchDirectory scratch("data-files");
   ServiceProcess service(scratch.path());
