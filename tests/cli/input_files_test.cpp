@@ -75,6 +75,16 @@ TEST_CASE("a document over 1 MiB is refused before it is read", "[cli][hostile]"
   CHECK_THAT(expand.text, Catch::Contains(file.string()) && Catch::Contains("bytes, more than the 1048576 read here"));
 }
 
+TEST_CASE("a cluster file's bad line is quoted in part, however long it is", "[cli][hostile]") {
+  const ScratchDirectory dir("long_line");
+  const auto file = dir.write("one_line.xyz", std::string(1000000, '['));
+  const CommandOutput analyse = run_aerobreak("cluster analyse " + file.string());
+  INFO(analyse.text.substr(0, 2000));
+  CHECK(analyse.exit_code == 1);
+  CHECK_THAT(analyse.text, Catch::Contains(file.string() + ":1: expected") && Catch::Contains("[[[...'"));
+  CHECK(analyse.text.size() < 1000);
+}
+
 TEST_CASE("a FIFO or a device named as an input is refused at once, not waited on", "[cli][hostile]") {
   const ScratchDirectory dir("special_input");
   const std::string fifo = dir.file("case.json");
