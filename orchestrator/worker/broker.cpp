@@ -123,13 +123,14 @@ void Broker::dispatch() {
     CaseAssignment assignment = std::move(queue_.front());
     queue_.pop_front();
     RankSlot& slot = ranks_[static_cast<std::size_t>(rank)];
-    slot = {true, false, Clock::now(), Clock::now(), assignment.case_id, assignment.attempt};
+    // The rank answered its last case, so it took that case's hand-over: ending it does not wait.
+    slot = {true, false, Clock::now(), Clock::now(), assignment.case_id, assignment.attempt, nullptr};
     // An idle rank begins a case the moment it receives it (a worker rank looks every kPollPause).
     out_.send(started_message(assignment.case_id, assignment.attempt, rank, hosts_[static_cast<std::size_t>(rank)]));
     if (rank == 0)
       local_.start(std::move(assignment));
     else
-      send_text(rank, kTagCase, serialize_message(to_json(assignment)));
+      slot.handover = std::make_unique<PendingSend>(rank, kTagCase, serialize_message(to_json(assignment)));
   }
 }
 

@@ -2,12 +2,14 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "orchestrator/worker/line_reader.hpp"
 #include "orchestrator/worker/local_runner.hpp"
 #include "orchestrator/worker/mpi_session.hpp"
+#include "orchestrator/worker/mpi_text.hpp"
 #include "orchestrator/worker/protocol_output.hpp"
 #include "orchestrator/worker/worker_protocol.hpp"
 
@@ -40,6 +42,7 @@ class Broker {
     Clock::time_point heard;   // its last message, or the hand-over
     std::int64_t case_id = 0;
     int attempt = 0;
+    std::unique_ptr<PendingSend> handover;  // its case on the way to it (worker ranks)
   };
 
   void serve();

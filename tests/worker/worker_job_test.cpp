@@ -213,6 +213,22 @@ TEST_CASE("A running job says it is alive every couple of seconds") {
   stop_cleanly(job);
 }
 
+TEST_CASE("A rank stopped before it takes its case is given up too: the hand-over never waits for the rank") {
+  WorkerJob job(2, Launch::mpirun, {"--silence-limit", "2"});
+  const pid_t rank0 = job.expect("ready", kPatience)["pid"].get<pid_t>();
+  const pid_t rank1 = worker_rank_process(job, rank0);
+  REQUIRE(rank1 > 0);
+  REQUIRE(::kill(rank1, SIGSTOP) == 0);  // stopped before its first case reaches it
+  job.send(case_message(73, tiny_case()));
+  CHECK(job.expect("started", kPatience)["rank"] == 1);
+  CHECK(job.expect("rank_lost", kPatience)["rank"] == 1);
+  const Json failed = job.expect("failed", kPatience);
+  CHECK(failed["case"] == 73);
+  CHECK(failed["kind"] == "lost");
+  job.send(case_message(74, tiny_case()));
+  CHECK(answer_of(job, 74, "result")["rank"] == 0);
+}
+
 TEST_CASE("A rank stopped mid-case is given up after the silence limit: its case fails as lost, the others go on") {
   WorkerJob job(2, Launch::mpirun, {"--silence-limit", "2"});
   const pid_t rank0 = job.expect("ready", kPatience)["pid"].get<pid_t>();
