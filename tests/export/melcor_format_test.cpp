@@ -15,6 +15,7 @@
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/app/study_fits.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
+#include "tests/export/finite_number.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/support/scratch_directory.hpp"
 
@@ -31,15 +32,6 @@ struct MelcorDeck {
   std::map<std::string, std::string> conditions;  // number -> the legend's text
   std::vector<std::string> comments;
 };
-
-double number(const std::string& word) {
-  char* end = nullptr;
-  const double value = std::strtod(word.c_str(), &end);
-  INFO(word);
-  REQUIRE(*end == '\0');
-  REQUIRE(std::isfinite(value));
-  return value;
-}
 
 // The TF input grammar; '!' starts a comment (kept apart for the legend and the ranges).
 MelcorDeck parse(const std::string& text) {
@@ -63,15 +55,15 @@ MelcorDeck parse(const std::string& text) {
     const std::string quoted = words.at(i + 1);
     REQUIRE((quoted.size() > 2 && quoted.front() == '\'' && quoted.back() == '\''));
     TabularFunction function{quoted.substr(1, quoted.size() - 2), {}, {}};
-    CHECK(number(words.at(i + 2)) == 1.0);
+    CHECK(finite_number(words.at(i + 2)) == 1.0);
     REQUIRE(words.at(i + 3) == "TF_TAB");
     const int n = std::stoi(words.at(i + 4));
     REQUIRE(n >= 1);
     i += 5;
     for (int k = 1; k <= n; ++k, i += 3) {
       CHECK(std::stoi(words.at(i)) == k);
-      function.x.push_back(number(words.at(i + 1)));
-      function.y.push_back(number(words.at(i + 2)));
+      function.x.push_back(finite_number(words.at(i + 1)));
+      function.y.push_back(finite_number(words.at(i + 2)));
       if (k > 1) CHECK(function.x[k - 1] > function.x[k - 2]);
     }
     deck.functions.push_back(std::move(function));

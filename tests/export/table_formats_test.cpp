@@ -18,6 +18,7 @@
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/app/study_tables.hpp"
 #include "tests/export/export_study.hpp"
+#include "tests/export/finite_number.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_directory.hpp"
@@ -230,15 +231,6 @@ std::vector<std::string> tokens(const std::string& text, const std::string& mark
     for (std::string word; words_of >> word;) words.push_back(word);
   }
   return words;
-}
-
-double finite_number(const std::string& word) {
-  char* end = nullptr;
-  const double value = std::strtod(word.c_str(), &end);
-  INFO(word);
-  REQUIRE(*end == '\0');
-  REQUIRE(std::isfinite(value));
-  return value;
 }
 
 }  // namespace

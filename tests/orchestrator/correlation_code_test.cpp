@@ -189,6 +189,16 @@ void check_v50(const ServiceProcess& service, const Evaluations& code, const Jso
   CHECK(compared == 5 * sizes.size());  // every fitted function (stick only on the adhesive wall), each size
 }
 
+// The driver built in `scratch` by `compile` (which writes ./drive), run, and its values read back.
+Evaluations built_and_run(const ScratchDirectory& scratch, const std::string& compile) {
+  const auto built = run_command("cd " + scratch.path().string() + " && " + compile);
+  INFO(built.text);
+  REQUIRE(built.exit_code == 0);
+  const auto output = run_command(scratch.file("drive"), true);
+  REQUIRE(output.exit_code == 0);
+  return parse_output(output.text);
+}
+
 }  // namespace
 
 TEST_CASE("Correlations as code: gfortran and gcc programs agree with the service to 1e-12 at random points",
@@ -228,26 +238,15 @@ TEST_CASE("Correlations as code: gfortran and gcc programs agree with the servic
     REQUIRE_FALSE(gfortran.empty());
     std::ofstream(scratch.file("study1_correlations.f90")) << text_of(service, tables + "fortran");
     std::ofstream(scratch.file("drive.f90")) << fortran_driver(description, points, run);
-    const auto built = run_command("cd " + scratch.path().string() + " && " + gfortran +
-                                   " -std=f2008 -Wall -Werror -Wno-unused-dummy-argument -ffpe-trap=invalid,zero,overflow"
-                                   " -o drive study1_correlations.f90 drive.f90");
-    INFO(built.text);
-    REQUIRE(built.exit_code == 0);
-    const auto output = run_command(scratch.file("drive"), true);
-    REQUIRE(output.exit_code == 0);
-    const auto code = parse_output(output.text);
+    const auto code = built_and_run(scratch, gfortran + " -std=f2008 -Wall -Werror -Wno-unused-dummy-argument "
+                                                        "-ffpe-trap=invalid,zero,overflow -o drive study1_correlations.f90 drive.f90");
     check_against_table(code, description, points, table);
     check_v50(service, code, description, run);
   }
   SECTION("the C header, compiled by gcc") {
     std::ofstream(scratch.file("study1_correlations.h")) << text_of(service, tables + "c");
     std::ofstream(scratch.file("drive.c")) << c_driver(description, points, run);
-    const auto built = run_command("cd " + scratch.path().string() + " && gcc -std=c99 -pedantic -Wall -Wextra -Werror -o drive drive.c -lm");
-    INFO(built.text);
-    REQUIRE(built.exit_code == 0);
-    const auto output = run_command(scratch.file("drive"), true);
-    REQUIRE(output.exit_code == 0);
-    const auto code = parse_output(output.text);
+    const auto code = built_and_run(scratch, "gcc -std=c99 -pedantic -Wall -Wextra -Werror -o drive drive.c -lm");
     check_against_table(code, description, points, table);
     check_v50(service, code, description, run);
   }
