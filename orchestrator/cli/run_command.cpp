@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
@@ -20,6 +21,7 @@
 #include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/study/field_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -125,12 +127,21 @@ void print_critical_speeds(Store& store, std::int64_t study_id) {
     CorrelationCache cache(store);
     const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
     std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
-              << ": logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
-                 "intervals (docs/CORRELATIONS.md)\n\n"
-              << format_critical_table(nlohmann::ordered_json::parse(set->summary));
+              << ": logistic fits of P in log impact speed, per group (docs/CORRELATIONS.md)\n\n"
+              << format_critical_table(nlohmann::ordered_json::parse(set->summary), "impact_speed",
+                                       speed_unit_label(study->document), physical_study(study->document))
+              << "\n"
+              << critical_table_legend();
   } catch (const CorrelationRequestError& error) {
     std::cout << "\nNo critical speeds: " << error.what() << "\n";
   }
+}
+
+// The service lives as long as the command: its address, printed at the start, is dead from now on.
+void print_no_longer_served(const std::string& url, const std::filesystem::path& store_file) {
+  std::cerr << "aerobreak run: the study is over and " << url << " is no longer served. To see the page, the API or "
+            << "the tables again: aerobreak serve --store " << store_file.string()
+            << " (then http://127.0.0.1:8080/), or run with --keep-serving next time.\n";
 }
 
 int run(RunOptions options) {
@@ -139,8 +150,10 @@ int run(RunOptions options) {
   try {
     study = load_study(options.study_file);
   } catch (const StudyError& error) {
-    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n" << error.what() << "\n";
-    return 1;
+    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n";
+    for (const auto& v : error.violations())
+      std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
+    return kExitInvalidInput;
   }
   if (options.orchestrator.store.empty())
     options.orchestrator.store = "runs/" + std::filesystem::path(options.study_file).stem().stem().string() + ".sqlite";
@@ -166,7 +179,7 @@ int run(RunOptions options) {
             << " already done" << recomputed << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
-            << " in a browser (API: " << study_url << ")\n";
+            << " in a browser while the study runs (API: " << study_url << ")\n";
 
   const auto started = std::chrono::steady_clock::now();
   ProgressBar bar;
@@ -180,7 +193,7 @@ int run(RunOptions options) {
       std::cerr << "aerobreak run: interrupted; finished cases are kept: run the same command again to go on\n";
       service->stop();
       scheduler.stop();
-      return 130;
+      return kExitInterrupted;
     }
   }
   bar.finish();
@@ -189,9 +202,12 @@ int run(RunOptions options) {
   std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n";
   // A search's outcome table has a row per value it placed: its groups' crossings say more.
   if (study.search)
-    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
+    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)),
+                                     study.search->axis,
+                                     study_axis_unit(study.search->axis, physical_study(study.document)));
   else
-    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)), speed_unit_label(study.document));
+    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)),
+                                      physical_study(study.document));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, receipt.study_id);
@@ -203,7 +219,8 @@ int run(RunOptions options) {
     signals.wait();
   }
   service->stop();
-  return progress.by_status.at("failed") > 0 ? 3 : 0;
+  if (!options.keep_serving) print_no_longer_served(service->url(), store.file());
+  return progress.by_status.at("failed") > 0 ? kExitPartlyFailed : kExitDone;
 }
 
 }  // namespace
@@ -225,7 +242,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       exit_code = run(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak run: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

@@ -9,8 +9,10 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
+#include "orchestrator/study/field_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -39,6 +41,28 @@ struct ServiceUnreachable {
   std::string message;
 };
 
+// Why a request got no answer, as a sentence (httplib names only the kind of error: "Connection").
+std::string unreachable_reason(httplib::Error error) {
+  switch (error) {
+    case httplib::Error::Connection:
+      return "nothing accepts connections there.\n  Start a service with `aerobreak serve` (or keep the one of a run "
+             "up "
+             "with `aerobreak run STUDY.json --keep-serving`),\n  or give its address with --url or AEROBREAK_URL.";
+    case httplib::Error::ConnectionTimeout:
+      return "no connection within 5 s (is the address right, and reachable?)";
+    case httplib::Error::Read:
+      return "the connection broke before the whole answer came";
+    case httplib::Error::Write:
+      return "the connection broke while the request was sent";
+    case httplib::Error::SSLConnection:
+    case httplib::Error::SSLLoadingCerts:
+    case httplib::Error::SSLServerVerification:
+      return "the TLS connection failed (" + httplib::to_string(error) + ")";
+    default:
+      return "the request failed (" + httplib::to_string(error) + ")";
+  }
+}
+
 std::string environment_or(const char* name, const std::string& fallback) {
   const char* value = std::getenv(name);
   return value && *value ? value : fallback;
@@ -66,7 +90,8 @@ class ApiClient {
 
  private:
   nlohmann::ordered_json answer(const httplib::Result& result, const std::string& path) {
-    if (!result) throw ServiceUnreachable{"cannot reach " + url_ + path + ": " + httplib::to_string(result.error())};
+    if (!result)
+      throw ServiceUnreachable{"no answer from the service at " + url_ + ": " + unreachable_reason(result.error())};
     nlohmann::ordered_json body = nlohmann::ordered_json::parse(result->body, nullptr, false);
     if (result->status >= 400) throw ServiceRefusal{result->status, body};
     if (body.is_discarded()) throw ServiceUnreachable{url_ + path + " did not answer with JSON"};
@@ -116,12 +141,17 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
     return;
   }
   const auto& provenance = answer.at("provenance");
-  std::cout << "Correlations of study " << provenance.at("study") << " (result set " << provenance.at("result_set_hash").get<std::string>().substr(0, 12)
-            << ", aerobreak " << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
-            << "Critical speeds in " << speed_unit_label(study_document(api, options)) << " (95 % profile-likelihood intervals):\n"
-            << format_critical_table(answer) << "\n"
-            << "Critical energies per contact E_kin/(N_c E_break):\n" << format_critical_table(answer, "energy_per_contact")
-            << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME") << " for one in full):\n"
+  const auto document = study_document(api, options);
+  const std::string speed_unit = speed_unit_label(document);
+  std::cout << "Correlations of study " << provenance.at("study") << " (result set "
+            << provenance.at("result_set_hash").get<std::string>().substr(0, 12) << ", aerobreak "
+            << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
+            << "Critical speeds in " << speed_unit << ":\n"
+            << format_critical_table(answer, "impact_speed", speed_unit, physical_study(document)) << "\n"
+            << "Critical energies per contact E_kin/(N_c E_break) (dimensionless):\n"
+            << format_critical_table(answer, "energy_per_contact", speed_unit, physical_study(document)) << "\n"
+            << critical_table_legend() << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME")
+            << " for one in full):\n"
             << format_fit_list(answer);
 }
 
@@ -155,7 +185,7 @@ int run_client(const std::string& action, const ClientOptions& options) {
       std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
     } else {
       std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")),
-                                        speed_unit_label(study_document(api, options)));
+                                        physical_study(study_document(api, options)));
     }
   } else if (action == "correlations") {
     print_correlations(api, options);
@@ -187,13 +217,13 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
             std::cerr << "  " << (violation.value("pointer", std::string()).empty() ? "(document)"
                                                                                      : violation.value("pointer", std::string()))
                       << ": " << violation.value("message", std::string()) << "\n";
-        exit_code = 2;
+        exit_code = kExitInvalidInput;
       } catch (const ServiceUnreachable& unreachable) {
         std::cerr << "aerobreak study " << name << ": " << unreachable.message << "\n";
-        exit_code = 3;
+        exit_code = kExitUnreachable;
       } catch (const std::exception& error) {
         std::cerr << "aerobreak study " << name << ": " << error.what() << "\n";
-        exit_code = 1;
+        exit_code = kExitError;
       }
     });
     return command;
