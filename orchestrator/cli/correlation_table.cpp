@@ -7,6 +7,7 @@
 
 #include "orchestrator/cli/outcome_table.hpp"
 #include "orchestrator/cli/text_table.hpp"
+#include "orchestrator/study/field_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -84,13 +85,14 @@ std::string wrapped(const std::string& reason, const std::vector<std::string>& g
 }
 
 // The fits without any crossing, one paragraph per reason, naming their groups.
-std::string folded_lines(const std::vector<const Json*>& fits, const std::string& dose_words, bool physical) {
+std::string folded_lines(const std::vector<const Json*>& fits, const std::string& dose_words,
+                         const std::string& system) {
   std::vector<std::string> reasons;
   std::map<std::string, std::vector<std::string>> groups;
   for (const Json* fit : fits) {
     const std::string reason = why_no_value(*fit, dose_words);
     if (!groups.count(reason)) reasons.push_back(reason);
-    groups[reason].push_back(group_title(fit->at("group"), physical));
+    groups[reason].push_back(group_title(fit->at("group"), system));
   }
   std::string text;
   for (const auto& reason : reasons) text += wrapped(reason, groups[reason]);
@@ -99,11 +101,11 @@ std::string folded_lines(const std::vector<const Json*>& fits, const std::string
 
 }  // namespace
 
-std::string format_critical_table(const Json& summary, const std::string& dose, const std::string& speed_unit,
-                                  bool physical) {
+std::string format_critical_table(const Json& summary, const std::string& dose, const std::string& system) {
   const bool speeds = dose == "impact_speed";
   const std::string symbol = speeds ? "v" : "E";
-  const std::string unit = speeds ? " (" + speed_unit + ")" : "";
+  const std::string speed_unit = speeds ? study_axis_unit(dose, system) : "";
+  const std::string unit = speed_unit.empty() ? "" : " (" + speed_unit + ")";
   TextTable table;
   table.header = {"P of",
                   "n",
@@ -123,14 +125,14 @@ std::string format_critical_table(const Json& summary, const std::string& dose, 
     for (std::size_t k = 0; k < 3; ++k)
       row.push_back(k < critical.size() ? with_interval(fit, dose, critical[k]) : "-");
     row.push_back(fit_state(fit));
-    table.rows_of(group_title(fit.at("group"), physical)).push_back(row);
+    table.rows_of(group_title(fit.at("group"), system)).push_back(row);
   }
   if (table.sections.empty() && without_transition.empty())
     return std::string("(no ") + (speeds ? "speed" : "energy") + " fits)\n";
   std::string text = table.sections.empty() ? "" : format_text_table(table);
   if (!without_transition.empty())
     text += std::string(text.empty() ? "" : "\n") + "No critical " + (speeds ? "speed" : "energy") +
-            " in these groups:\n" + folded_lines(without_transition, speeds ? "speed" : "energy", physical);
+            " in these groups:\n" + folded_lines(without_transition, speeds ? "speed" : "energy", system);
   return text;
 }
 

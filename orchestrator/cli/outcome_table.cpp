@@ -76,8 +76,17 @@ std::vector<std::string> row_of(const Json& point, const std::string& rows_by) {
           count(point.at("failed"))};
 }
 
-std::string legend(const std::string& rows_by, bool physical) {
-  const std::string unit = study_axis_unit(rows_by, physical);
+// "m/s", or in a study whose axis sets /units "m/s where /units = physical, d/tau otherwise".
+std::string unit_words(const std::string& axis, const std::string& system) {
+  if (system != "mixed") return study_axis_unit(axis, system);
+  const std::string physical = study_axis_unit(axis, "physical"), reduced = study_axis_unit(axis, "reduced");
+  if (physical == reduced) return physical;
+  return (physical.empty() ? "-" : physical) + " where /units = physical, " + (reduced.empty() ? "-" : reduced) +
+         " otherwise";
+}
+
+std::string legend(const std::string& rows_by, const std::string& system) {
+  const std::string unit = unit_words(rows_by, system);
   const std::string axis_line = rows_by == kSpeedAxis
                                     ? "speed: the impact speed" + (unit.empty() ? "" : ", in " + unit) + ". "
                                     : (rows_by.empty() ? "" : rows_by + (unit.empty() ? "" : ": in " + unit) + ". ");
@@ -94,22 +103,21 @@ std::string legend(const std::string& rows_by, bool physical) {
 
 }  // namespace
 
-std::string group_title(const Json& values, bool physical, const std::string& left_out) {
+std::string group_title(const Json& values, const std::string& system, const std::string& left_out) {
+  const std::string own_system = point_unit_system(values, system);
   std::string title;
   for (const auto& [axis, value] : values.items())
     if (axis != left_out)
-      title += (title.empty() ? "" : ", ") + axis + " = " + with_unit(number(value), study_axis_unit(axis, physical));
+      title += (title.empty() ? "" : ", ") + axis + " = " + with_unit(number(value), study_axis_unit(axis, own_system));
   return title;
 }
 
-std::string speed_unit_label(const Json& study_document) {
-  return case_field_unit("/impact/speed", physical_study(study_document));
-}
+std::string speed_unit_label(const std::string& system) { return unit_words(kSpeedAxis, system); }
 
-std::string format_outcome_table(const Json& table, bool physical) {
+std::string format_outcome_table(const Json& table, const std::string& system) {
   const auto& points = table.at("grid_points");
   const std::string rows_by = row_axis(points);
-  const std::string unit = study_axis_unit(rows_by, physical);
+  const std::string unit = study_axis_unit(rows_by, system);
   TextTable text;
   text.header = {(rows_by == kSpeedAxis ? std::string("speed") : rows_by) + (unit.empty() ? "" : "\n" + unit),
                  "n",
@@ -122,8 +130,8 @@ std::string format_outcome_table(const Json& table, bool physical) {
                  "undet.",
                  "failed"};
   for (const auto& point : points)
-    text.rows_of(group_title(point.at("grid_point"), physical, rows_by)).push_back(row_of(point, rows_by));
-  return format_text_table(text) + "\n" + legend(rows_by, physical);
+    text.rows_of(group_title(point.at("grid_point"), system, rows_by)).push_back(row_of(point, rows_by));
+  return format_text_table(text) + "\n" + legend(rows_by, system);
 }
 
 }  // namespace aerobreak

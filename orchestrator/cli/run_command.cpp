@@ -22,6 +22,7 @@
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
 #include "orchestrator/study/field_units.hpp"
+#include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -126,10 +127,10 @@ void print_critical_speeds(Store& store, std::int64_t study_id) {
   try {
     CorrelationCache cache(store);
     const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
-    std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
+    std::cout << "\nCritical speeds in " << speed_unit_label(study_unit_system(study->document))
               << ": logistic fits of P in log impact speed, per group (docs/CORRELATIONS.md)\n\n"
               << format_critical_table(nlohmann::ordered_json::parse(set->summary), "impact_speed",
-                                       speed_unit_label(study->document), physical_study(study->document))
+                                       study_unit_system(study->document))
               << "\n"
               << critical_table_legend();
   } catch (const CorrelationRequestError& error) {
@@ -204,10 +205,10 @@ int run(RunOptions options) {
   if (study.search)
     std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)),
                                      study.search->axis,
-                                     study_axis_unit(study.search->axis, physical_study(study.document)));
+                                     study_axis_unit(study.search->axis, study_unit_system(study.document)));
   else
     std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)),
-                                      physical_study(study.document));
+                                      study_unit_system(study.document));
   print_critical_speeds(store, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, receipt.study_id);

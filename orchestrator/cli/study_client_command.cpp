@@ -12,7 +12,6 @@
 #include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
-#include "orchestrator/study/field_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -124,9 +123,9 @@ void print_progress(const nlohmann::ordered_json& progress) {
   std::cout << (progress.at("complete").get<bool>() ? " (complete)" : "") << "\n";
 }
 
-// The study's document as the service stored it (for its units).
-nlohmann::ordered_json study_document(ApiClient& api, const ClientOptions& options) {
-  return api.get(study_path(options.study_id)).value("document", nlohmann::ordered_json::object());
+// The study's unit system as the service names it (its "units": physical, reduced or mixed).
+std::string unit_system(ApiClient& api, const ClientOptions& options) {
+  return api.get(study_path(options.study_id)).at("units").at("system").get<std::string>();
 }
 
 // The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
@@ -141,15 +140,14 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
     return;
   }
   const auto& provenance = answer.at("provenance");
-  const auto document = study_document(api, options);
-  const std::string speed_unit = speed_unit_label(document);
+  const std::string system = unit_system(api, options);
   std::cout << "Correlations of study " << provenance.at("study") << " (result set "
             << provenance.at("result_set_hash").get<std::string>().substr(0, 12) << ", aerobreak "
             << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
-            << "Critical speeds in " << speed_unit << ":\n"
-            << format_critical_table(answer, "impact_speed", speed_unit, physical_study(document)) << "\n"
+            << "Critical speeds in " << speed_unit_label(system) << ":\n"
+            << format_critical_table(answer, "impact_speed", system) << "\n"
             << "Critical energies per contact E_kin/(N_c E_break) (dimensionless):\n"
-            << format_critical_table(answer, "energy_per_contact", speed_unit, physical_study(document)) << "\n"
+            << format_critical_table(answer, "energy_per_contact", system) << "\n"
             << critical_table_legend() << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME")
             << " for one in full):\n"
             << format_fit_list(answer);
@@ -185,7 +183,7 @@ int run_client(const std::string& action, const ClientOptions& options) {
       std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
     } else {
       std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")),
-                                        physical_study(study_document(api, options)));
+                                        unit_system(api, options));
     }
   } else if (action == "correlations") {
     print_correlations(api, options);

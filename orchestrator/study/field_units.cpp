@@ -41,19 +41,22 @@ constexpr std::array<FieldUnit, 20> kFieldUnits{{
 
 }  // namespace
 
-bool physical_study(const nlohmann::ordered_json& study_document) {
-  const auto base = study_document.find("base");
-  return base != study_document.end() && base->is_object() && base->value("units", std::string()) == "physical";
-}
-
 std::string case_field_unit(const std::string& pointer, bool physical) {
   for (const auto& field : kFieldUnits)
     if (field.pointer == pointer) return std::string(physical ? field.physical : field.reduced);
   return "";
 }
 
-std::string study_axis_unit(const std::string& axis_name, bool physical) {
-  return case_field_unit(axis_pointer(axis_name), physical);
+std::string study_axis_unit(const std::string& axis_name, const std::string& system) {
+  const std::string pointer = axis_pointer(axis_name);
+  if (system != "mixed") return case_field_unit(pointer, system == "physical");
+  const std::string physical = case_field_unit(pointer, true);
+  return physical == case_field_unit(pointer, false) ? physical : "";
+}
+
+std::string point_unit_system(const nlohmann::ordered_json& axis_values, const std::string& study_system) {
+  const auto units = axis_values.find("/units");
+  return units != axis_values.end() && units->is_string() ? units->get<std::string>() : study_system;
 }
 
 }  // namespace aerobreak

@@ -49,7 +49,7 @@ Json default_study_summary() {
 }  // namespace
 
 TEST_CASE("The critical-speed table has a row per fit with a crossing and folds the others into a line each") {
-  const auto text = format_critical_table(default_study_summary(), "impact_speed", "m/s", true);
+  const auto text = format_critical_table(default_study_summary(), "impact_speed", "physical");
   INFO(text);
   CHECK_THAT(text, Contains("v10 (m/s)") && Contains("v50 (m/s)") && Contains("v90 (m/s)"));
   CHECK_THAT(text, Contains("/wall/adhesive = true, primaries = 32\nstick "));
@@ -65,7 +65,7 @@ TEST_CASE("Fits of the same reason in several groups share their line, wrapped w
   Json other = speed_fit("bounce", true, "no-transition", Json::array(), "no bounce among the 80 cases");
   other["group"]["primaries"] = 64;
   summary["fits"].push_back(other);
-  const auto text = format_critical_table(summary, "impact_speed", "m/s", true);
+  const auto text = format_critical_table(summary, "impact_speed", "physical");
   CHECK_THAT(text, Contains("\n  P(bounce) = 0 at every speed run: /wall/adhesive = true, primaries = 32;\n"
                             "    /wall/adhesive = true, primaries = 64\n"));
 }

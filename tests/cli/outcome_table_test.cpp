@@ -5,6 +5,7 @@
 
 #include "orchestrator/cli/outcome_table.hpp"
 #include "orchestrator/cli/text_table.hpp"
+#include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak::testing {
 namespace {
@@ -55,23 +56,24 @@ std::size_t widest_line(const std::string& text) {
 }  // namespace
 
 TEST_CASE("A study's speeds are in m/s when it is physical and in d/tau otherwise") {
-  CHECK(speed_unit_label({{"base", {{"units", "physical"}}}}) == "m/s");
-  CHECK(speed_unit_label({{"base", {{"units", "reduced"}}}}) == "d/tau");
-  CHECK(speed_unit_label({{"base", nlohmann::ordered_json::object()}}) == "d/tau");
-  CHECK(speed_unit_label(nlohmann::ordered_json::object()) == "d/tau");
+  CHECK(speed_unit_label(study_unit_system({{"base", {{"units", "physical"}}}})) == "m/s");
+  CHECK(speed_unit_label(study_unit_system({{"base", {{"units", "reduced"}}}})) == "d/tau");
+  CHECK(speed_unit_label(study_unit_system({{"base", nlohmann::ordered_json::object()}})) == "d/tau");
+  CHECK(speed_unit_label(study_unit_system(nlohmann::ordered_json::object())) == "d/tau");
+  CHECK(speed_unit_label("mixed") == "m/s where /units = physical, d/tau otherwise");
 }
 
 TEST_CASE("The outcome table labels the speed with the study's unit and gives P in % with its interval") {
-  const auto physical = format_outcome_table(one_point_table(), true);
+  const auto physical = format_outcome_table(one_point_table(), "physical");
   INFO(physical);
   CHECK_THAT(physical, Contains("speed") && Contains("m/s") && Contains("12.5") && Contains("50 [20-80]"));
   CHECK_THAT(physical, Contains("speed: the impact speed, in m/s"));
-  const auto reduced = format_outcome_table(one_point_table(), false);
+  const auto reduced = format_outcome_table(one_point_table(), "reduced");
   CHECK_THAT(reduced, Contains("d/tau") && !Contains("m/s"));
 }
 
 TEST_CASE("The default study's outcome table fits 100 columns: a section per wall and size, a row per speed") {
-  const auto text = format_outcome_table(default_study_table(), true);
+  const auto text = format_outcome_table(default_study_table(), "physical");
   INFO(text);
   CHECK(widest_line(text) <= 100);
   // One section per value of the other axes, in the order they first come, each with its 8 speeds.
@@ -93,14 +95,14 @@ TEST_CASE("An axis with a unit of its own carries it in the section titles") {
   Json table = one_point_table();
   table["grid_points"][0]["grid_point"] = {
       {"impact_speed", 1.0}, {"/impact/angle", 30}, {"/model/damping/dissipative_time", 0.05}};
-  const auto text = format_outcome_table(table, true);
+  const auto text = format_outcome_table(table, "physical");
   CHECK_THAT(text, Contains("/impact/angle = 30 deg, /model/damping/dissipative_time = 0.05 tau\n"));
 }
 
 TEST_CASE("Without a speed axis the first axis makes the rows, with its unit") {
   Json table = one_point_table();
   table["grid_points"][0]["grid_point"] = {{"gamma_over_kn", 0.001}, {"primaries", 64}};
-  const auto text = format_outcome_table(table, false);
+  const auto text = format_outcome_table(table, "reduced");
   INFO(text);
   CHECK_THAT(text, Contains("gamma_over_kn") && Contains("primaries = 64\n"));
   CHECK_THAT(text, !Contains("speed: "));
@@ -120,6 +122,19 @@ TEST_CASE("A table wider than the page wraps: the columns that do not fit go bel
   CHECK(text.find("k2", wrapped) != std::string::npos);
   // Wide enough, one block.
   CHECK(format_text_table(table, 200).find(std::string(40, 'c')) < format_text_table(table, 200).find('\n'));
+}
+
+TEST_CASE("In a study whose axis sets /units, each section's values carry the unit of its own system") {
+  const Json half = estimate(0.5, 0.2, 0.8);
+  Json table{{"grid_points",
+              {grid_point({{"impact_speed", 10.0}, {"/units", "physical"}, {"/impact/gap", 0.5}}, 4, half, half, half),
+               grid_point({{"impact_speed", 0.1}, {"/units", "reduced"}, {"/impact/gap", 0.5}}, 4, half, half, half)}}};
+  table["grid_points"][0]["grid_point"]["/material/diameter"] = 2e-8;
+  const auto text = format_outcome_table(table, "mixed");
+  INFO(text);
+  CHECK_THAT(text, Contains("/units = physical, /impact/gap = 0.5 d, /material/diameter = 2e-08 m\n"));
+  CHECK_THAT(text, Contains("/units = reduced, /impact/gap = 0.5 d\n"));
+  CHECK_THAT(text, Contains("speed: the impact speed, in m/s where /units = physical, d/tau otherwise."));
 }
 
 }  // namespace aerobreak::testing
