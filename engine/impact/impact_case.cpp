@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
 #include "engine/impact/case_hints.hpp"
 #include "engine/impact/schema_text.hpp"
 #include "engine/io/cluster_library.hpp"
+#include "engine/io/json_text.hpp"
 
 namespace aerobreak {
 namespace {
@@ -59,9 +59,16 @@ ContactModelSpec model_from(const Json& m) {
 }
 
 // A cluster library (HDF5) holds named clusters: the case names one, or the library holds one.
+// A library that cannot be read (truncated, damaged, not aerobreak's) is a violation naming it.
 void check_library_choice(const std::filesystem::path& path, const std::string& name,
                           std::vector<SchemaViolation>& violations) {
-  const std::vector<std::string> names = list_clusters(path);
+  std::vector<std::string> names;
+  try {
+    names = list_clusters(path);
+  } catch (const std::runtime_error& error) {
+    violations.push_back({"/cluster/file/path", error.what()});
+    return;
+  }
   std::string listed;
   for (std::size_t k = 0; k < names.size() && k < 10; ++k) listed += (k == 0 ? "" : ", ") + names[k];
   if (names.size() > 10) listed += ", ...";
@@ -303,13 +310,11 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
 }
 
 ImpactCase load_impact_case(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw CaseError({{"", "cannot open case file " + path.string()}});
   Json document;
   try {
-    document = Json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw CaseError({{"", path.string() + " is not valid JSON: " + e.what()}});
+    document = read_json_file(path, "case file");
+  } catch (const InputFileError& e) {
+    throw CaseError({{"", std::string(e.what())}});
   }
   return parse_impact_case(std::move(document), path.parent_path());
 }

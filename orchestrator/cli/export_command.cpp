@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -118,7 +119,8 @@ void add_export_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ExportOptions>();
   auto* command = app.add_subcommand("export", "Write a study's lookup tables for system codes (docs/EXPORT.md)");
   command->add_option("--store", options->store, "SQLite store file")->required();
-  command->add_option("--study", options->study, "Study id [default: the store's only study]");
+  command->add_option("--study", options->study, "Study id [default: the store's only study]")
+      ->check(CLI::Range(std::int64_t{1}, std::numeric_limits<std::int64_t>::max()));
   command->add_option("-o,--output", options->output, "Output file ('-': stdout) [default: the table's file name, here]");
   for (const auto& [name, description] : kParameters) {
     std::string flag = std::string("--") + name;

@@ -32,7 +32,17 @@ struct RunOptions {
   OrchestratorOptions orchestrator;
   int port = 8080;
   bool keep_serving = false;
+  bool recompute_data_files = false;
 };
+
+// ", 3 computed again: data file lost or damaged", or the advice when lost files were not asked for.
+std::string lost_files_text(const SubmissionReceipt& receipt) {
+  if (receipt.recomputed)
+    return ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged";
+  if (!receipt.data_files_lost) return {};
+  return ", " + std::to_string(receipt.data_files_lost) +
+         " with a data file lost or damaged (their results are kept; --recompute-data-files computes the files again)";
+}
 
 std::string duration_text(double seconds) {
   char text[32];
@@ -159,14 +169,16 @@ int run(RunOptions options) {
   if (options.orchestrator.store.empty())
     options.orchestrator.store = "runs/" + std::filesystem::path(options.study_file).stem().stem().string() + ".sqlite";
 
-  Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
+  Store store(options.orchestrator.store, Store::Access::orchestrator, data_directory);
   const auto log = line_log(data_directory / "orchestrator.log");
   Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
   StudySubmission submission = make_submission(study);
   DataFileChecker checker;
-  recompute_lost_data_files(submission, store, checker);
-  const auto receipt = store.submit_study(submission);
+  const auto lost = lost_data_files(submission, store, checker);
+  if (options.recompute_data_files) submission.recompute = lost;
+  auto receipt = store.submit_study(submission);
+  receipt.data_files_lost = lost.size();
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.port = options.port;
   service_options.access_log = log;
@@ -174,10 +186,8 @@ int run(RunOptions options) {
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
-  const std::string recomputed =
-      receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "";
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done" << recomputed << "), store " << store.file().string() << "\n"
+            << " already done" << lost_files_text(receipt) << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
             << " in a browser while the study runs (API: " << study_url << ")\n";
@@ -238,6 +248,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   command->add_flag("--keep-serving", options->keep_serving, "Keep the service up after the study finished, until Ctrl-C");
+  command->add_flag("--recompute-data-files", options->recompute_data_files,
+                    "Compute again the done cases whose HDF5 data file is missing or damaged (without it they are "
+                    "reported, and their results kept and served)");
   command->callback([options, &exit_code] {
     try {
       exit_code = run(*options);

@@ -3,13 +3,12 @@
 #include <httplib.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "orchestrator/cli/exit_codes.hpp"
+#include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 
@@ -75,10 +74,7 @@ class ApiClient {
     client_.set_connection_timeout(5, 0);
     client_.set_read_timeout(60, 0);
     std::string token = environment_or("AEROBREAK_TOKEN", "");
-    if (!options.token_file.empty()) {
-      std::ifstream in(options.token_file);
-      if (!in || !std::getline(in, token)) throw std::runtime_error("cannot read a token from " + options.token_file);
-    }
+    if (!options.token_file.empty()) token = read_first_line(options.token_file, "token file");
     if (!token.empty()) headers_.emplace("Authorization", "Bearer " + token);
   }
 
@@ -101,14 +97,6 @@ class ApiClient {
   httplib::Client client_;
   httplib::Headers headers_;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string study_path(long long id, const std::string& tail = {}) { return "/api/studies/" + std::to_string(id) + tail; }
 
@@ -156,7 +144,8 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
 int run_client(const std::string& action, const ClientOptions& options) {
   ApiClient api(options);
   if (action == "submit") {
-    const auto receipt = api.post("/api/studies", read_file(options.study_file));
+    const std::string study = read_regular_file(options.study_file, kMaxDocumentBytes, "study file");
+    const auto receipt = api.post("/api/studies", study);
     if (options.json) {
       std::cout << receipt.dump(2) << "\n";
     } else {

@@ -247,7 +247,7 @@ TEST_CASE("a generator axis gives each case its generator's fields from the base
 TEST_CASE("fractal dimension and prefactor axes sweep the tunable generator, another generator refuses them") {
   Json s = minimal_study();
   s["base"]["cluster"]["generator"] = {{"method", "tunable"}};
-  s["base"]["impact"] = {{"speed", 0.01}};
+  s["base"]["impact"]["speed"] = 0.01;
   s["base"]["material"]["gamma_over_kn"] = 0.001;
   s["axes"] = Json::parse(R"({
     "fractal_dimension": {"values": [1.6, 1.8, 2.0]},
