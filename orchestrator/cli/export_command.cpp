@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/app/study_tables.hpp"
 
@@ -72,7 +73,7 @@ void write_file(const std::filesystem::path& path, const std::string& content) {
 int run_export(const ExportOptions& options) {
   if (!std::filesystem::exists(options.store)) {
     std::cerr << "aerobreak export: no store file " << options.store << "\n";
-    return 1;
+    return kExitInvalidInput;
   }
   try {
     Store store(options.store, Store::Access::reader);
@@ -92,10 +93,10 @@ int run_export(const ExportOptions& options) {
     return 0;
   } catch (const ExportError& error) {
     std::cerr << "aerobreak export: " << error.what() << (error.field.empty() ? "" : " [parameter " + error.field + "]") << "\n";
-    return error.status == 404 ? 1 : 2;
+    return kExitInvalidInput;
   } catch (const std::runtime_error& error) {
     std::cerr << "aerobreak export: " << error.what() << "\n";
-    return 1;
+    return kExitError;
   }
 }
 
@@ -149,7 +150,7 @@ void add_export_command(CLI::App& app, int& exit_code) {
       exit_code = run_export(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak export: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

@@ -15,6 +15,7 @@
 #include "engine/impact/impact_run.hpp"
 #include "engine/io/h5md_writer.hpp"
 #include "engine/io/xyz.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 
 namespace aerobreak {
 namespace {
@@ -130,7 +131,7 @@ int report_invalid_case(const ImpactOptions& o, const CaseError& e) {
   std::cerr << "aerobreak impact: invalid case " << o.case_file << ":\n";
   for (const auto& v : e.violations())
     std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
-  return 1;
+  return kExitInvalidInput;
 }
 
 int run_command(const ImpactOptions& o) {
@@ -168,7 +169,7 @@ int run_command(const ImpactOptions& o) {
     return report_invalid_case(o, e);
   } catch (const std::exception& e) {
     std::cerr << "aerobreak impact: " << o.case_file << ": " << e.what() << "\n";
-    return 3;
+    return kExitPartlyFailed;
   }
   return 0;
 }

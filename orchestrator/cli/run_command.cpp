@@ -11,6 +11,7 @@
 #include <string>
 
 #include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
@@ -20,6 +21,8 @@
 #include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/study/field_units.hpp"
+#include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -133,13 +136,22 @@ void print_critical_speeds(Store& store, StudyFits& fits, std::int64_t study_id)
   const auto study = store.study(study_id);
   try {
     const auto set = fits.current(*study, correlation_request(*study, std::nullopt));
-    std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
-              << ": logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
-                 "intervals (docs/CORRELATIONS.md)\n\n"
-              << format_critical_table(nlohmann::ordered_json::parse(set->summary));
+    std::cout << "\nCritical speeds in " << speed_unit_label(study_unit_system(study->document))
+              << ": logistic fits of P in log impact speed, per group (docs/CORRELATIONS.md)\n\n"
+              << format_critical_table(nlohmann::ordered_json::parse(set->summary), "impact_speed",
+                                       study_unit_system(study->document))
+              << "\n"
+              << critical_table_legend();
   } catch (const CorrelationRequestError& error) {
     std::cout << "\nNo critical speeds: " << error.what() << "\n";
   }
+}
+
+// The service lives as long as the command: its address, printed at the start, is dead from now on.
+void print_no_longer_served(const std::string& url, const std::filesystem::path& store_file) {
+  std::cerr << "aerobreak run: the study is over and " << url << " is no longer served. To see the page, the API or "
+            << "the tables again: aerobreak serve --store " << store_file.string()
+            << " (then http://127.0.0.1:8080/), or run with --keep-serving next time.\n";
 }
 
 int run(RunOptions options) {
@@ -148,8 +160,10 @@ int run(RunOptions options) {
   try {
     study = load_study(options.study_file);
   } catch (const StudyError& error) {
-    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n" << error.what() << "\n";
-    return 1;
+    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n";
+    for (const auto& v : error.violations())
+      std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
+    return kExitInvalidInput;
   }
   if (options.orchestrator.store.empty())
     options.orchestrator.store = "runs/" + std::filesystem::path(options.study_file).stem().stem().string() + ".sqlite";
@@ -175,7 +189,7 @@ int run(RunOptions options) {
             << " already done" << lost_files_text(receipt) << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
-            << " in a browser (API: " << study_url << ")\n";
+            << " in a browser while the study runs (API: " << study_url << ")\n";
 
   const auto started = std::chrono::steady_clock::now();
   ProgressBar bar;
@@ -189,7 +203,7 @@ int run(RunOptions options) {
       std::cerr << "aerobreak run: interrupted; finished cases are kept: run the same command again to go on\n";
       service->stop();
       scheduler.stop();
-      return 130;
+      return kExitInterrupted;
     }
   }
   bar.finish();
@@ -198,9 +212,12 @@ int run(RunOptions options) {
   std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n";
   // A search's outcome table has a row per value it placed: its groups' crossings say more.
   if (study.search)
-    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
+    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)),
+                                     study.search->axis,
+                                     study_axis_unit(study.search->axis, study_unit_system(study.document)));
   else
-    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)), speed_unit_label(study.document));
+    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)),
+                                      study_unit_system(study.document));
   StudyFits fits(store);  // fitted once, for the critical speeds, the fit table and the code
   print_critical_speeds(store, fits, receipt.study_id);
   print_failures(store, receipt.study_id);
@@ -213,7 +230,8 @@ int run(RunOptions options) {
     signals.wait();
   }
   service->stop();
-  return progress.by_status.at("failed") > 0 ? 3 : 0;
+  if (!options.keep_serving) print_no_longer_served(service->url(), store.file());
+  return progress.by_status.at("failed") > 0 ? kExitPartlyFailed : kExitDone;
 }
 
 }  // namespace
@@ -238,7 +256,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       exit_code = run(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak run: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

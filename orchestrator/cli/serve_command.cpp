@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
 #include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/service/service.hpp"
@@ -120,7 +121,7 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       exit_code = serve(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak serve: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

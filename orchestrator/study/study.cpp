@@ -178,13 +178,39 @@ std::size_t Study::case_limit() const {
   return search ? saturating_product(group_count(), static_cast<std::size_t>(search->budget)) : case_count();
 }
 
+namespace {
+
+// The schema's violations and those of the axis names.
+std::vector<SchemaViolation> schema_violations(Json& document) {
+  std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
+  if (document.is_object() && document.contains("axes") && document["axes"].is_object())
+    check_axis_names(document["axes"], violations, document.contains("search"));
+  return violations;
+}
+
+// Whether the study can be expanded without the field a violation names: a name, the replicates or
+// the execution limits say nothing about the cases' physics, the base, the axes and the search do.
+bool outside_the_cases(const SchemaViolation& violation) {
+  for (const char* part : {"/base", "/axes", "/search"})
+    if (covers(part, violation.pointer)) return false;
+  return !violation.pointer.empty();
+}
+
+}  // namespace
+
 Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
                   const std::filesystem::path& base_directory) {
-  std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
-  const bool searching = document.is_object() && document.contains("search");
-  if (document.is_object() && document.contains("axes") && document["axes"].is_object())
-    check_axis_names(document["axes"], violations, searching);
-  if (!violations.empty()) throw StudyError(std::move(violations));
+  std::vector<SchemaViolation> violations = schema_violations(document);
+  if (!violations.empty()) {
+    // A wrong name or replicate count hides nothing else: the cases are checked as if it were left
+    // out, so that one answer lists every problem of the document.
+    const bool cases_checkable = std::all_of(violations.begin(), violations.end(), outside_the_cases);
+    auto rest = cases_checkable ? without_violating_members(study_schema(), document, violations) : std::nullopt;
+    if (!rest || !schema_violations(*rest).empty()) throw StudyError(std::move(violations));
+    document = std::move(*rest);
+  }
+  const std::size_t schema_problems = violations.size();
+  const bool searching = document.contains("search");
 
   if (!base_directory.empty()) make_cluster_paths_absolute(document, base_directory);
   Study study;
@@ -202,11 +228,12 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
     violations.push_back({"/axes", "expands to " + count_text(study) + " cases (axis sizes x " +
                                        (searching ? "the search's budget" : "replicates") + "); the limit here is " +
                                        std::to_string(limits.max_cases) + " cases"});
-  if (!violations.empty()) throw StudyError(std::move(violations));
+  if (violations.size() > schema_problems) throw StudyError(std::move(violations));
 
   study.document = std::move(document);
   StudyExpansion expansion = expand_with_violations(study);
-  if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
+  violations.insert(violations.end(), expansion.violations.begin(), expansion.violations.end());
+  if (!violations.empty()) throw StudyError(std::move(violations));
   study.cases = std::move(expansion.cases);
 
   // The name is part of what was submitted; only the reference to the schema file is not.

@@ -47,7 +47,7 @@ TEST_CASE("100,000 nested arrays are refused by impact --check and study expand,
   const auto file = dir.write("nested.json", nested_arrays(100000));
   const CommandOutput impact = run_aerobreak("impact --check " + file.string());
   INFO(impact.text);
-  CHECK(impact.exit_code == 1);
+  CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
   CHECK_THAT(impact.text, Catch::Contains(file.string()) && Catch::Contains("nest deeper than 64 levels"));
 
   const CommandOutput expand = run_aerobreak("study expand " + file.string());
@@ -62,7 +62,7 @@ TEST_CASE("a number no double holds (1e999) in a case is refused, not an abort",
       "material": {"gamma_over_kn": 1e999}, "impact": {"speed": 0.01}, "run": {"time_limit": 100}})");
   const CommandOutput impact = run_aerobreak("impact --check " + file.string());
   INFO(impact.text);
-  CHECK(impact.exit_code == 1);
+  CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
   CHECK_THAT(impact.text, Catch::Contains(file.string()) && Catch::Contains("beyond what a double holds"));
 }
 
@@ -91,7 +91,7 @@ TEST_CASE("a FIFO or a device named as an input is refused at once, not waited o
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   const CommandOutput impact = run_aerobreak("impact --check " + fifo);
   INFO(impact.text);
-  CHECK(impact.exit_code == 1);
+  CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
   CHECK_THAT(impact.text, Catch::Contains(fifo) && Catch::Contains("is a FIFO (named pipe), not a regular file"));
 
   const CommandOutput expand = run_aerobreak("study expand " + fifo);
@@ -108,7 +108,7 @@ TEST_CASE("a FIFO or a device named as an input is refused at once, not waited o
   REQUIRE(::mkfifo(dir.file("cluster.xyz").c_str(), 0600) == 0);
   const CommandOutput cluster = run_aerobreak("impact --check " + fifo_cluster.string());
   INFO(cluster.text);
-  CHECK(cluster.exit_code == 1);
+  CHECK(cluster.exit_code == 2);
   CHECK_THAT(cluster.text, Catch::Contains("cluster.xyz"));
 }
 
@@ -124,7 +124,7 @@ TEST_CASE("a truncated cluster library is an invalid case naming the file, not a
   for (const std::string options : {"--check ", "-q "}) {
     const CommandOutput impact = run_aerobreak("impact " + options + case_file.string());
     INFO(impact.text);
-    CHECK(impact.exit_code == 1);
+    CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
     CHECK_THAT(impact.text, Catch::Contains("/cluster/file/path") && Catch::Contains(library) &&
                                 Catch::Contains("truncated file"));
   }
@@ -137,7 +137,7 @@ TEST_CASE("16 primaries at one point are refused at input, naming the pair", "[c
   for (const std::string options : {"--check ", "-q "}) {
     const CommandOutput impact = run_aerobreak("impact " + options + case_file.string());
     INFO(impact.text);
-    CHECK(impact.exit_code == 1);
+    CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
     CHECK_THAT(impact.text, Catch::Contains("primaries 0 and ") && Catch::Contains("overlap by 1 d") &&
                                 Catch::Contains("small-strain range"));
   }
