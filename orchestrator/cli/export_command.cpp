@@ -56,7 +56,8 @@ std::int64_t only_study(Store& store) {
 std::optional<ExportRequest> mobility_diameter_request(const StudyRecord& study) {
   const nlohmann::ordered_json::json_pointer units("/base/units"), speeds("/axes/impact_speed/values");
   if (!study.document.contains(units) || study.document.at(units) != "physical") return std::nullopt;
-  ExportRequest request{.kind = TableKind::fit};
+  ExportRequest request;
+  request.kind = TableKind::fit;
   request.diameters = {1e-7, 3e-7, 1e-6, 3e-6};
   if (study.document.contains(speeds))
     for (const auto& speed : study.document.at(speeds)) request.speeds.push_back(speed.get<double>());
@@ -109,11 +110,16 @@ std::vector<std::filesystem::path> write_default_tables(Store& store, StudyFits&
   const std::vector<TableFormat> tables{TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor};
   std::vector<std::pair<ExportRequest, std::vector<TableFormat>>> files;
   const auto add = [&files](ExportRequest request, std::vector<TableFormat> formats) { files.emplace_back(request, formats); };
-  add({.kind = TableKind::grid}, tables);
-  add({.kind = TableKind::sections}, {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5});
-  add({.kind = TableKind::fit}, tables);
+  const auto of_kind = [](TableKind kind) {
+    ExportRequest request;
+    request.kind = kind;
+    return request;
+  };
+  add(of_kind(TableKind::grid), tables);
+  add(of_kind(TableKind::sections), {TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5});
+  add(of_kind(TableKind::fit), tables);
   if (const auto mobility = mobility_diameter_request(*study)) add(*mobility, tables);
-  add({.kind = TableKind::correlations}, {TableFormat::fortran, TableFormat::c, TableFormat::json});
+  add(of_kind(TableKind::correlations), {TableFormat::fortran, TableFormat::c, TableFormat::json});
   std::vector<std::filesystem::path> written;
   for (auto& [request, formats] : files)
     for (const auto format : formats) {
