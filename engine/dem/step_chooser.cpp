@@ -1,0 +1,85 @@
+#include "engine/dem/step_chooser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace aerobreak {
+
+StepChooser::StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom)
+    : cap_(cap), overlaps_(overlaps), steps_per_break_overlap_(steps_per_break_overlap), headroom_(headroom) {
+  if (!(cap > 0.0) || !std::isfinite(cap)) throw std::invalid_argument("step chooser: the cap must be > 0");
+  if (!(steps_per_break_overlap > 0.0)) throw std::invalid_argument("step chooser: steps_per_break_overlap must be > 0");
+  if (!(headroom >= 0.0)) throw std::invalid_argument("step chooser: the headroom must be >= 0");
+}
+
+// Every pair that can touch, or let go, before the list is rebuilt is listed. The full relative
+// velocity bounds the normal one whichever way the line of centres turns.
+double StepChooser::fastest_pair_speed(const Particles& p, const PairList& pairs) const {
+  if (!(overlaps_.pair > 0.0)) return 0.0;
+  double fastest2 = 0.0;
+  for (std::uint32_t i = 0; i < pairs.particles(); ++i)
+    for (std::uint32_t k = pairs.row_start[i]; k < pairs.row_start[i + 1]; ++k)
+      fastest2 = std::max(fastest2, norm2(p.velocity[pairs.neighbor[k]] - p.velocity[i]));
+  return std::sqrt(fastest2);
+}
+
+// A particle can make or break a wall contact before the next rebuild only if its surface is
+// within the break overlap of the wall plus how far it may still move: skin/2 from where the list
+// was built, so up to skin/2 + its displacement since then from here. The wall's normal is fixed,
+// so the normal velocity now plus the budget bounds its normal speed until then.
+double StepChooser::fastest_wall_speed(const Particles& p, const std::vector<Wall>& walls,
+                                       const std::vector<Vec3>& built_at, double skin) const {
+  if (!(overlaps_.wall > 0.0)) return 0.0;
+  double fastest = 0.0;
+  for (const Wall& wall : walls) {
+    if (!wall.adhesive) continue;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double reach = overlaps_.wall + 0.5 * skin + norm(p.position[i] - built_at[i]);
+      if (wall.gap(p.position[i]) - p.radius[i] <= reach) fastest = std::max(fastest, std::abs(dot(p.velocity[i], wall.normal)));
+    }
+  }
+  return fastest;
+}
+
+// Approaches slower than a contact's adhesion speed are resolved as if at that speed: the error of
+// an event is a share of the loop's energy, of order F_c delta_c, set by u dt / delta_b, and it
+// counts against kinetic energies of that order: near the sticking speed, where a restitution
+// hangs on the small energy left after the loop, the step is the one the impact speed gave.
+double StepChooser::crossing_step(double pair_speed, double wall_speed) const {
+  double step = std::numeric_limits<double>::infinity();
+  if (overlaps_.pair > 0.0)
+    step = overlaps_.pair / (steps_per_break_overlap_ * std::max(pair_speed, overlaps_.pair_adhesion_speed));
+  if (overlaps_.wall > 0.0)
+    step = std::min(step,
+                    overlaps_.wall / (steps_per_break_overlap_ * std::max(wall_speed, overlaps_.wall_adhesion_speed)));
+  return step;
+}
+
+// The step for the speeds found plus the headroom h = headroom x the fastest of them: a listed
+// pair approaches at most at u_pair + 2h before the next choice (each of its two velocities may
+// depart by h), a particle a wall at most at u_wall + h. The budget is then the largest departure
+// this step still resolves, at least h.
+StepChooser::Choice StepChooser::choose(const Particles& p, const PairList& pairs, const std::vector<Wall>& walls,
+                                        const std::vector<Vec3>& built_at, double skin) {
+  Choice c;
+  c.pair_speed = fastest_pair_speed(p, pairs);
+  c.wall_speed = fastest_wall_speed(p, walls, built_at, skin);
+  const double h = headroom_ * std::max(c.pair_speed, c.wall_speed);
+  const double crossing = crossing_step(c.pair_speed + 2.0 * h, c.wall_speed + h);
+  c.time_step = std::min(cap_, crossing);
+  c.limit = crossing < cap_ ? TimeStepLimit::break_overlap : TimeStepLimit::contact_period;
+
+  double budget = std::numeric_limits<double>::infinity();
+  const double resolved = 1.0 / (steps_per_break_overlap_ * c.time_step);  // speed per unit break overlap
+  if (overlaps_.pair > 0.0)
+    budget = 0.5 * (std::max(overlaps_.pair * resolved, overlaps_.pair_adhesion_speed) - c.pair_speed);
+  if (overlaps_.wall > 0.0)
+    budget = std::min(budget, std::max(overlaps_.wall * resolved, overlaps_.wall_adhesion_speed) - c.wall_speed);
+  budget = std::max(budget, h);
+  budget2_ = budget * budget;
+  reference_ = p.velocity;
+  return c;
+}
+
+}  // namespace aerobreak

@@ -1,0 +1,84 @@
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "engine/core/particles.hpp"
+#include "engine/dem/time_step.hpp"
+#include "engine/dem/wall.hpp"
+#include "engine/neighbor/pair_list.hpp"
+
+namespace aerobreak {
+
+// The steps a run has taken: the shortest and longest, how many under each limit of the automatic
+// step (a fixed step counts as the contact period's) and how often the step was chosen.
+struct StepHistory {
+  double shortest = 0.0;
+  double longest = 0.0;
+  std::int64_t steps = 0;
+  double time = 0.0;  // simulated time of these steps
+  std::int64_t contact_period_steps = 0;
+  std::int64_t break_overlap_steps = 0;
+  std::uint64_t choices = 0;
+
+  void record(double dt, TimeStepLimit limit) {
+    shortest = steps == 0 ? dt : std::min(shortest, dt);
+    longest = std::max(longest, dt);
+    ++steps;
+    time += dt;
+    ++(limit == TimeStepLimit::break_overlap ? break_overlap_steps : contact_period_steps);
+  }
+  double mean() const { return steps > 0 ? time / static_cast<double>(steps) : 0.0; }
+};
+
+// The time step chosen again during a run from the speeds of the moment (docs/MODEL.md 9.2): a
+// contact's adhesion loop needs steps_per_break_overlap steps in the time its approach speed u
+// takes to cross the break overlap, dt <= delta_b / (f u), and the contact period bounds the step
+// whatever the speeds (`cap`). A choice looks at the drift velocities: the fastest relative
+// speed of a listed pair (no other pair can touch before the neighbour list is rebuilt) and the
+// fastest normal speed of a particle that can reach a wall with a tensile range before then. It
+// takes the step for those speeds plus a headroom, and keeps as its budget how far any drift
+// velocity may still depart from the velocity it had at the choice before the step is too long:
+// the simulation chooses again as soon as one departs further, and at every rebuild of the list.
+class StepChooser {
+ public:
+  struct Choice {
+    double time_step = 0.0;
+    TimeStepLimit limit = TimeStepLimit::contact_period;
+    double pair_speed = 0.0;  // fastest relative speed of a listed pair
+    double wall_speed = 0.0;  // fastest normal speed of a particle within reach of a wall
+  };
+
+  // `headroom`: the share of the fastest speed found that the velocities may change by before the
+  // next choice, at least.
+  StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom = 0.25);
+
+  // Chooses the step for the drifts to come. `built_at` and `skin` are the neighbour list's: until
+  // its next rebuild every particle stays within skin/2 of where it was built.
+  Choice choose(const Particles& particles, const PairList& pairs, const std::vector<Wall>& walls,
+                const std::vector<Vec3>& built_at, double skin);
+
+  // The squared departure of a drift velocity from the one of the last choice past which the step
+  // must be chosen again (infinite where no speed can make it too long).
+  double budget2() const { return budget2_; }
+  // The particles' velocities at the last choice.
+  const std::vector<Vec3>& reference() const { return reference_; }
+  double cap() const { return cap_; }
+
+ private:
+  double fastest_pair_speed(const Particles& particles, const PairList& pairs) const;
+  double fastest_wall_speed(const Particles& particles, const std::vector<Wall>& walls,
+                            const std::vector<Vec3>& built_at, double skin) const;
+  // The step that resolves the break overlaps at these approach speeds (infinite if none has to).
+  double crossing_step(double pair_speed, double wall_speed) const;
+
+  double cap_;
+  BreakOverlaps overlaps_;
+  double steps_per_break_overlap_;
+  double headroom_;
+  double budget2_ = std::numeric_limits<double>::infinity();
+  std::vector<Vec3> reference_;
+};
+
+}  // namespace aerobreak
