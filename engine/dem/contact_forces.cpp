@@ -421,6 +421,17 @@ DampingChoice choose_damping(const ContactModelSpec& spec) {
 
 }  // namespace
 
+double zero_load_overlap(const ContactForces& law, const ContactConstants& c) {
+  if (law.normal_response(0.0, c).force >= 0.0) return 0.0;
+  double low = 0.0, high = std::max(c.critical_overlap, 1e-9 * c.radius);
+  for (int k = 0; k < 200 && law.normal_response(high, c).force <= 0.0; ++k) high *= 2.0;
+  for (int k = 0; k < 200 && high - low > 1e-15 * high; ++k) {
+    const double middle = 0.5 * (low + high);
+    (law.normal_response(middle, c).force > 0.0 ? high : low) = middle;
+  }
+  return 0.5 * (low + high);
+}
+
 std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal) {
   spec.validate();
   const TangentialChoice tangential =

@@ -110,4 +110,8 @@ class ContactForces {
 // `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).
 std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal);
 
+// The overlap at which the elastic force of `law` vanishes for the completed constants `c`, by
+// bisection on the stable branch (0 for a law without adhesion, whose force vanishes at touching).
+double zero_load_overlap(const ContactForces& law, const ContactConstants& c);
+
 }  // namespace aerobreak

@@ -135,7 +135,7 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
 // first choice, from the initial velocities, is the first step.
 void Simulation::start_step_chooser() {
   if (!settings_.adaptive_time_step || settings_.time_step > 0.0 || !(settings_.steps_per_break_overlap > 0.0) ||
-      settings_.body.langevin.enabled())
+      settings_.body.langevin.enabled() || settings_.periodic)
     return;
   const BreakOverlaps overlaps = shortest_break_overlaps(particles_, materials_, walls_, spec_);
   if (!(overlaps.pair > 0.0) && !(overlaps.wall > 0.0)) return;
@@ -145,6 +145,7 @@ void Simulation::start_step_chooser() {
       chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin());
   dt_ = choice.time_step;
   limit_ = choice.limit;
+  choice_expires_ = time_ + choice.hold;
 }
 
 void Simulation::set_half_steps(double dt, std::vector<double>& per_mass, std::vector<double>& per_inertia) const {
@@ -244,8 +245,8 @@ std::int64_t Simulation::steps_before(double until, std::int64_t most, bool& rea
 // once per step. The two half kicks are two additions, rounded as two separate passes would round
 // them; where the step changes, the closing one is of the old step and the opening one of the new.
 ParticleDrift Simulation::verlet_step(ParticleDrift& drift, bool more) {
-  advance_clock();
   prepare_forces(drift);
+  advance_clock();
   const ParticleDrift next = compute_forces(false, 0.0, more);
   if (more) commit_step();
   return next;
@@ -258,9 +259,10 @@ void Simulation::advance_clock() {
   history_.record(dt_, limit_);
 }
 
-// Before a step's forces: the neighbour list rebuilt if a particle may have left its skin; the
-// step chosen again at every rebuild (the new list may hold pairs the last choice did not see) and
-// whenever a drift velocity has departed from the last choice's by more than its budget.
+// Before a step's forces (and before its drift is added to the clock): the neighbour list rebuilt
+// if a particle may have left its skin; the step chosen again at every rebuild (the new list may
+// hold pairs the last choice did not see), whenever a drift velocity has departed from the last
+// choice's by more than its budget, and when the last choice's hold has passed.
 void Simulation::prepare_forces(ParticleDrift& drift) {
   bool rebuilt = false;
   if (drift.since_build2 > neighbors_->displacement_limit2()) {
@@ -268,7 +270,7 @@ void Simulation::prepare_forces(ParticleDrift& drift) {
     drift.since_build2 = 0.0;
     rebuilt = true;
   }
-  if (chooser_ && (rebuilt || drift.departure2 > chooser_->budget2())) {
+  if (chooser_ && (rebuilt || drift.departure2 > chooser_->budget2() || !(time_ < choice_expires_))) {
     choose_step();
     drift.departure2 = 0.0;
   }
@@ -280,6 +282,7 @@ void Simulation::choose_step() {
   const StepChooser::Choice choice =
       chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin());
   ++history_.choices;
+  choice_expires_ = time_ + choice.hold;
   next_limit_ = choice.limit;
   if (choice.time_step == dt_ && next_dt_ == dt_) return;
   next_dt_ = choice.time_step;
@@ -490,6 +493,23 @@ EnergyBudget Simulation::energy() const {
   e.dissipation = tally_;
   e.external_work = external_work_;
   return e;
+}
+
+Simulation::ContactReserve Simulation::contact_reserve(const ContactState& contact) const {
+  const ContactForces& law = contact.with_wall ? *wall_forces_.at(contact.j) : *pair_forces_;
+  const ContactConstants& c = contact.constants;
+  if (last_rest_.law != &law || !(last_rest_.constants == c))
+    last_rest_ = {&law, c, law.normal_response(zero_load_overlap(law, c), c).energy};
+  const double rest = last_rest_.energy;
+  return {law.stored_energy(contact) - rest, law.normal_response(-c.break_overlap, c).energy - rest};
+}
+
+double Simulation::wall_loop_energy(std::size_t i, std::size_t w) const {
+  const ContactForces& law = *wall_forces_.at(w);
+  ContactConstants c =
+      sphere_wall_constants(particles_.radius[i], particles_.mass[i], materials_.pair(particles_.material[i], walls_[w].material));
+  law.complete(c);
+  return law.normal_response(-c.break_overlap, c).energy - law.normal_response(0.0, c).energy;
 }
 
 }  // namespace aerobreak

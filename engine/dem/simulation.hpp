@@ -30,7 +30,8 @@ struct SimulationSettings {
   // The automatic step chosen again during the run from the speeds of the moment (StepChooser,
   // docs/MODEL.md 9.2), never longer than the contact period allows at the speed scale; false:
   // one step for the whole run, at the speed scale. Only where the step has an adhesion loop to
-  // resolve (steps_per_break_overlap > 0, a law with a tensile range) and without Langevin forces.
+  // resolve (steps_per_break_overlap > 0, a law with a tensile range), in open space and without
+  // Langevin forces.
   bool adaptive_time_step = true;
   double step_headroom = 0.25;     // StepChooser's headroom
   double skin = 0.0;               // Verlet skin; 0: automatic, from the speed scale and time step
@@ -86,6 +87,18 @@ class Simulation {
   std::int64_t step_count() const { return steps_; }
 
   EnergyBudget energy() const;
+  // A live contact's energy scales (docs/IMPACT.md section 4): what its springs store above the
+  // rest of its normal law (its zero-load overlap), and the work from that rest to where it lets
+  // go, E_break (0 for a contact without a tensile range).
+  struct ContactReserve {
+    double above_rest = 0.0;
+    double to_break = 0.0;
+  };
+  ContactReserve contact_reserve(const ContactState& contact) const;
+  // The energy the adhesion loop of a contact of particle i with wall w dissipates, from forming at
+  // touching to letting go at -delta_b (docs/MODEL.md 3.4): particle i, arriving slower than that,
+  // stays (0 for a wall without adhesion).
+  double wall_loop_energy(std::size_t i, std::size_t w) const;
   ContactsView contacts() const { return {pair_pool_, wall_pool_}; }
   const ContactEvents& pair_events() const { return pair_events_; }
   const ContactEvents& wall_events() const { return wall_events_; }
@@ -97,6 +110,7 @@ class Simulation {
   std::size_t neighbor_pairs() const { return neighbors_->pairs().pairs(); }
   const std::vector<Wall>& walls() const { return walls_; }
   const ContactModelSpec& model() const { return spec_; }
+  const BodyForces& body_forces() const { return settings_.body; }
   const MaterialTable& materials() const { return materials_; }
 
   const std::optional<PeriodicBox>& periodic_box() const { return settings_.periodic; }
@@ -120,6 +134,7 @@ class Simulation {
   // Of the next `most` steps at the present step: how many, and whether the last of them brings
   // the clock to `until` (the clock adds the step once per step, as counted here).
   std::int64_t steps_before(double until, std::int64_t most, bool& reaches) const;
+  double choice_expires() const { return choice_expires_; }
   double timing_weight() const { return 2.0 * dt_ / (dt_ + next_dt_); }
   ParticleDrift compute_forces(bool rebuild, double formation_gap, bool integrate);
   void add_pair_forces(double formation_gap, const std::vector<ContactForces::Pass>& passes);
@@ -167,6 +182,7 @@ class Simulation {
   double next_dt_ = 0.0;  // the step of the next drift and of the opening half kick
   TimeStepLimit limit_ = TimeStepLimit::contact_period;
   TimeStepLimit next_limit_ = TimeStepLimit::contact_period;
+  double choice_expires_ = std::numeric_limits<double>::infinity();  // the last choice holds until then
   StepHistory history_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
@@ -178,6 +194,14 @@ class Simulation {
   std::vector<ImageCount> images_;
   double van_der_waals_energy_ = 0.0;
   Wavefront wavefront_;
+  // The rest energy of the last contact contact_reserve() was asked about, by its law and
+  // constants: the contacts of a cluster of equal primaries share them.
+  struct RestEnergy {
+    const ContactForces* law = nullptr;
+    ContactConstants constants;
+    double energy = 0.0;
+  };
+  mutable RestEnergy last_rest_;
 };
 
 }  // namespace aerobreak

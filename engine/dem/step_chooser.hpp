@@ -35,24 +35,28 @@ struct StepHistory {
 // The time step chosen again during a run from the speeds of the moment (docs/MODEL.md 9.2): a
 // contact's adhesion loop needs steps_per_break_overlap steps in the time its approach speed u
 // takes to cross the break overlap, dt <= delta_b / (f u), and the contact period bounds the step
-// whatever the speeds (`cap`). A choice looks at the drift velocities: the fastest relative
-// speed of a listed pair (no other pair can touch before the neighbour list is rebuilt) and the
-// fastest normal speed of a particle that can reach a wall with a tensile range before then. It
-// takes the step for those speeds plus a headroom, and keeps as its budget how far any drift
-// velocity may still depart from the velocity it had at the choice before the step is too long:
-// the simulation chooses again as soon as one departs further, and at every rebuild of the list.
+// whatever the speeds (`cap`). A choice looks at the drift velocities: of each listed pair (no
+// other pair can touch before the neighbour list is rebuilt) the relative velocity along the line
+// of centres and across it, of each particle that can reach a wall with a tensile range before
+// then its normal velocity. It takes the step for the fastest approach these allow while the line
+// of centres turns by at most `turn` radians, plus a headroom, and keeps as its budget how far any
+// drift velocity may still depart from the velocity it had at the choice before the step is too
+// long; the simulation chooses again as soon as one departs further, when the choice's hold (the
+// time in which no line of centres can turn further) has passed, and at every rebuild of the list.
 class StepChooser {
  public:
   struct Choice {
     double time_step = 0.0;
     TimeStepLimit limit = TimeStepLimit::contact_period;
-    double pair_speed = 0.0;  // fastest relative speed of a listed pair
+    double pair_speed = 0.0;  // fastest approach of a listed pair while its line of centres turns by `turn`
     double wall_speed = 0.0;  // fastest normal speed of a particle within reach of a wall
+    double hold = std::numeric_limits<double>::infinity();  // simulated time the choice holds at most
   };
 
   // `headroom`: the share of the fastest speed found that the velocities may change by before the
   // next choice, at least.
-  StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom = 0.25);
+  StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom = 0.25,
+              double turn = 0.1);
 
   // Chooses the step for the drifts to come. `built_at` and `skin` are the neighbour list's: until
   // its next rebuild every particle stays within skin/2 of where it was built.
@@ -67,7 +71,12 @@ class StepChooser {
   double cap() const { return cap_; }
 
  private:
-  double fastest_pair_speed(const Particles& particles, const PairList& pairs) const;
+  struct PairSpeeds {
+    double approach = 0.0;  // largest |along| + turn |across| of a listed pair
+    double relative = 0.0;  // largest relative speed
+    double closest = std::numeric_limits<double>::infinity();  // smallest distance between centres
+  };
+  PairSpeeds pair_speeds(const Particles& particles, const PairList& pairs) const;
   double fastest_wall_speed(const Particles& particles, const std::vector<Wall>& walls,
                             const std::vector<Vec3>& built_at, double skin) const;
   // The step that resolves the break overlaps at these approach speeds (infinite if none has to).
@@ -77,6 +86,7 @@ class StepChooser {
   BreakOverlaps overlaps_;
   double steps_per_break_overlap_;
   double headroom_;
+  double turn_;
   double budget2_ = std::numeric_limits<double>::infinity();
   std::vector<Vec3> reference_;
 };

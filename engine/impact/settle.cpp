@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/dem/simulation.hpp"
+#include "engine/impact/fate_rule.hpp"
 
 namespace aerobreak {
 namespace {
@@ -71,11 +72,13 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
 
 std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                                 const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                                double rest_speed, const OutcomeThresholds& thresholds) {
+                                double rest_speed, const OutcomeThresholds& thresholds, bool unbroken) {
   std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed);
   if (!reason.empty()) return reason;
+  if (unbroken) return {};
   const Classification c = classify(fates_of(fragments, mean_velocity, wall_normal), true, thresholds);
-  if (c.outcome != ImpactOutcome::break_up) return "the state is a " + to_string(c.outcome) + ", not a break-up";
+  if (c.outcome != ImpactOutcome::break_up)
+    return "the state is a " + to_string(c.outcome) + ", not a break-up, and contacts broke during the window";
   double mass = 0.0;
   for (const Fragment& f : fragments) mass += f.mass;
   for (std::size_t k = 0; k < fragments.size(); ++k)
@@ -84,7 +87,14 @@ std::string outcome_open_reason(const std::vector<Fragment>& fragments, const st
   return {};
 }
 
-std::string to_string(SettleRule rule) { return rule == SettleRule::quiet ? "quiet" : "outcome_fixed"; }
+std::string to_string(SettleRule rule) {
+  switch (rule) {
+    case SettleRule::quiet: return "quiet";
+    case SettleRule::outcome_fixed: return "outcome_fixed";
+    case SettleRule::fates_fixed: return "fates_fixed";
+  }
+  return "quiet";
+}
 
 SettleMonitor::SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds,
                              bool outcome_fixed_rule)
@@ -99,6 +109,7 @@ SettleMonitor::Window SettleMonitor::open_window(const Simulation& simulation, b
   w.start = simulation.time();
   w.positions = simulation.particles().position;
   w.events = with_deposit ? wall_events(simulation) : all_events(simulation);
+  w.bonds_broken = simulation.pair_events().broken;
   if (!with_deposit) return w;
   // The primaries of the fragments touching the wall, and their contacts among themselves.
   const FragmentAnalysis now = find_fragments(simulation);
@@ -162,12 +173,44 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
   ++judgements_;
   Judgement j = judge(simulation, fixed_);
   const std::string reason = outcome_open_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before,
-                                                 j.wall_normal, rest_speed_, thresholds_);
+                                                 j.wall_normal, rest_speed_, thresholds_,
+                                                 now.bonds_broken == fixed_.bonds_broken);
   if (!reason.empty()) return false;
   last_reason_.clear();
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.mean_velocity);
   settle(simulation, SettleRule::outcome_fixed, fixed_);
+  return true;
+}
+
+bool SettleMonitor::judge_fates_fixed(const Simulation& simulation) {
+  FatesJudgement j = judge_fates(simulation);
+  const bool fixed = j.reason.empty() && simulation.time() > last_time_;
+  if (!fixed) {
+    last_positions_ = simulation.particles().position;
+    last_time_ = simulation.time();
+    return false;
+  }
+  ++judgements_;
+  // Fragments in flight keep their velocity. One held on the wall stays there: its normal
+  // position is bounded, so its mean normal velocity vanishes in the long run; along the wall it
+  // takes its mean since the last update (it may slide or roll on).
+  const Particles& p = simulation.particles();
+  const FragmentAnalysis& fa = j.fragments;
+  const Vec3 n = simulation.walls().front().normal / norm(simulation.walls().front().normal);
+  std::vector<Vec3> moved(fa.fragments.size());
+  for (std::size_t i = 0; i < p.size(); ++i) moved[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - last_positions_[i]);
+  for (std::size_t k = 0; k < fa.fragments.size(); ++k)
+    if (fa.fragments[k].wall_contacts > 0) {
+      const Vec3 mean = moved[k] / (fa.fragments[k].mass * (simulation.time() - last_time_));
+      j.velocities[k] = mean - dot(mean, n) * n;
+    }
+  last_reason_.clear();
+  judged_ = std::move(j.fragments);
+  judged_mean_velocity_ = std::move(j.velocities);
+  Window now;
+  now.start = simulation.time();
+  settle(simulation, SettleRule::fates_fixed, now);
   return true;
 }
 
@@ -191,6 +234,8 @@ bool SettleMonitor::update(const Simulation& simulation) {
     quiet_ = open_window(simulation, false);
     fixed_ = open_window(simulation, true);
     since_ = quiet_.start;
+    last_positions_ = simulation.particles().position;
+    last_time_ = simulation.time();
     return false;
   }
   // The quiet rule first: when both would pass, the run is settled in the plain sense.
@@ -206,7 +251,7 @@ bool SettleMonitor::update(const Simulation& simulation) {
     if (judge_outcome_fixed(simulation)) return true;
     fixed_ = open_window(simulation, true);
   }
-  return false;
+  return outcome_fixed_rule_ && judge_fates_fixed(simulation);
 }
 
 }  // namespace aerobreak
