@@ -280,7 +280,7 @@ void Simulation::prepare_forces(ParticleDrift& drift) {
 // opens it uses the new step, the one closing this step the old.
 void Simulation::choose_step() {
   const StepChooser::Choice choice =
-      chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin());
+      chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin(), next_dt_);
   ++history_.choices;
   choice_expires_ = time_ + choice.hold;
   next_limit_ = choice.limit;

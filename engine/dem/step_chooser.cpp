@@ -18,7 +18,7 @@ StepChooser::StepChooser(double cap, BreakOverlaps overlaps, double steps_per_br
 
 // Every pair that can touch, or let go, before the list is rebuilt is listed. Its approach rate
 // (the overlap's rate of change) at a later time is -dv(t).n(t); with dv(t) within 2 budget of dv
-// now, and n(t) within `turn` of n now, it is at most |dv.n| + turn |dv x n| + 2 budget (1 + turn).
+// now, and n(t) within `turn` radians of n now, it is at most |dv.n| + turn |dv x n| + 2 budget.
 StepChooser::PairSpeeds StepChooser::pair_speeds(const Particles& p, const PairList& pairs) const {
   PairSpeeds s;
   if (!(overlaps_.pair > 0.0)) return s;
@@ -74,27 +74,28 @@ double StepChooser::crossing_step(double pair_speed, double wall_speed) const {
 }
 
 // The step for the approaches found plus the headroom h = headroom x the fastest of them: a
-// listed pair approaches at most at u_pair + 2h (1 + turn) before the next choice (each of its two
-// velocities may depart by h), a particle a wall at most at u_wall + h. The budget is then the
+// listed pair approaches at most at u_pair + 2h before the next choice (each of its two velocities
+// may depart by h), a particle a wall at most at u_wall + h. The budget is then the
 // largest departure this step still resolves, at least h. The choice holds while no line of
 // centres can have turned by more than `turn`: it turns at most at (|dv| + 2 budget) / |r|, and
 // |r| stays above 0.9 of the closest centres now (they approach by at most turn |r| in that time).
 StepChooser::Choice StepChooser::choose(const Particles& p, const PairList& pairs, const std::vector<Wall>& walls,
-                                        const std::vector<Vec3>& built_at, double skin) {
+                                        const std::vector<Vec3>& built_at, double skin, double current) {
   Choice c;
   const PairSpeeds pair = pair_speeds(p, pairs);
   c.pair_speed = pair.approach;
   c.wall_speed = fastest_wall_speed(p, walls, built_at, skin);
   const double h = headroom_ * std::max(c.pair_speed, c.wall_speed);
-  const double spread = 2.0 * (1.0 + turn_);  // how much a pair's approach bound grows per unit of budget
-  const double crossing = crossing_step(c.pair_speed + spread * h, c.wall_speed + h);
-  c.time_step = std::min(cap_, crossing);
-  c.limit = crossing < cap_ ? TimeStepLimit::break_overlap : TimeStepLimit::contact_period;
+  const double crossing = crossing_step(c.pair_speed + 2.0 * h, c.wall_speed + h);
+  const double allowed = std::min(cap_, crossing);
+  const bool keep = current > 0.0 && allowed >= current && allowed < growth * current;
+  c.time_step = keep ? current : allowed;
+  c.limit = c.time_step < cap_ ? TimeStepLimit::break_overlap : TimeStepLimit::contact_period;
 
   double budget = std::numeric_limits<double>::infinity();
   const double resolved = 1.0 / (steps_per_break_overlap_ * c.time_step);  // speed per unit break overlap
   if (overlaps_.pair > 0.0)
-    budget = (std::max(overlaps_.pair * resolved, overlaps_.pair_adhesion_speed) - c.pair_speed) / spread;
+    budget = 0.5 * (std::max(overlaps_.pair * resolved, overlaps_.pair_adhesion_speed) - c.pair_speed);
   if (overlaps_.wall > 0.0)
     budget = std::min(budget, std::max(overlaps_.wall * resolved, overlaps_.wall_adhesion_speed) - c.wall_speed);
   budget = std::max(budget, h);

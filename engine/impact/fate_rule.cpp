@@ -172,7 +172,8 @@ struct Verdict {
   bool held = false;
 };
 
-Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, double friction) {
+Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, double friction,
+                const Vec3& mean_along_wall) {
   const std::string name = name_of(k, f);
   const Vec3 n = wall.normal / norm(wall.normal);
   const double height = dot(f.centre_of_mass - wall.point, n);
@@ -190,7 +191,8 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
       return {name + " on the wall has energy " + number(wall_energy) + ", not below the " + number(hold) +
                   " that frees its weakest contact",
               v.path};
-    v.path = resting_path(f.centre_of_mass, f.bounding_radius);
+    // It may still creep along the wall: on the course of its mean velocity along it.
+    v.path.velocity = mean_along_wall;
     v.held = true;
     return v;
   }
@@ -229,9 +231,27 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   return v;
 }
 
+// Each fragment's mean velocity along the wall since `earlier` (that of its centre of mass if the
+// time is the same).
+std::vector<Vec3> mean_along_wall(const Simulation& sim, const FragmentAnalysis& fa, const std::vector<Vec3>& earlier_positions,
+                                  double earlier) {
+  const Particles& p = sim.particles();
+  const Vec3 n = sim.walls().front().normal / norm(sim.walls().front().normal);
+  const double elapsed = sim.time() - earlier;
+  std::vector<Vec3> mean(fa.fragments.size());
+  if (elapsed > 0.0 && earlier_positions.size() == p.size()) {
+    for (std::size_t i = 0; i < p.size(); ++i) mean[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - earlier_positions[i]);
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = mean[k] / (fa.fragments[k].mass * elapsed);
+  } else {
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = fa.fragments[k].velocity;
+  }
+  for (Vec3& v : mean) v = v - dot(v, n) * n;
+  return mean;
+}
+
 }  // namespace
 
-FatesJudgement judge_fates(const Simulation& sim) {
+FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earlier_positions, double earlier) {
   FatesJudgement j;
   j.fragments = find_fragments(sim);
   std::vector<Fragment>& fragments = j.fragments.fragments;
@@ -244,10 +264,12 @@ FatesJudgement judge_fates(const Simulation& sim) {
   }
   const Wall& wall = sim.walls().front();
   const std::vector<Reserve> reserves = reserves_of(sim, j.fragments);
+  const std::vector<Vec3> along_wall = mean_along_wall(sim, j.fragments, earlier_positions, earlier);
   const double friction = sim.model().tangential ? sim.model().friction : 0.0;
   std::vector<Verdict> verdicts;
   for (std::size_t k = 0; k < fragments.size(); ++k) {
-    verdicts.push_back(fate_of(k, fragments[k], reserves[k], wall, friction));
+    verdicts.push_back(fate_of(k, fragments[k], reserves[k], wall, friction, along_wall[k]));
+    if (verdicts.back().held) j.velocities[k] = along_wall[k];
     if (!verdicts.back().open.empty()) {
       j.reason = verdicts.back().open;
       return j;
@@ -259,7 +281,12 @@ FatesJudgement judge_fates(const Simulation& sim) {
   }
   for (std::size_t a = 0; a < fragments.size(); ++a)
     for (std::size_t b = a + 1; b < fragments.size(); ++b) {
-      if (verdicts[a].held && verdicts[b].held) continue;
+      // Two held fragments that do not approach each other cannot meet (a held fragment's course
+      // along the wall is known only roughly: its bounding sphere may overlap another's from the
+      // start); one moving towards another is tested on its course.
+      if (verdicts[a].held && verdicts[b].held &&
+          dot(fragments[b].centre_of_mass - fragments[a].centre_of_mass, verdicts[b].path.velocity - verdicts[a].path.velocity) >= 0.0)
+        continue;
       if ((fragments[a].bouncing && fragments[b].bouncing) || paths_can_meet(verdicts[a].path, verdicts[b].path)) {
         j.reason = name_of(a, fragments[a]) + " and " + name_of(b, fragments[b]) + " can still meet";
         return j;

@@ -13,7 +13,8 @@ class Simulation;
 // The judgement of the fates-fixed rule (docs/IMPACT.md section 4), from the state of the moment:
 // every fragment's fate is fixed when it is
 //  - held: on an adhesive wall, with less energy (kinetic, in the wall's frame, and stored in its
-//    contacts above their rest) than it takes to break its weakest bond or its weakest wall contact;
+//    contacts above their rest) than it takes to break its weakest bond or its weakest wall contact
+//    (it may still creep along the wall: at its mean velocity along it since `earlier`);
 //  - clear: off the wall, its centre of mass moving away, no bond breakable (the same energy, in its
 //    own frame, below its weakest bond) and its lowest point unable to come back to the wall;
 //  - landing: a primary alone, off an adhesive wall and moving towards it with less kinetic energy
@@ -21,12 +22,16 @@ class Simulation;
 //  - bouncing: a primary alone, off a wall without adhesion and moving towards it: it touches it
 //    and leaves on a course within bounds;
 // the largest fragment is held or clear, and no two fragments can meet on their paths
-// (fragment_paths.hpp; two held fragments, which the quiet rule leaves out too, excepted).
+// (fragment_paths.hpp). `earlier_positions` are the particles' positions at the time `earlier`
+// before now (the last look at the run).
 struct FatesJudgement {
   std::string reason;            // empty when every fate is fixed; else the first fragment that is not, and why
   FragmentAnalysis fragments;    // the fragments of the moment, landing and bouncing marked
-  std::vector<Vec3> velocities;  // their centre-of-mass velocities
+  // Their velocities: in flight their centre of mass's; held, 0 along the wall's normal (a held
+  // fragment's height is bounded: its long-run mean normal velocity vanishes) and the mean since
+  // `earlier` along the wall.
+  std::vector<Vec3> velocities;
 };
-FatesJudgement judge_fates(const Simulation& simulation);
+FatesJudgement judge_fates(const Simulation& simulation, const std::vector<Vec3>& earlier_positions, double earlier);
 
 }  // namespace aerobreak

@@ -19,10 +19,6 @@ struct FragmentPath {
   double spread = 0.0;
 };
 
-// A fragment that stays where it is (held on a wall).
-inline FragmentPath resting_path(const Vec3& centre, double radius) {
-  return {centre, Vec3{}, radius, 0.0, Vec3{}, 0.0};
-}
 
 // Whether two fragments on these paths can touch at some time from now on: whether the distance of
 // their centres can fall to the sum of their radii (each the bounding radius, plus its ball).

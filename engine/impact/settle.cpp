@@ -36,7 +36,7 @@ std::uint64_t wall_events(const Simulation& simulation) {
 
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                              const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed) {
+                             double rest_speed, bool deposit_pairs) {
   const Vec3 n = wall_normal / norm(wall_normal);
   for (std::size_t k = 0; k < fragments.size(); ++k) {
     const Fragment& f = fragments[k];
@@ -53,10 +53,11 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
     }
   }
   // Two fragments can still meet if their centres approach and, moving on as they do, would pass
-  // closer than their bounding spheres allow. Fragments both resting on the wall are left out.
+  // closer than their bounding spheres allow. Fragments both resting on the wall are left out
+  // unless asked for.
   for (std::size_t a = 0; a < fragments.size(); ++a)
     for (std::size_t b = a + 1; b < fragments.size(); ++b) {
-      if (fragments[a].on_wall() && fragments[b].on_wall()) continue;
+      if (!deposit_pairs && fragments[a].on_wall() && fragments[b].on_wall()) continue;
       const Vec3 separation = fragments[b].centre_of_mass - fragments[a].centre_of_mass;
       const Vec3 relative = mean_velocity[b] - mean_velocity[a];
       const double approach = dot(separation, relative);
@@ -73,7 +74,9 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
 std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                                 const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
                                 double rest_speed, const OutcomeThresholds& thresholds, bool unbroken) {
-  std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed);
+  // Before the quiet rule, which waits until nothing moves, the deposit's pieces may still creep
+  // into each other: they are tested for meeting too.
+  std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed, true);
   if (!reason.empty()) return reason;
   if (unbroken) return {};
   const Classification c = classify(fates_of(fragments, mean_velocity, wall_normal), true, thresholds);
@@ -184,27 +187,11 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
 }
 
 bool SettleMonitor::judge_fates_fixed(const Simulation& simulation) {
-  FatesJudgement j = judge_fates(simulation);
-  const bool fixed = j.reason.empty() && simulation.time() > last_time_;
-  if (!fixed) {
-    last_positions_ = simulation.particles().position;
-    last_time_ = simulation.time();
-    return false;
-  }
+  FatesJudgement j = judge_fates(simulation, last_positions_, last_time_);
+  last_positions_ = simulation.particles().position;
+  last_time_ = simulation.time();
+  if (!j.reason.empty()) return false;
   ++judgements_;
-  // Fragments in flight keep their velocity. One held on the wall stays there: its normal
-  // position is bounded, so its mean normal velocity vanishes in the long run; along the wall it
-  // takes its mean since the last update (it may slide or roll on).
-  const Particles& p = simulation.particles();
-  const FragmentAnalysis& fa = j.fragments;
-  const Vec3 n = simulation.walls().front().normal / norm(simulation.walls().front().normal);
-  std::vector<Vec3> moved(fa.fragments.size());
-  for (std::size_t i = 0; i < p.size(); ++i) moved[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - last_positions_[i]);
-  for (std::size_t k = 0; k < fa.fragments.size(); ++k)
-    if (fa.fragments[k].wall_contacts > 0) {
-      const Vec3 mean = moved[k] / (fa.fragments[k].mass * (simulation.time() - last_time_));
-      j.velocities[k] = mean - dot(mean, n) * n;
-    }
   last_reason_.clear();
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.velocities);

@@ -17,9 +17,11 @@ class Simulation;
 // otherwise one sentence saying which fragment is not. `mean_velocity[k]` is fragment k's
 // centre-of-mass velocity averaged over the window, `lowest_gap_before[k]` its lowest gap to
 // the wall at the window's start, `rest_speed` the largest mean normal speed that counts as rest.
+// Two fragments resting on the wall are not tested for meeting unless `deposit_pairs`: they may
+// still creep along it into each other.
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                              const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed);
+                             double rest_speed, bool deposit_pairs = false);
 
 // The state judgement of the outcome-fixed rule (docs/IMPACT.md section 4): empty when the state
 // passes unsettled_reason and either is a break-up in which no fragment on the wall holds the
