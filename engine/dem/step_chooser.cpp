@@ -18,7 +18,9 @@ StepChooser::StepChooser(double cap, BreakOverlaps overlaps, double steps_per_br
 
 // Every pair that can touch, or let go, before the list is rebuilt is listed. Its approach rate
 // (the overlap's rate of change) at a later time is -dv(t).n(t); with dv(t) within 2 budget of dv
-// now, and n(t) within `turn` radians of n now, it is at most |dv.n| + turn |dv x n| + 2 budget.
+// now, and n(t) within `turn` radians of n now, it is at most a + turn |dv x n| + 2 budget, where
+// a = |dv.n| for a pair in contact (it may let go, separating) and a = max(-dv.n, 0) for one not
+// in contact (only closing makes a contact: a pair moving apart would first have to turn back).
 StepChooser::PairSpeeds StepChooser::pair_speeds(const Particles& p, const PairList& pairs) const {
   PairSpeeds s;
   if (!(overlaps_.pair > 0.0)) return s;
@@ -28,12 +30,13 @@ StepChooser::PairSpeeds StepChooser::pair_speeds(const Particles& p, const PairL
       const std::uint32_t j = pairs.neighbor[k];
       const Vec3 dv = p.velocity[j] - p.velocity[i];
       const Vec3 r = p.position[j] - p.position[i];
-      const double r2 = norm2(r), dv2 = norm2(dv);
+      const double r2 = norm2(r);
       const double distance = std::sqrt(r2);
-      const double along = distance > 0.0 ? std::abs(dot(dv, r)) / distance : std::sqrt(dv2);
-      const double across = distance > 0.0 ? norm(cross(dv, r)) / distance : 0.0;
+      const double opening = distance > 0.0 ? dot(dv, r) / distance : 0.0;  // > 0: moving apart
+      const double along = pairs.contact[k] >= 0 ? std::abs(opening) : std::max(-opening, 0.0);
+      const double across = distance > 0.0 ? norm(cross(dv, r)) / distance : norm(dv);
       s.approach = std::max(s.approach, along + turn_ * across);
-      relative2 = std::max(relative2, dv2);
+      relative2 = std::max(relative2, norm2(dv));
       closest2 = std::min(closest2, r2);
     }
   s.relative = std::sqrt(relative2);

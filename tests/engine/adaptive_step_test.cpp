@@ -86,6 +86,25 @@ TEST_CASE("a pair moving across its line of centres counts a tenth of that motio
   CHECK_THAT(c.hold, WithinRel(0.1 * 0.9 * 1.2 / (0.2 + 2.0 * 0.25 * 0.02), 1e-9));
 }
 
+TEST_CASE("a pair moving apart counts its motion along the line of centres only while in contact") {
+  Particles p = three_particles();
+  p.velocity = {{-0.1, 0.0, 0.0}, {0.1, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // head-on apart
+  PairList pairs = first_two_listed();
+  StepChooser chooser(1.0, {0.01, 0.0, 0.001, 0.0}, 10.0, 0.25);
+  CHECK(chooser.choose(p, pairs, {}, p.position, 0.4).pair_speed == 0.0);  // it cannot touch without turning back
+  pairs.contact[0] = 0;  // in contact: it may let go
+  CHECK_THAT(chooser.choose(p, pairs, {}, p.position, 0.4).pair_speed, WithinRel(0.2, 1e-9));
+}
+
+TEST_CASE("the step is kept while the speeds allow less than twice it, and shortened at once when they allow less") {
+  Particles p = three_particles();
+  StepChooser chooser(1.0, {0.01, 0.0, 0.001, 0.0}, 10.0, 0.25);
+  const double allowed = chooser.choose(p, first_two_listed(), {}, p.position, 0.4).time_step;  // 0.01 / 3
+  CHECK(chooser.choose(p, first_two_listed(), {}, p.position, 0.4, 0.6 * allowed).time_step == 0.6 * allowed);
+  CHECK(chooser.choose(p, first_two_listed(), {}, p.position, 0.4, 0.4 * allowed).time_step == allowed);
+  CHECK(chooser.choose(p, first_two_listed(), {}, p.position, 0.4, 1.5 * allowed).time_step == allowed);
+}
+
 TEST_CASE("at rest, or below the adhesion speed, a choice takes the contact period's bound or the adhesion speed's step") {
   Particles p = three_particles();
   p.velocity.assign(3, Vec3{});
