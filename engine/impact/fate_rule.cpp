@@ -295,4 +295,19 @@ FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earli
   return j;
 }
 
+std::string swing_back_reason(const Simulation& sim) {
+  if (sim.walls().empty()) return {};
+  const FragmentAnalysis fa = find_fragments(sim);
+  const std::vector<Reserve> reserves = reserves_of(sim, fa);
+  const Wall& wall = sim.walls().front();
+  const Vec3 n = wall.normal / norm(wall.normal);
+  for (std::size_t k = 0; k < fa.fragments.size(); ++k) {
+    const Fragment& f = fa.fragments[k];
+    if (f.on_wall() || !(f.normal_velocity > 0.0)) continue;
+    if (!cannot_return(f, reserves[k], 0.0, dot(f.centre_of_mass - wall.point, n)))
+      return name_of(k, f) + " turns fast enough to swing back to the wall";
+  }
+  return {};
+}
+
 }  // namespace aerobreak

@@ -34,4 +34,9 @@ struct FatesJudgement {
 };
 FatesJudgement judge_fates(const Simulation& simulation, const std::vector<Vec3>& earlier_positions, double earlier);
 
+// Why a fragment off the wall and moving away may still swing back to it by its rigid rotation
+// alone (its shape kept, its internal motion left out: the clear fate's bound with no internal
+// energy); empty if none can. The outcome-fixed rule asks it of states that are not break-ups.
+std::string swing_back_reason(const Simulation& simulation);
+
 }  // namespace aerobreak

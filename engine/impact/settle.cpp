@@ -179,6 +179,10 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
                                                  j.wall_normal, rest_speed_, thresholds_,
                                                  now.bonds_broken == fixed_.bonds_broken);
   if (!reason.empty()) return false;
+  // A state that is not a break-up stands on its fragments' staying off the wall: one tumbling
+  // fast enough could still swing back and be pushed off again, with another restitution.
+  const Classification c = classify(fates_of(j.fragments.fragments, j.mean_velocity, j.wall_normal), true, thresholds_);
+  if (c.outcome != ImpactOutcome::break_up && !swing_back_reason(simulation).empty()) return false;
   last_reason_.clear();
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.mean_velocity);
