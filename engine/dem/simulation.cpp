@@ -506,8 +506,8 @@ Simulation::ContactReserve Simulation::contact_reserve(const ContactState& conta
 
 double Simulation::wall_loop_energy(std::size_t i, std::size_t w) const {
   const ContactForces& law = *wall_forces_.at(w);
-  ContactConstants c =
-      sphere_wall_constants(particles_.radius[i], particles_.mass[i], materials_.pair(particles_.material[i], walls_[w].material));
+  const PairMaterial& material = materials_.pair(particles_.material[i], walls_[w].material);
+  ContactConstants c = sphere_wall_constants(particles_.radius[i], particles_.mass[i], material);
   law.complete(c);
   return law.normal_response(-c.break_overlap, c).energy - law.normal_response(0.0, c).energy;
 }

@@ -11,7 +11,8 @@ StepChooser::StepChooser(double cap, BreakOverlaps overlaps, double steps_per_br
     : cap_(cap), overlaps_(overlaps), steps_per_break_overlap_(steps_per_break_overlap), headroom_(headroom),
       turn_(turn) {
   if (!(cap > 0.0) || !std::isfinite(cap)) throw std::invalid_argument("step chooser: the cap must be > 0");
-  if (!(steps_per_break_overlap > 0.0)) throw std::invalid_argument("step chooser: steps_per_break_overlap must be > 0");
+  if (!(steps_per_break_overlap > 0.0))
+    throw std::invalid_argument("step chooser: steps_per_break_overlap must be > 0");
   if (!(headroom >= 0.0)) throw std::invalid_argument("step chooser: the headroom must be >= 0");
   if (!(turn > 0.0 && turn < 1.0)) throw std::invalid_argument("step chooser: the turn must be in (0, 1)");
 }
@@ -56,7 +57,8 @@ double StepChooser::fastest_wall_speed(const Particles& p, const std::vector<Wal
     if (!wall.adhesive) continue;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double reach = overlaps_.wall + 0.5 * skin + norm(p.position[i] - built_at[i]);
-      if (wall.gap(p.position[i]) - p.radius[i] <= reach) fastest = std::max(fastest, std::abs(dot(p.velocity[i], wall.normal)));
+      if (wall.gap(p.position[i]) - p.radius[i] <= reach)
+        fastest = std::max(fastest, std::abs(dot(p.velocity[i], wall.normal)));
     }
   }
   return fastest;

@@ -138,8 +138,8 @@ void shortest_crossing(const std::vector<Probe>& probes, std::size_t particles, 
 
 }  // namespace
 
-BreakOverlaps shortest_break_overlaps(const Particles& p, const MaterialTable& materials, const std::vector<Wall>& walls,
-                                      const ContactModelSpec& spec) {
+BreakOverlaps shortest_break_overlaps(const Particles& p, const MaterialTable& materials,
+                                      const std::vector<Wall>& walls, const ContactModelSpec& spec) {
   BreakOverlaps shortest;
   if (p.size() == 0) return shortest;
   const ProbeSet set = probes_of(p, materials, walls, spec, 0.0);

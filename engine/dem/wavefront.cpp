@@ -23,7 +23,8 @@ std::int64_t Wavefront::advance(Simulation& sim, ParticleDrift& drift, std::int6
   // No pass after the first may be one at which a single step would choose the step again: the
   // pass k (k >= 1) whose clock, k steps on, reaches the end of the choice's hold.
   bool expires = false, reaches = false;
-  const std::int64_t held = sim.steps_before(sim.choice_expires(), room(sim, drift.since_build2, drift, wanted), expires);
+  const std::int64_t fits = room(sim, drift.since_build2, drift, wanted);
+  const std::int64_t held = sim.steps_before(sim.choice_expires(), fits, expires);
   const std::int64_t depth = sim.steps_before(until, held, reaches);
   if (depth <= 1) return 0;
   if (const std::optional<ParticleDrift> next = run(sim, static_cast<int>(depth), depth < left && !reaches)) {

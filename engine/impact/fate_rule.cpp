@@ -233,14 +233,15 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
 
 // Each fragment's mean velocity along the wall since `earlier` (that of its centre of mass if the
 // time is the same).
-std::vector<Vec3> mean_along_wall(const Simulation& sim, const FragmentAnalysis& fa, const std::vector<Vec3>& earlier_positions,
-                                  double earlier) {
+std::vector<Vec3> mean_along_wall(const Simulation& sim, const FragmentAnalysis& fa,
+                                  const std::vector<Vec3>& earlier_positions, double earlier) {
   const Particles& p = sim.particles();
   const Vec3 n = sim.walls().front().normal / norm(sim.walls().front().normal);
   const double elapsed = sim.time() - earlier;
   std::vector<Vec3> mean(fa.fragments.size());
   if (elapsed > 0.0 && earlier_positions.size() == p.size()) {
-    for (std::size_t i = 0; i < p.size(); ++i) mean[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - earlier_positions[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      mean[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - earlier_positions[i]);
     for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = mean[k] / (fa.fragments[k].mass * elapsed);
   } else {
     for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = fa.fragments[k].velocity;
@@ -284,9 +285,9 @@ FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earli
       // Two held fragments that do not approach each other cannot meet (a held fragment's course
       // along the wall is known only roughly: its bounding sphere may overlap another's from the
       // start); one moving towards another is tested on its course.
-      if (verdicts[a].held && verdicts[b].held &&
-          dot(fragments[b].centre_of_mass - fragments[a].centre_of_mass, verdicts[b].path.velocity - verdicts[a].path.velocity) >= 0.0)
-        continue;
+      const Vec3 apart = fragments[b].centre_of_mass - fragments[a].centre_of_mass;
+      const Vec3 closing = verdicts[b].path.velocity - verdicts[a].path.velocity;
+      if (verdicts[a].held && verdicts[b].held && dot(apart, closing) >= 0.0) continue;
       if ((fragments[a].bouncing && fragments[b].bouncing) || paths_can_meet(verdicts[a].path, verdicts[b].path)) {
         j.reason = name_of(a, fragments[a]) + " and " + name_of(b, fragments[b]) + " can still meet";
         return j;

@@ -107,7 +107,8 @@ for (v in unique(t$speed)) {
               describe(table(n$settled_by))))
 }
 b <- t[t$code == "base", ]; n <- t[t$code == "new", ]
-cat(sprintf("all speeds: stepping CPU s base %.2f, new %.2f (%.2fx less); process CPU s base %.2f, new %.2f (%.2fx less)\n",
+cat(sprintf(paste("all speeds: stepping CPU s base %.2f, new %.2f (%.2fx less);",
+                  "process CPU s base %.2f, new %.2f (%.2fx less)\n"),
             sum(b$stepping_cpu), sum(n$stepping_cpu), sum(b$stepping_cpu) / sum(n$stepping_cpu), sum(b$process_cpu),
             sum(n$process_cpu), sum(b$process_cpu) / sum(n$process_cpu)))
 R

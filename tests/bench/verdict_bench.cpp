@@ -75,15 +75,16 @@ std::pair<Verdict, Verdict> run_seed(Json document, int seed) {
   Verdict first, last;
   for (double next = check; sim.time() < c.time_limit && !quiet.settled(); next += check) {
     sim.run(std::numeric_limits<std::int64_t>::max(), std::min(next, c.time_limit));
-    if (!first.settled && early.update(sim)) first = verdict_of(early, c, r.impact_velocity, clock.elapsed().cpu_seconds);
+    if (!first.settled && early.update(sim))
+      first = verdict_of(early, c, r.impact_velocity, clock.elapsed().cpu_seconds);
     if (quiet.update(sim)) last = verdict_of(quiet, c, r.impact_velocity, clock.elapsed().cpu_seconds);
   }
   return {first, last};
 }
 
 void print(int seed, const char* which, const Verdict& v) {
-  std::printf("%4d %-6s %-12s %-13s %8.4f %5zu %7zu %8.4f %10.1f %8.2f\n", seed, which, v.outcome.c_str(), v.rule.c_str(),
-              v.retained, v.fragments, v.largest, v.restitution, v.time, v.cpu_seconds);
+  std::printf("%4d %-6s %-12s %-13s %8.4f %5zu %7zu %8.4f %10.1f %8.2f\n", seed, which, v.outcome.c_str(),
+              v.rule.c_str(), v.retained, v.fragments, v.largest, v.restitution, v.time, v.cpu_seconds);
 }
 
 }  // namespace

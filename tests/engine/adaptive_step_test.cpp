@@ -105,7 +105,7 @@ TEST_CASE("the step is kept while the speeds allow less than twice it, and short
   CHECK(chooser.choose(p, first_two_listed(), {}, p.position, 0.4, 1.5 * allowed).time_step == allowed);
 }
 
-TEST_CASE("at rest, or below the adhesion speed, a choice takes the contact period's bound or the adhesion speed's step") {
+TEST_CASE("at rest or below the adhesion speed a choice takes the contact period's bound or the adhesion speed's") {
   Particles p = three_particles();
   p.velocity.assign(3, Vec3{});
   StepChooser slow(1.0, {0.01, 0.02, 0.05, 0.05}, 10.0);
@@ -142,7 +142,8 @@ TEST_CASE("the adaptive step stays within the contact period's bound and resolve
   const StepHistory& h = a.step_history();
   const double cap = a.time_step_estimate().period / a.time_step_estimate().steps_per_period;
   INFO("adaptive: steps " << h.steps << ", dt " << h.shortest << " - " << h.longest << ", choices " << h.choices
-                          << ", fewest steps per break overlap: pairs " << a.pair_events().fewest_steps_per_break_overlap
+                          << ", fewest steps per break overlap: pairs "
+                          << a.pair_events().fewest_steps_per_break_overlap
                           << ", wall " << a.wall_events().fewest_steps_per_break_overlap << "; fixed: steps "
                           << f.step_count() << ", dt " << f.time_step() << ", pairs "
                           << f.pair_events().fewest_steps_per_break_overlap << ", wall "
@@ -160,7 +161,7 @@ TEST_CASE("the adaptive step stays within the contact period's bound and resolve
   CHECK(a.wall_events().fewest_steps_per_break_overlap >= 9.0);
 }
 
-TEST_CASE("with the adaptive step one run, stretches stopped by time, single steps and wavefronts agree to the last bit") {
+TEST_CASE("with the adaptive step one run, stretches stopped by time, single steps and wavefronts agree to the bit") {
   Particles p = testing::relaxed_cluster(600, 5);
   testing::launch_above_floor(p, 0.52, {0.01, 0.0, -0.2});
   const std::vector<Wall> walls = testing::floor_and_side_walls();

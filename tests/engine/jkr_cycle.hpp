@@ -67,7 +67,9 @@ inline double exact_loss(const Contact& c, JkrSeparation rule) {
 // (delta(a) = 0) to the release radius (d(delta)/da = 0, or dF/da = 0).
 inline double integrated_loss(const Contact& c, JkrSeparation rule) {
   const double e = c.modulus, w = c.work, r = c.radius;
-  const auto force = [&](double a) { return 4.0 * e * a * a * a / (3.0 * r) - std::sqrt(8.0 * pi * w * e * a * a * a); };
+  const auto force = [&](double a) {
+    return 4.0 * e * a * a * a / (3.0 * r) - std::sqrt(8.0 * pi * w * e * a * a * a);
+  };
   const auto slope = [&](double a) { return 2.0 * a / r - 0.5 * std::sqrt(2.0 * pi * w / (e * a)); };
   const double touching = std::cbrt(2.0 * pi * w * r * r / e);
   const double release = rule == JkrSeparation::displacement ? std::cbrt(pi * w * r * r / (8.0 * e))
@@ -107,7 +109,8 @@ inline ContactModelSpec jkr_only(JkrSeparation rule) {
 
 // The two bodies of `c` approaching head-on at `speed`, their surfaces `gap` apart: a sphere
 // falling onto the wall z = 0, or two spheres moving towards each other at speed / 2 each.
-inline Simulation approach(const Contact& c, double speed, double gap, JkrSeparation rule, SimulationSettings settings) {
+inline Simulation approach(const Contact& c, double speed, double gap, JkrSeparation rule,
+                           SimulationSettings settings) {
   Particles p;
   if (c.with_wall) {
     p.add({0.0, 0.0, 0.5 + gap}, 0.5, testing::unit_density());
