@@ -14,8 +14,10 @@
 # usage: breakup_speed_bench.sh [REPLICATES] [SPEEDS] [OUTDIR]
 #   defaults: 32 replicates, speeds "0.05 0.1 0.2" d/tau (near v50: "0.015 0.02 0.025")
 # env: AEROBREAK (default build/aerobreak); AEROBREAK_BASE, the code before (an aerobreak built from
-#   a commit before the adaptive step, e.g. 34e0c11); without it the baseline is this aerobreak with
-#   "adaptive_time_step": false (one step per run, the new verdict rules).
+#   a commit before the adaptive step, e.g. 34e0c11); without it the baseline is this aerobreak with the
+#   JSON merge patch BASE_PATCH applied to its cases, by default '{"run":{"adaptive_time_step":false}}'
+#   (one step per run, the new verdict rules); '{"run":{"settle":{"stop_when_outcome_fixed":false}}}' gives the
+#   new step with the quiet rule alone.
 # Needs Rscript (Debian r-base-core; installed if missing, root or sudo).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -24,17 +26,30 @@ speeds=${2:-"0.05 0.1 0.2"}
 out=${3:-$(mktemp -d /tmp/breakup_speed.XXXXXX)}
 new=${AEROBREAK:-$here/../../build/aerobreak}
 base=${AEROBREAK_BASE:-}
+base_patch=${BASE_PATCH:-'{"run":{"adaptive_time_step":false}}'}
 mkdir -p "$out"
 if ! command -v Rscript > /dev/null; then
   sudo=""; [[ $(id -u) -ne 0 ]] && sudo=sudo
   $sudo apt-get install -y r-base-core > /dev/null
 fi
 
-# write_case SPEED SEED ADAPTIVE: the case on stdout (ADAPTIVE: true, false or "" for absent).
+# write_case SPEED SEED PATCH: the case on stdout, with the JSON merge patch PATCH ("" for none) applied.
 write_case() {
   python3 - "$1" "$2" "$3" <<'PY'
 import json, sys
-speed, seed, adaptive = float(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+speed, seed, patch = float(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+
+
+def merge(target, change):
+    for key, value in change.items():
+        if isinstance(value, dict) and isinstance(target.get(key), dict):
+            merge(target[key], value)
+        elif value is None:
+            target.pop(key, None)
+        else:
+            target[key] = value
+
+
 c = {"units": "reduced",
      "cluster": {"generator": {"method": "ballistic", "primaries": 64, "seed": seed}, "relax": True},
      "material": {"gamma_over_kn": 0.001, "poisson_ratio": 0.3},
@@ -44,8 +59,8 @@ c = {"units": "reduced",
      "impact": {"speed": speed, "angle": 0, "gap": 0.01, "orientation_seed": seed},
      "wall": {"adhesive": False},
      "run": {"time_limit": 50000}}
-if adaptive:
-    c["run"]["adaptive_time_step"] = adaptive == "true"
+if patch:
+    merge(c, json.loads(patch))
 json.dump(c, sys.stdout)
 PY
 }
@@ -61,7 +76,7 @@ for v in $speeds; do
       write_case "$v" "$r" "" > "$out/base_v${v}_r$r.case.json"
       run_case "$base" "$out/base_v${v}_r$r.case.json" "$out/base_v${v}_r$r.json"
     else
-      write_case "$v" "$r" false > "$out/base_v${v}_r$r.case.json"
+      write_case "$v" "$r" "$base_patch" > "$out/base_v${v}_r$r.case.json"
       run_case "$new" "$out/base_v${v}_r$r.case.json" "$out/base_v${v}_r$r.json"
     fi
     write_case "$v" "$r" "" > "$out/new_v${v}_r$r.case.json"

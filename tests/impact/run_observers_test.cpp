@@ -13,11 +13,13 @@
 
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/impact_case.hpp"
+#include "engine/impact/impact_result.hpp"
 #include "engine/impact/impact_run.hpp"
 #include "engine/impact/run_observers.hpp"
 #include "engine/impact/settle.hpp"
 #include "impact_support.hpp"
 
+using Json = nlohmann::ordered_json;
 using namespace aerobreak;
 
 namespace {
@@ -201,4 +203,46 @@ TEST_CASE("a whole impact ends in the state of the plain simulation run for as m
     CHECK(last.angular_velocity[i] == p.angular_velocity[i]);
   }
   CHECK(result.final_energy.mechanical() == plain.simulation->energy().mechanical());
+}
+
+TEST_CASE("the result records the step history: the adaptive step's range and limits, a fixed step's one value") {
+  // A fast impact of a weakly adhesive cluster: the break overlaps set the step, shorter while the
+  // approaches are fast (docs/MODEL.md 9.2).
+  auto document = testing::minimal_case();
+  document["material"]["gamma_over_kn"] = 0.001;
+  document["impact"]["speed"] = 0.1;
+  const ImpactResult adaptive = run_impact(parse_impact_case(document));
+  const StepHistory& h = adaptive.step_history;
+  const double cap = adaptive.time_step_estimate.period / adaptive.time_step_estimate.steps_per_period;
+  REQUIRE(adaptive.settled);
+  CHECK(h.steps == adaptive.steps);
+  CHECK(h.contact_period_steps + h.break_overlap_steps == h.steps);
+  CHECK(h.break_overlap_steps > 0);
+  CHECK(h.choices > 1);
+  CHECK(h.shortest < h.mean());
+  CHECK(h.mean() < h.longest);
+  CHECK(h.longest <= cap);
+  CHECK_THAT(h.time, Catch::Matchers::WithinRel(adaptive.simulated_time, 1e-9));
+  const Json recorded = to_json(adaptive)["run"];
+  CHECK(recorded["time_step_source"] == "adaptive");
+  CHECK(recorded["time_step_history"]["shortest"] == h.shortest);
+  CHECK(recorded["time_step_history"]["mean"] == h.mean());
+  CHECK(recorded["time_step_history"]["steps_at_break_overlap"] == h.break_overlap_steps);
+  CHECK(recorded["time_step_history"]["choices"] == h.choices);
+  CHECK(recorded["settled_by"] == to_string(adaptive.settled_by));
+  // Run again, the run is the same to the last bit: the steps chosen depend on the state alone.
+  const ImpactResult again = run_impact(parse_impact_case(document));
+  CHECK(again.steps == adaptive.steps);
+  CHECK(again.simulated_time == adaptive.simulated_time);
+  CHECK(again.step_history.shortest == h.shortest);
+  CHECK(again.step_history.choices == h.choices);
+  CHECK(to_json(again)["fragments"] == to_json(adaptive)["fragments"]);
+
+  document["run"]["time_step"] = kStep;
+  const ImpactResult fixed = run_impact(parse_impact_case(document));
+  CHECK(fixed.step_history.shortest == kStep);
+  CHECK(fixed.step_history.longest == kStep);
+  CHECK(fixed.step_history.choices == 0);
+  CHECK(fixed.step_history.contact_period_steps == fixed.steps);
+  CHECK(to_json(fixed)["run"]["time_step_source"] == "fixed");
 }
