@@ -45,9 +45,10 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# The npm packages pinned by each lockfile: the page's libraries (web/) and the browser tests'
-# driver (tests/browser/). Installed again only when the lockfile changed.
-for folder in web tests/browser; do
+# The npm packages pinned by each lockfile: the page's libraries (web/), the browser tests' driver
+# (tests/browser/) and the API description's linter (tests/openapi/, Redocly CLI). Installed again
+# only when the lockfile changed.
+for folder in web tests/browser tests/openapi; do
   stamp="$folder/node_modules/.aerobreak-lock"
   if ! cmp -s "$folder/package-lock.json" "$stamp" 2>/dev/null; then
     echo "setup: npm ci in $folder"

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -13,18 +12,14 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "engine/cluster/cluster_analysis.hpp"
-#include "engine/cluster/fractal_scaling_fit.hpp"
-#include "engine/core/units.hpp"
-#include "engine/dem/impact_placement.hpp"
-#include "engine/dem/relaxation.hpp"
-#include "engine/impact/cluster_generators.hpp"
-#include "engine/io/cluster_library.hpp"
+#include "engine/cluster/ensemble_fit.hpp"
+#include "engine/impact/cluster_generation.hpp"
+#include "engine/io/cluster_files.hpp"
 #include "engine/io/xyz.hpp"
 
 namespace aerobreak {
@@ -61,55 +56,6 @@ std::string format_number(double value, int significant_digits = 4) {
   return text.data();
 }
 
-// ---- input files -----------------------------------------------------------------------------
-
-// One cluster from a file, with its library metadata when it came from a library.
-struct NamedCluster {
-  std::string name;
-  Cluster cluster;
-  std::optional<ClusterMetadata> metadata;
-};
-
-void require_existing_file(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error("no such file: " + path);
-}
-
-NamedCluster read_library_entry(const std::string& library, const std::string& name) {
-  StoredCluster stored = read_cluster(library, name);
-  return {stored.name, std::move(stored.cluster), std::move(stored.metadata)};
-}
-
-// The clusters of a library: the one named, or all of them for an empty name.
-std::vector<NamedCluster> read_library(const std::string& library, const std::string& name) {
-  std::vector<NamedCluster> clusters;
-  const std::vector<std::string> names = name.empty() ? list_clusters(library) : std::vector<std::string>{name};
-  for (const std::string& each : names) clusters.push_back(read_library_entry(library, each));
-  return clusters;
-}
-
-// A text file's cluster, named after the file.
-NamedCluster read_text_cluster(const std::string& path) {
-  NamedCluster named{std::filesystem::path(path).stem().string(), read_xyz_cluster(std::filesystem::path(path)), {}};
-  if (named.cluster.size() == 0) throw std::runtime_error(path + ": no particles in the file");
-  return named;
-}
-
-// Output files ending in .h5 or .hdf5 are cluster libraries; any other name is a text (XYZ) file.
-bool names_library(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".h5" || extension == ".hdf5";
-}
-
-// "a, b, c", with at most `shown` names and a count of the rest.
-std::string joined(const std::vector<std::string>& names, std::size_t shown = 10) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size() && i < shown; ++i) text += (i == 0 ? "" : ", ") + names[i];
-  if (names.size() > shown) text += " and " + std::to_string(names.size() - shown) + " more";
-  return text;
-}
-
 // ---- generate --------------------------------------------------------------------------------
 
 struct GenerateOptions {
@@ -135,7 +81,7 @@ struct GenerateOptions {
   std::string xyz_file() const { return xyz.empty() ? output : xyz; }
 };
 
-bool GenerateOptions::to_library() const { return xyz.empty() && names_library(output); }
+bool GenerateOptions::to_library() const { return xyz.empty() && names_cluster_library(output); }
 
 // The registry's request (engine/impact/cluster_generators.hpp) for cluster `seed`.
 GeneratorRequest request_for(const GenerateOptions& o, std::uint64_t seed) {
@@ -198,16 +144,6 @@ void check_output(const GenerateOptions& o) {
     throw std::runtime_error("--name and --overwrite apply to a cluster library (--output FILE.h5)");
 }
 
-// Seed of cluster `index` (0, 1, ...) of a generation with base seed `base`: output index + 1 of a
-// SplitMix64 generator seeded with `base` (Steele, Lea & Flood 2014), so that neighbouring base
-// seeds do not share clusters.
-std::uint64_t derived_seed(std::uint64_t base, std::uint64_t index) {
-  std::uint64_t z = base + (index + 1) * 0x9E3779B97F4A7C15ULL;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
 // Names "<prefix>-<index>", the index zero-padded to the width of the largest one, so that they
 // sort in generation order. The default prefix is "<generator>-N<primaries>-seed<seed>", with the
 // generator's registered name.
@@ -234,47 +170,6 @@ void require_free_names(const GenerateOptions& o, const std::vector<std::string>
                                "' (choose another --name or --seed, or give --overwrite)");
 }
 
-// In reduced units with the default contact model, of which relax_cluster uses the normal law only:
-// JKR with displacement-controlled separation.
-RelaxationResult relax_generated(const Cluster& cluster, const GenerateOptions& o) {
-  const Material material = reduced_material(o.gamma_over_kn, o.poisson_ratio);
-  return relax_cluster(particles_from_cluster(cluster, material.density), {material}, ContactModelSpec{});
-}
-
-// docs/MODEL.md 11.1: a cluster handed to an impact must be at mechanical equilibrium and intact.
-void require_intact(const RelaxationResult& relaxation, const std::string& name, std::uint64_t seed) {
-  const std::string which = "cluster " + name + " (seed " + std::to_string(seed) + ")";
-  if (!relaxation.converged)
-    throw std::runtime_error(which + ": relaxation did not converge in " + std::to_string(relaxation.steps) +
-                             " steps (largest net force " + format_number(relaxation.largest_force) +
-                             " times the primary's own F_c); not stored");
-  if (relaxation.contacts_broken > 0)
-    throw std::runtime_error(which + ": relaxation broke " + std::to_string(relaxation.contacts_broken) +
-                             " contacts (the cluster came apart); not stored");
-}
-
-// What the library records of a generation: the registry's request (as a case would name it),
-// the diameter, the seed derivation and the relaxation.
-json generation_parameters(const GenerateOptions& o, const GeneratorRequest& request, std::size_t index,
-                           const std::optional<RelaxationResult>& relaxation) {
-  json parameters = generator_document(request);
-  parameters.erase("seed");
-  parameters["geometric_mean_diameter"] = o.diameter;
-  parameters["base_seed"] = o.seed;
-  parameters["index"] = index;
-  parameters["seed_derivation"] = "splitmix64 output index+1 from base_seed";
-  if (generator_takes(request.method, "fractal_dimension")) parameters["gyration_convention"] = "solid_spheres";
-  parameters["relaxation"] = nullptr;
-  if (relaxation)
-    parameters["relaxation"] = {{"normal_law", "jkr"},
-                                {"gamma_over_kn", o.gamma_over_kn},
-                                {"poisson_ratio", o.poisson_ratio},
-                                {"steps", relaxation->steps},
-                                {"contacts", relaxation->contacts},
-                                {"largest_force_over_pull_off", relaxation->largest_force}};
-  return parameters;
-}
-
 void report_progress(std::size_t done, std::size_t total, const std::string& name, const Cluster& cluster,
                      const std::optional<RelaxationResult>& relaxation, double seconds) {
   std::cerr << "[" << done << "/" << total << "] " << name << ": N = " << cluster.size()
@@ -283,28 +178,22 @@ void report_progress(std::size_t done, std::size_t total, const std::string& nam
             << ", " << format_number(seconds, 3) << " s\n";
 }
 
+// The engine's description of the run (engine/impact/cluster_generation.hpp).
+ClusterGeneration generation_of(const GenerateOptions& o) {
+  return {request_for(o, o.seed), o.relax, o.gamma_over_kn, o.poisson_ratio};
+}
+
 // Generates, relaxes and writes cluster `index` of the run.
 void generate_one(const GenerateOptions& o, std::size_t index, const std::string& name, std::size_t total) {
   const auto started = std::chrono::steady_clock::now();
-  const GeneratorRequest request = request_for(o, derived_seed(o.seed, index));
-  Cluster cluster = generate_cluster(request);
-  std::optional<RelaxationResult> relaxation;
-  if (o.relax) {
-    relaxation = relax_generated(cluster, o);
-    require_intact(*relaxation, name, request.seed);
-    cluster = cluster_from_particles(relaxation->particles);
-  }
-  if (!o.to_library()) {
-    write_xyz_cluster(std::filesystem::path(o.xyz_file()), cluster);
-  } else {
-    // k_f where the generator imposes one.
-    const double prefactor = generator_takes(request.method, "prefactor") ? request.prefactor : kNotGiven;
-    const ClusterOrigin origin{request.method, generation_parameters(o, request, index, relaxation).dump(),
-                               request.seed, prefactor, o.relax};
-    store_cluster(o.output, name, cluster, origin, o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
-  }
+  const GeneratedCluster generated = generate_library_cluster(generation_of(o), index, name);
+  if (!o.to_library())
+    write_xyz_cluster(std::filesystem::path(o.xyz_file()), generated.cluster);
+  else
+    store_cluster(o.output, name, generated.cluster, generated.origin,
+                  o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started;
-  report_progress(index + 1, total, name, cluster, relaxation, elapsed.count());
+  report_progress(index + 1, total, name, generated.cluster, generated.relaxation, elapsed.count());
 }
 
 void generate_clusters(const GenerateOptions& o) {
@@ -388,67 +277,13 @@ struct AnalyzeOptions {
   bool json_output = false;
 };
 
-struct AnalysedCluster {
-  NamedCluster source;
-  ClusterAnalysis analysis;
-};
-
-std::vector<NamedCluster> read_for_analysis(const AnalyzeOptions& o) {
-  require_existing_file(o.input);
-  if (is_hdf5_file(o.input)) return read_library(o.input, o.name);
-  if (!o.name.empty())
-    throw std::runtime_error("--name selects a cluster of a library, and " + o.input + " is not an HDF5 file");
-  return {read_text_cluster(o.input)};
-}
-
-double mean_primary_radius(const std::vector<AnalysedCluster>& clusters) {
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const AnalysedCluster& each : clusters) {
-    for (const double r : each.source.cluster.radius) sum += r;
-    count += each.source.cluster.size();
-  }
-  return sum / static_cast<double>(count);
-}
-
-std::size_t distinct_sizes(const std::vector<AnalysedCluster>& clusters) {
-  std::set<std::size_t> sizes;
-  for (const AnalysedCluster& each : clusters) sizes.insert(each.analysis.primary_count);
-  return sizes.size();
-}
-
-// The ensemble fit N = k_f (Rg/a)^D_f (report figure 2b): attempted when the clusters have
-// several sizes; holds the fit or the reason it could not be made.
-struct EnsembleFit {
-  bool attempted = false;
-  std::optional<FractalScalingFit> fit;
-  double primary_radius = 0.0;
-  std::string failure;
-};
-
-EnsembleFit fit_ensemble(const std::vector<AnalysedCluster>& clusters) {
-  EnsembleFit ensemble;
-  if (distinct_sizes(clusters) < 2) return ensemble;
-  ensemble.attempted = true;
-  ensemble.primary_radius = mean_primary_radius(clusters);
-  std::vector<SizeRadiusSample> samples;
-  for (const AnalysedCluster& each : clusters)
-    samples.push_back({static_cast<double>(each.analysis.primary_count), each.analysis.radius_of_gyration});
-  try {
-    ensemble.fit = fit_fractal_scaling(samples, ensemble.primary_radius);
-  } catch (const std::invalid_argument& error) {
-    ensemble.failure = error.what();
-  }
-  return ensemble;
-}
-
-void print_table(const std::vector<AnalysedCluster>& clusters) {
+void print_table(const std::vector<NamedCluster>& clusters, const std::vector<ClusterAnalysis>& analyses) {
   const std::vector<std::string> header{"name",      "N",          "Rg",      "extent",   "contacts",
                                         "coord", "components", "filling", "porosity", "Df(m-r)"};
   std::vector<std::vector<std::string>> rows{header};
-  for (const AnalysedCluster& each : clusters) {
-    const ClusterAnalysis& a = each.analysis;
-    rows.push_back({each.source.name, std::to_string(a.primary_count), format_number(a.radius_of_gyration),
+  for (std::size_t i = 0; i < clusters.size(); ++i) {
+    const ClusterAnalysis& a = analyses[i];
+    rows.push_back({clusters[i].name, std::to_string(a.primary_count), format_number(a.radius_of_gyration),
                     format_number(a.maximum_extent), std::to_string(a.contact_count),
                     format_number(a.mean_coordination_number, 3), std::to_string(a.component_sizes.size()),
                     format_number(a.filling_factor), format_number(a.porosity),
@@ -467,7 +302,7 @@ void print_table(const std::vector<AnalysedCluster>& clusters) {
   }
 }
 
-void print_ensemble(const EnsembleFit& ensemble) {
+void print_ensemble(const EnsembleFractalFit& ensemble) {
   if (!ensemble.attempted) return;
   if (!ensemble.fit) {
     std::cout << "\nensemble fit N = kf (Rg/a)^Df: not possible: " << ensemble.failure << "\n";
@@ -480,9 +315,8 @@ void print_ensemble(const EnsembleFit& ensemble) {
             << ", kf = " << format_number(f.prefactor) << "\n";
 }
 
-json analysis_json(const AnalysedCluster& each) {
-  const ClusterAnalysis& a = each.analysis;
-  json entry = {{"name", each.source.name},
+json analysis_json(const NamedCluster& each, const ClusterAnalysis& a) {
+  json entry = {{"name", each.name},
                 {"primary_count", a.primary_count},
                 {"radius_of_gyration", a.radius_of_gyration},
                 {"maximum_extent", a.maximum_extent},
@@ -493,8 +327,8 @@ json analysis_json(const AnalysedCluster& each) {
                 {"filling_factor", a.filling_factor},
                 {"porosity", a.porosity},
                 {"mass_radius_dimension", a.mass_radius_dimension}};
-  if (each.source.metadata) {
-    const ClusterOrigin& origin = each.source.metadata->origin;
+  if (each.metadata) {
+    const ClusterOrigin& origin = each.metadata->origin;
     entry["generator"] = origin.generator;
     entry["seed"] = origin.seed;
     entry["relaxed"] = origin.relaxed;
@@ -503,7 +337,7 @@ json analysis_json(const AnalysedCluster& each) {
   return entry;
 }
 
-json ensemble_json(const EnsembleFit& ensemble) {
+json ensemble_json(const EnsembleFractalFit& ensemble) {
   if (!ensemble.attempted) return nullptr;
   if (!ensemble.fit) return {{"error", ensemble.failure}};
   const FractalScalingFit& f = *ensemble.fit;
@@ -517,20 +351,22 @@ json ensemble_json(const EnsembleFit& ensemble) {
 }
 
 void analyze_clusters(const AnalyzeOptions& o) {
-  std::vector<AnalysedCluster> clusters;
-  for (NamedCluster& source : read_for_analysis(o)) {
-    const ClusterAnalysis analysis = analyse_cluster(source.cluster);
-    clusters.push_back({std::move(source), analysis});
+  std::vector<NamedCluster> sources = read_cluster_file(o.input, o.name);
+  std::vector<Cluster> clusters;
+  std::vector<ClusterAnalysis> analyses;
+  for (NamedCluster& source : sources) {
+    analyses.push_back(analyse_cluster(source.cluster));
+    clusters.push_back(std::move(source.cluster));  // the sources keep their names and metadata
   }
-  const EnsembleFit ensemble = fit_ensemble(clusters);
+  const EnsembleFractalFit ensemble = fit_cluster_ensemble(clusters, analyses);
   if (o.json_output) {
     json entries = json::array();
-    for (const AnalysedCluster& each : clusters) entries.push_back(analysis_json(each));
+    for (std::size_t i = 0; i < sources.size(); ++i) entries.push_back(analysis_json(sources[i], analyses[i]));
     const json report{{"file", o.input}, {"clusters", entries}, {"ensemble_fit", ensemble_json(ensemble)}};
     std::cout << report.dump(2) << "\n";
     return;
   }
-  print_table(clusters);
+  print_table(sources, analyses);
   print_ensemble(ensemble);
 }
 
@@ -557,40 +393,10 @@ struct ConvertOptions {
   bool overwrite = false;
 };
 
-ClusterOrigin imported_origin(const std::string& source) {
-  ClusterOrigin origin;
-  origin.generator = "xyz";
-  origin.parameters = json{{"source", source}}.dump();
-  return origin;
-}
-
-std::vector<NamedCluster> read_for_conversion(const ConvertOptions& o, bool to_library) {
-  require_existing_file(o.input);
-  if (!is_hdf5_file(o.input)) {
-    NamedCluster text = read_text_cluster(o.input);
-    if (!o.name.empty()) text.name = o.name;
-    return {std::move(text)};
-  }
-  if (o.name.empty() && !to_library)
-    throw std::runtime_error("converting a library to XYZ needs --name (" + o.input +
-                             " holds: " + joined(list_clusters(o.input)) + ")");
-  return read_library(o.input, o.name);
-}
-
 void convert_clusters(const ConvertOptions& o) {
-  const bool to_library = names_library(o.output);
-  const std::vector<NamedCluster> clusters = read_for_conversion(o, to_library);
-  for (const NamedCluster& each : clusters) {
-    if (!to_library) {
-      write_xyz_cluster(std::filesystem::path(o.output), each.cluster);
-      continue;
-    }
-    const ClusterOrigin origin = each.metadata ? each.metadata->origin : imported_origin(o.input);
-    store_cluster(o.output, each.name, each.cluster, origin,
-                  o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
-  }
-  std::cout << "wrote " << clusters.size() << (clusters.size() == 1 ? " cluster" : " clusters") << " to "
-            << o.output << "\n";
+  const std::size_t count = convert_cluster_file(o.input, o.output, o.name,
+                                                 o.overwrite ? ExistingCluster::overwrite : ExistingCluster::reject);
+  std::cout << "wrote " << count << (count == 1 ? " cluster" : " clusters") << " to " << o.output << "\n";
 }
 
 void add_convert(CLI::App& cluster) {

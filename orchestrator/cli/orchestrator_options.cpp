@@ -27,6 +27,11 @@ void OrchestratorOptions::add_to(CLI::App& command) {
   command.add_option("--idle-shutdown", idle_shutdown, "Seconds an idle worker job waits for work before it stops")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command.add_option("--silence-limit", silence_limit,
+                     "Seconds a worker job, or a rank running a case, may send nothing before it is taken for lost "
+                     "(a lost node, a stopped process): its cases go back to the queue")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command.add_option("--worker-program", worker_program,
                      "The program worker jobs run as PROGRAM worker [default: this aerobreak]; the tests' engine "
                      "double build/tests/aerobreak_synthetic_worker answers from a synthetic law (docs/ADAPTIVE.md)")
@@ -58,6 +63,8 @@ SchedulerOptions OrchestratorOptions::scheduler_options(std::function<void(const
   options.launcher.program = worker_program.empty() ? current_executable() : std::filesystem::absolute(worker_program);
   options.data_directory = std::filesystem::absolute(data_directory());
   options.idle_shutdown = std::chrono::milliseconds(static_cast<long>(idle_shutdown * 1000.0));
+  options.launcher.silence_limit = silence_limit;
+  options.silence_limit = std::chrono::milliseconds(static_cast<long>(silence_limit * 1000.0));
   options.log = std::move(log);
   return options;
 }

@@ -22,7 +22,8 @@ struct OrchestratorOptions {
   int ranks = 0;     // 0: the machine's cores
   std::vector<std::string> launcher_arguments;
   double idle_shutdown = 10.0;  // seconds
-  std::string web_directory;    // the dashboard's folder; default: the source tree's web/
+  double silence_limit = static_cast<double>(kDefaultSilenceLimit.count());  // seconds
+  std::string web_directory;    // the dashboard's folder; default: default_web_directory()
   std::string worker_program;   // what worker jobs run as `PROGRAM worker`; default: this executable
 
   void add_to(CLI::App& command);

@@ -1,5 +1,6 @@
 #include "orchestrator/scheduler/launcher.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace aerobreak {
@@ -19,7 +20,10 @@ std::vector<std::string> worker_job_command(const LauncherConfig& config) {
     // Open MPI needs (without it every task fails in MPI_Init: "OMPI was not built with SLURM's
     // PMI support"); tests/slurm/run_slurm_study.sh ran it against a real Slurm. A site whose
     // Open MPI wants PMI-2 overrides it: --launcher-arg=--mpi=pmi2 (the later option wins).
-    command = {"srun", "--ntasks=" + std::to_string(config.ranks), "--input=0", "--mpi=pmix"};
+    // Without --kill-on-bad-exit a task that dies while the job starts (seen on a node back from a
+    // failure, tests/slurm/run_slurm_cluster.sh) leaves the others waiting in MPI_Init for ever;
+    // with it srun ends the step and the orchestrator launches the job again.
+    command = {"srun", "--ntasks=" + std::to_string(config.ranks), "--input=0", "--mpi=pmix", "--kill-on-bad-exit=1"};
   } else if (config.kind == "direct") {
     if (config.ranks != 1) throw std::invalid_argument("the direct launcher runs exactly one rank");
   } else {
@@ -28,6 +32,11 @@ std::vector<std::string> worker_job_command(const LauncherConfig& config) {
   command.insert(command.end(), config.arguments.begin(), config.arguments.end());
   command.push_back(config.program.string());
   command.push_back("worker");
+  if (config.silence_limit > 0.0) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", config.silence_limit);
+    command.insert(command.end(), {"--silence-limit", seconds});
+  }
   return command;
 }
 

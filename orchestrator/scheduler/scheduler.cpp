@@ -1,7 +1,10 @@
 #include "orchestrator/scheduler/scheduler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <memory>
+#include <variant>
 
 #include "orchestrator/worker/worker_protocol.hpp"
 
@@ -9,18 +12,6 @@ namespace aerobreak {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::optional<AttemptEnd> attempt_end_of(const std::string& kind) {
-  if (kind == "invalid") return AttemptEnd::invalid;
-  if (kind == "wall_time") return AttemptEnd::wall_time;
-  if (kind == "error") return AttemptEnd::error;
-  return std::nullopt;
-}
-
-std::string text_or(const nlohmann::json& message, const char* key, const std::string& fallback) {
-  const auto found = message.find(key);
-  return found != message.end() && found->is_string() ? found->get<std::string>() : fallback;
-}
 
 // "still running 47.3 s after its start (wall-time limit 10 s); its worker job was killed".
 std::string overdue_text(double seconds, double limit) {
@@ -114,12 +105,14 @@ void Scheduler::step() {
     // each may free a rank, and the freed rank gets its next case right after.
     auto message = job_->next_message(std::chrono::milliseconds(50));
     while (message && !stopping_) {
+      job_heard_ = Clock::now();
       handle(*message);
       message = job_->next_message(std::chrono::milliseconds(0));
     }
     if (!stopping_) {
       feed_job();
       check_hard_limits();
+      check_silence();
       stop_idle_job();
       reap_job();
     }
@@ -136,10 +129,15 @@ void Scheduler::step() {
 void Scheduler::end_job_on_stop() {
   const bool written = storage_.retry_now();
   if (job_) {
-    job_->kill();
+    // A job with no case in flight is told to stop and ends by itself (srun then ends its step and
+    // gives its allocation back before the orchestrator goes); one that does not in time is killed.
+    const bool stopped =
+        in_flight_.empty() && status().job_ready && job_->stop_within(WorkerJob::kTerminationGrace);
+    if (!stopped) job_->kill();
     try {
       store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
-      store_.end_job(status_.job_id, *job_->exit_status(), "killed: the orchestrator stopped");
+      store_.end_job(status_.job_id, *job_->exit_status(),
+                     stopped ? "stopped with the orchestrator" : "killed: the orchestrator stopped");
     } catch (const SqliteError& error) {
       if (!error.storage_fault()) throw;
       note(std::string("could not record the end of the worker job: ") + error.what());
@@ -175,7 +173,9 @@ void Scheduler::launch_job() {
   }
   in_flight_.clear();
   job_told_to_stop_ = false;
+  job_silent_ = false;
   job_idle_since_ = Clock::now();
+  job_heard_ = Clock::now();
   {
     std::lock_guard lock(status_mutex_);
     status_.job_running = true;
@@ -209,73 +209,116 @@ void Scheduler::feed_job() {
   status_.in_flight = in_flight_.size();
 }
 
-void Scheduler::handle(const nlohmann::json& message) {
-  const std::string type = text_or(message, "type", "");
-  if (type == "ready") {
-    const int ranks = message.value("ranks", 0);
-    storage_.write([this, job_id = status().job_id, pid = message.value("pid", std::int64_t{0}),
-                    hosts = message.value("hosts", nlohmann::json::array())] { store_.job_started(job_id, pid, hosts); });
-    std::lock_guard lock(status_mutex_);
-    status_.job_ready = ranks > 0;
-    status_.ranks = ranks;
-    status_.consecutive_launch_failures = 0;
-    return;
-  }
-  if (type == "protocol_error") {
-    note("worker job reports a protocol error: " + text_or(message, "message", "(no message)"));
-    return;
-  }
-  const auto case_id = message.value("case", std::int64_t{-1});
-  const int attempt = message.value("attempt", -1);
+void Scheduler::handle(JobMessage& message) {
+  std::visit([this](auto& each) { handle(each); }, message);
+}
+
+void Scheduler::handle(const JobReady& ready) {
+  storage_.write([this, job_id = status().job_id, pid = ready.pid, hosts = nlohmann::ordered_json(ready.hosts)] {
+    store_.job_started(job_id, pid, hosts);
+  });
+  std::lock_guard lock(status_mutex_);
+  status_.job_ready = true;
+  status_.ranks = ready.ranks;
+  status_.consecutive_launch_failures = 0;
+}
+
+void Scheduler::handle(const JobProtocolError& error) {
+  note("worker job reports a protocol error: " + error.message);
+}
+
+void Scheduler::handle(const UnknownJobMessage& message) { note("ignored a worker message: " + message.problem); }
+
+void Scheduler::handle(const JobHeartbeat&) {}  // every message counts as a sign of life (step())
+
+// Rank 0 gave up a rank that went silent; its case comes as a failure of kind lost.
+void Scheduler::handle(const RankLost& lost) {
+  note("worker job " + std::to_string(status().job_id) + " lost rank " + std::to_string(lost.rank) + " on " +
+       lost.host + " (silent for " + std::to_string(std::lround(lost.silent_seconds)) + " s); " +
+       std::to_string(lost.ranks) + " rank(s) left");
+  std::lock_guard lock(status_mutex_);
+  status_.ranks = std::min(status_.ranks, lost.ranks);
+}
+
+Scheduler::Flight Scheduler::flight_of(const std::string& type, std::int64_t case_id, int attempt) {
   const auto flight = in_flight_.find(case_id);
-  if (flight == in_flight_.end() || flight->second.attempt != attempt) {
-    note("ignored a '" + type + "' message for case " + std::to_string(case_id) + " attempt " +
-         std::to_string(attempt) + ", which this job does not run");
-    return;
-  }
-  if (type == "started") {
-    storage_.write([this, case_id, attempt,
-                    worker = text_or(message, "host", "?") + ":" + std::to_string(message.value("rank", -1))] {
-      store_.record_worker(case_id, attempt, worker);
-    });
-    return;
-  }
-  searches_due_ = true;
-  if (type == "result") {
-    if (storage_.write([this, case_id, attempt, message] { commit_result(case_id, attempt, message); }))
-      storage_.clear();
-  } else if (type == "failed" && text_or(message, "kind", "") == "storage") {
-    // The worker could not write the case's data file: not the case's fault.
-    const std::string error = text_or(message, "error", "(no error text)");
-    storage_.write([this, case_id, attempt, error] {
-      store_.requeue_attempt(case_id, attempt, "its data file could not be written: " + error);
-    });
-    storage_.note(error);
-  } else if (type == "failed") {
-    const auto end = attempt_end_of(text_or(message, "kind", "error")).value_or(AttemptEnd::error);
-    record_failure(case_id, attempt, end, text_or(message, "error", "(no error text)"));
-  } else {
-    note("ignored a worker message of unknown type '" + type + "'");
-    return;
-  }
+  if (flight != in_flight_.end() && flight->second.attempt == attempt) return flight;
+  note("ignored a '" + type + "' message for case " + std::to_string(case_id) + " attempt " + std::to_string(attempt) +
+       ", which this job does not run");
+  return in_flight_.end();
+}
+
+void Scheduler::landed(Flight flight) {
   in_flight_.erase(flight);
+  searches_due_ = true;
   std::lock_guard lock(status_mutex_);
   status_.in_flight = in_flight_.size();
 }
 
-void Scheduler::commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message) {
+void Scheduler::handle(const CaseStarted& started) {
+  if (flight_of("started", started.case_id, started.attempt) == in_flight_.end()) return;
+  storage_.write([this, case_id = started.case_id, attempt = started.attempt,
+                  worker = started.host + ":" + std::to_string(started.rank)] {
+    store_.record_worker(case_id, attempt, worker);
+  });
+}
+
+void Scheduler::handle(CaseResult& result) {
+  const auto flight = flight_of("result", result.case_id, result.attempt);
+  if (flight == in_flight_.end()) return;
+  // Held, with the writes after it, while storage fails: kept once, not copied per retry.
+  auto kept = std::make_shared<const CaseResult>(std::move(result));
+  if (storage_.write([this, kept] { commit_result(*kept); })) storage_.clear();
+  landed(flight);
+}
+
+void Scheduler::handle(const CaseFailed& failed) {
+  const auto flight = flight_of("failed", failed.case_id, failed.attempt);
+  if (flight == in_flight_.end()) return;
+  if (failed.kind == FailureKind::storage) {
+    // The worker could not write the case's data file: not the case's fault.
+    storage_.write([this, case_id = failed.case_id, attempt = failed.attempt, error = failed.error] {
+      store_.requeue_attempt(case_id, attempt, "its data file could not be written: " + error);
+    });
+    storage_.note(failed.error);
+  } else {
+    const AttemptEnd end = failed.kind == FailureKind::invalid     ? AttemptEnd::invalid
+                           : failed.kind == FailureKind::wall_time ? AttemptEnd::wall_time
+                           : failed.kind == FailureKind::lost      ? AttemptEnd::lost
+                                                                   : AttemptEnd::error;
+    record_failure(failed.case_id, failed.attempt, end, failed.error);
+  }
+  landed(flight);
+}
+
+// A result or failure that cannot be read fails the attempt rather than leave the case in flight;
+// a start that cannot be read only goes unrecorded.
+void Scheduler::handle(const UnreadableAnswer& answer) {
+  const auto flight = flight_of(answer.type, answer.case_id, answer.attempt);
+  if (flight == in_flight_.end()) return;
+  if (answer.type == "started") {
+    note("ignored a 'started' message for case " + std::to_string(answer.case_id) + ": " + answer.problem);
+    return;
+  }
+  record_failure(answer.case_id, answer.attempt, AttemptEnd::error,
+                 "the worker's '" + answer.type + "' message could not be read: " + answer.problem);
+  landed(flight);
+}
+
+void Scheduler::commit_result(const CaseResult& result) {
   try {
-    if (store_.commit_result(case_id, attempt, message.at("result"), text_or(message, "data_file", ""),
-                             message.value("seconds", 0.0),
-                             {message.value("data_file_size", std::int64_t{-1}), text_or(message, "data_file_sha256", "")})) {
+    if (store_.commit_result(result.case_id, result.attempt, result.result, result.data_file, result.seconds,
+                             {result.data_file_size, result.data_file_sha256})) {
       std::lock_guard lock(status_mutex_);
       ++status_.results_committed;
     }
   } catch (const SqliteError& error) {
     if (error.storage_fault()) throw;
-    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+    store_.record_failure(result.case_id, result.attempt, AttemptEnd::error,
+                          std::string("result refused: ") + error.what());
   } catch (const std::exception& error) {
-    store_.record_failure(case_id, attempt, AttemptEnd::error, std::string("result refused: ") + error.what());
+    store_.record_failure(result.case_id, result.attempt, AttemptEnd::error,
+                          std::string("result refused: ") + error.what());
   }
 }
 
@@ -304,6 +347,18 @@ void Scheduler::check_hard_limits() {
   }
 }
 
+// A ready job that has said nothing (not even its heartbeat) for the silence limit is taken for
+// lost: seen with srun, which stayed running after Slurm had ended the job for a node failure
+// (tests/slurm/run_slurm_cluster.sh), holding its cases as running for ever.
+void Scheduler::check_silence() {
+  if (job_silent_ || !status().job_ready || Clock::now() - job_heard_ <= options_.silence_limit) return;
+  const auto silent = std::chrono::duration<double>(Clock::now() - job_heard_).count();
+  note("worker job " + std::to_string(status().job_id) + " has sent nothing for " +
+       std::to_string(std::lround(silent)) + " s; killing it");
+  job_silent_ = true;
+  job_->kill();
+}
+
 void Scheduler::stop_idle_job() {
   if (job_told_to_stop_ || !in_flight_.empty() || !status().job_ready) return;
   if (Clock::now() - job_idle_since_ < options_.idle_shutdown) return;
@@ -311,7 +366,7 @@ void Scheduler::stop_idle_job() {
     job_idle_since_ = Clock::now();
     return;
   }
-  job_->send({{"type", "stop"}});
+  job_->send(to_json(StopRequest{}));
   job_->close_input();
   job_told_to_stop_ = true;
 }
@@ -328,7 +383,8 @@ void Scheduler::reap_job() {
   const auto job_id = status().job_id;
   const bool was_ready = status().job_ready;
   std::string note_text = job_told_to_stop_ && code == 0 ? "stopped when idle"
-                                                         : "ended with exit status " + std::to_string(code);
+                          : job_silent_ ? "was killed after sending nothing for the silence limit"
+                                        : "ended with exit status " + std::to_string(code);
   if (overdue_case_) {
     const auto& flight = in_flight_.at(overdue_case_->case_id);
     record_failure(overdue_case_->case_id, flight.attempt, AttemptEnd::wall_time,

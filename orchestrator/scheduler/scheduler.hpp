@@ -19,6 +19,7 @@
 #include "orchestrator/scheduler/worker_job.hpp"
 #include "orchestrator/search/search_driver.hpp"
 #include "orchestrator/store/store.hpp"
+#include "orchestrator/worker/worker_protocol.hpp"
 
 namespace aerobreak {
 
@@ -33,6 +34,10 @@ struct SchedulerOptions {
   // its job is killed.
   double hard_limit_factor = 1.5;
   std::chrono::milliseconds hard_limit_margin{std::chrono::seconds(30)};
+  // A ready job says something at least every kHeartbeatInterval; one silent for this long is taken
+  // for lost (its launcher hangs on a lost node, or rank 0 is stopped or cut off) and killed, and its
+  // cases go back to the queue as for a job that died.
+  std::chrono::milliseconds silence_limit{kDefaultSilenceLimit};
   // Consecutive jobs that end before saying "ready" make the launcher count as failing; launches
   // are then retried with a growing delay, up to max_launch_delay.
   int launch_failures_reported = 3;
@@ -99,11 +104,27 @@ class Scheduler {
   void end_job_on_stop();
   void launch_job();
   void feed_job();
-  void handle(const nlohmann::json& message);
-  void commit_result(std::int64_t case_id, int attempt, const nlohmann::json& message);
+  using Flight = std::map<std::int64_t, InFlight>::iterator;
+  // One handler per message type of the worker protocol (worker_protocol.hpp).
+  void handle(JobMessage& message);
+  void handle(const JobReady& ready);
+  void handle(const JobProtocolError& error);
+  void handle(const UnknownJobMessage& message);
+  void handle(const JobHeartbeat& heartbeat);
+  void handle(const RankLost& lost);
+  void handle(const CaseStarted& started);
+  void handle(CaseResult& result);
+  void handle(const CaseFailed& failed);
+  void handle(const UnreadableAnswer& answer);
+  // The case a message is about, in flight on this job; in_flight_.end() (and a log line) otherwise.
+  Flight flight_of(const std::string& type, std::int64_t case_id, int attempt);
+  // The case's answer has been dealt with: it is no longer in flight.
+  void landed(Flight flight);
+  void commit_result(const CaseResult& result);
   void record_failure(std::int64_t case_id, int attempt, AttemptEnd end, const std::string& error);
   void publish_storage_status();
   void check_hard_limits();
+  void check_silence();
   void stop_idle_job();
   void reap_job();
   void advance_searches();
@@ -125,6 +146,8 @@ class Scheduler {
   std::optional<OverdueCase> overdue_case_;
   StorageFaults storage_;
   bool job_told_to_stop_ = false;
+  bool job_silent_ = false;  // killed for its silence
+  std::chrono::steady_clock::time_point job_heard_;
   std::chrono::steady_clock::time_point job_idle_since_;
   std::chrono::steady_clock::time_point next_launch_;
 

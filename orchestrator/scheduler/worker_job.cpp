@@ -149,7 +149,7 @@ void WorkerJob::read_output() {
   arrived_.notify_all();
 }
 
-std::optional<nlohmann::json> WorkerJob::next_message(std::chrono::milliseconds timeout) {
+std::optional<JobMessage> WorkerJob::next_message(std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   arrived_.wait_for(lock, timeout, [this] { return !messages_.empty() || output_ended_; });
   if (messages_.empty()) return std::nullopt;
@@ -169,6 +169,15 @@ std::optional<int> WorkerJob::exit_status() {
   const pid_t reaped = ::waitpid(pid_, &status, WNOHANG);
   if (reaped == pid_) exit_status_ = exit_code_of(status);
   return exit_status_;
+}
+
+bool WorkerJob::stop_within(std::chrono::milliseconds patience) {
+  send(to_json(StopRequest{}));
+  close_input();
+  const auto deadline = std::chrono::steady_clock::now() + patience;
+  while (!exit_status() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  return exit_status().has_value();
 }
 
 void WorkerJob::kill() {

@@ -12,6 +12,8 @@
 #include <thread>
 #include <vector>
 
+#include "orchestrator/worker/worker_protocol.hpp"
+
 namespace aerobreak {
 
 // One running worker job (a launcher process and its ranks) seen from the orchestrator: its stdin
@@ -36,14 +38,17 @@ class WorkerJob {
   // Closes the job's stdin (a job told to stop needs nothing more).
   void close_input();
 
-  // The next message, waiting at most `timeout`; nullopt on timeout or once the job's output has
-  // ended and every message was taken.
-  std::optional<nlohmann::json> next_message(std::chrono::milliseconds timeout);
+  // The next message, decoded (decode_job_line), waiting at most `timeout`; nullopt on timeout or
+  // once the job's output has ended and every message was taken.
+  std::optional<JobMessage> next_message(std::chrono::milliseconds timeout);
   // The job's output has ended and every message was taken.
   bool finished();
 
   // Exit status once the process has ended (waitpid, non-blocking): the exit code, or 128 + signal.
   std::optional<int> exit_status();
+  // Tells the job to stop (a stop message, then end of input) and waits up to `patience` for its
+  // launcher to end by itself; true if it did.
+  bool stop_within(std::chrono::milliseconds patience);
   // Ends the job: SIGTERM to its process group, so that the launcher ends its ranks and (srun)
   // its Slurm job step and allocation; SIGKILL to the group after kTerminationGrace, or once the
   // launcher has ended, for whatever is left on this machine. Reaps the launcher.
@@ -61,7 +66,7 @@ class WorkerJob {
   std::thread reader_;
   std::mutex mutex_;
   std::condition_variable arrived_;
-  std::deque<nlohmann::json> messages_;
+  std::deque<JobMessage> messages_;
   bool output_ended_ = false;
   int log_ = -1;  // O_APPEND: the job's stderr and the reader thread write whole lines to it
 };

@@ -145,12 +145,6 @@ std::string_view to_string(GroupState state) {
   return "error";
 }
 
-std::optional<GroupState> parse_group_state(std::string_view text) {
-  for (const auto& [s, name] : kStates)
-    if (name == text) return s;
-  return std::nullopt;
-}
-
 std::vector<CrossingEstimate> estimate_crossings(const BoundarySearchSpec& spec,
                                                  std::vector<SearchObservation> observations,
                                                  const RoundContext& context) {

@@ -26,14 +26,13 @@ inline constexpr std::size_t kMinimumSearchResults = 80;
 
 enum class GroupState { searching, converged, budget_spent, out_of_range, error };
 std::string_view to_string(GroupState state);
-std::optional<GroupState> parse_group_state(std::string_view text);
 
 // A crossing P(response) = level, in axis units, with its 95 % profile-likelihood interval.
 struct CrossingEstimate {
   std::string response;
   double level = 0.5;
   std::optional<double> estimate, lower, upper;
-  std::string fit;     // "maximum likelihood", "firth" (penalised, under separation) or "none"
+  std::string fit;     // "firth" (Firth's penalised likelihood, response_fit.hpp) or "none"
   std::string status;  // overlapping | separated | one outcome | no data
   bool narrow_enough = false;  // the interval, and the one expected from the draws, as narrow as asked
   bool found = false;          // the stopping rule holds: narrow now and at the decision before, enough results

@@ -81,16 +81,12 @@ ResponseFit fit_response(const BoundarySearchSpec& spec, const std::vector<Searc
   out.data = grouped_rows(spec, sorted, response);
   classify_overlap(out);
   if (out.overlap != Overlap::overlapping && out.overlap != Overlap::separated) return out;
-  // Maximum likelihood where it exists; Firth's penalised likelihood (finite under separation,
-  // Heinze & Schemper 2002) where the Newton iterates diverge.
+  // Firth's penalised likelihood (Firth 1993; finite under separation, Heinze & Schemper 2002).
   GlmOptions firth;
   firth.penalty = Penalty::firth;
   firth.max_iterations = 200;
   GlmFit penalised = fit_binomial(out.data, firth);
-  if (penalised.converged && penalised.coefficients.allFinite()) {
-    out.fit = std::move(penalised);
-    out.penalised = true;
-  }
+  if (penalised.converged && penalised.coefficients.allFinite()) out.fit = std::move(penalised);
   return out;
 }
 
@@ -116,7 +112,7 @@ CrossingEstimate crossing(const BoundarySearchSpec& spec, const ResponseFit& fit
   out.response = fit.response;
   out.level = level;
   out.status = overlap_text(fit.overlap);
-  out.fit = !fit.fit ? "none" : fit.penalised ? "firth" : "maximum likelihood";
+  out.fit = fit.fit ? "firth" : "none";
   if (!fit.fit || fit.fit->coefficients[1] == 0.0) return out;
   const double centre = search_centre(spec);
   const double low = search_dose(spec, spec.from) - centre, high = search_dose(spec, spec.to) - centre;
@@ -126,7 +122,7 @@ CrossingEstimate crossing(const BoundarySearchSpec& spec, const ResponseFit& fit
   request.level = level;
   request.search_low = low - (high - low);
   request.search_high = high + (high - low);
-  request.penalty = fit.penalised ? Penalty::firth : Penalty::none;
+  request.penalty = Penalty::firth;
   const CriticalDose dose = critical_dose(fit.data, *fit.fit, request);
   if (!dose.estimate) return out;
   out.estimate = search_value(spec, *dose.estimate + centre);

@@ -15,14 +15,17 @@ namespace aerobreak {
 enum class Overlap { overlapping, separated, one_outcome, no_data };
 
 // The logistic model logit P(response) = b0 + b1 dose of one group, fitted to its results grouped
-// by value (the correlations' binomial GLM, orchestrator/fitting/).
+// by value by Firth's penalised likelihood (the correlations' binomial GLM, orchestrator/fitting/).
+// Always Firth's, never plain maximum likelihood: it exists under separation, its bias is
+// O(1/n^2) instead of O(1/n) on the searches' small samples, and its profile intervals held the
+// nominal coverage where maximum likelihood's fell short (docs/ADAPTIVE.md, "The fit and the
+// interval"); one estimator for every round also keeps the decisions free of a switch between two.
 struct ResponseFit {
   std::string response;
   BinomialData data;  // one row per distinct value: design (1, dose - search_centre)
   Overlap overlap = Overlap::no_data;
   double gap_low = 0.0, gap_high = 0.0;  // doses bounding the gap when separated
-  std::optional<GlmFit> fit;             // maximum likelihood, or Firth's when that diverges
-  bool penalised = false;
+  std::optional<GlmFit> fit;             // Firth's; none when its iterations did not converge
 };
 
 // The fit of `response` to the observations (sorted by value; undetermined ones left out).

@@ -1,6 +1,7 @@
 #include "orchestrator/service/api_json.hpp"
 
 #include "orchestrator/fitting/proportion.hpp"
+#include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -22,7 +23,8 @@ nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document) {
                               {"max_attempts", study.max_attempts},
                               {"case_wall_time", study.case_wall_time},
                               {"created_at", study.created_at},
-                              {"cancelled_at", optional_json(study.cancelled_at)}};
+                              {"cancelled_at", optional_json(study.cancelled_at)},
+                              {"units", units_json(study_unit_system(study.document))}};
   if (with_document) json["document"] = study.document;
   return json;
 }
@@ -87,6 +89,7 @@ nlohmann::ordered_json to_json(const ResultRecord& record) {
 
 nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check) {
   nlohmann::ordered_json json = to_json(detail.record);
+  json["units"] = units_json(case_unit_system(detail.document));
   json["document"] = detail.document;
   auto& attempts = json["attempt_history"] = nlohmann::ordered_json::array();
   for (const auto& attempt : detail.attempts) {

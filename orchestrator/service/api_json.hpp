@@ -7,7 +7,8 @@
 namespace aerobreak {
 
 // The REST API's JSON forms of the store's records (schemas/openapi.json names each one).
-// Times are Unix seconds; absent values are null.
+// Times are Unix seconds; absent values are null. A study and a case carry their units
+// (orchestrator/study/study_units.hpp).
 nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document);
 nlohmann::ordered_json to_json(const StudyProgress& progress);
 nlohmann::ordered_json to_json(const CaseRecord& record);

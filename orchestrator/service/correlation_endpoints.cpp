@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <memory>
 
-#include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/study/sha256.hpp"
 
@@ -38,11 +37,11 @@ struct CurrentSet {
   std::string request_key;
 };
 
-CurrentSet current(Store& store, CorrelationCache& cache, const httplib::Request& request) {
-  const auto study = existing_study(store, path_id(request));
+CurrentSet current(Endpoints& e, const httplib::Request& request) {
+  const auto study = existing_study(e.store, path_id(request));
   try {
     const CorrelationRequest asked = correlation_request(study, covariates_parameter(request));
-    return {cache.current(study, asked), request_key(asked)};
+    return {e.correlations.current(study, asked), request_key(asked)};
   } catch (const CorrelationRequestError& error) {
     // A study without results has no correlations yet: 404, as the dashboard expects of a part it
     // cannot show (docs/WEB.md); the message says why.
@@ -70,24 +69,23 @@ std::string fit_list(const std::vector<std::string>& names) {
 
 }  // namespace
 
-void register_correlation_endpoints(httplib::Server& server, Store& store) {
-  const auto cache = std::make_shared<CorrelationCache>(store);
-  server.Get(R"(/api/studies/(\d+)/correlations)",
-             guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
-               const auto [set, key] = current(store, *cache, request);
-               send_kept_json(request, response, document_tag(*set, key, ""), set, set->summary);
-             }));
-  server.Get(R"(/api/studies/(\d+)/correlations/([^/]{1,200}))",
-             guarded([&store, cache](const httplib::Request& request, httplib::Response& response) {
-               const auto [set, key] = current(store, *cache, request);
-               const std::string name = request.matches[2];
-               const auto document = store.stored_fit(set->set_id, name);
-               if (!document)
-                 throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
-                                             " (fits: " + fit_list(store.stored_fit_names(set->set_id)) + ")"};
-               auto kept = std::make_shared<const std::string>(std::move(*document));
-               send_kept_json(request, response, document_tag(*set, key, name), kept, *kept);
-             }));
+namespace endpoint {
+
+void get_study_correlations(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto [set, key] = current(e, request);
+  send_kept_json(request, response, document_tag(*set, key, ""), set, set->summary);
 }
 
+void get_study_correlation(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto [set, key] = current(e, request);
+  const std::string name = request.matches[2];
+  const auto document = e.store.stored_fit(set->set_id, name);
+  if (!document)
+    throw RequestError{404, "no fit '" + name + "' among the correlations of study " + std::string(request.matches[1]) +
+                                " (fits: " + fit_list(e.store.stored_fit_names(set->set_id)) + ")"};
+  auto kept = std::make_shared<const std::string>(std::move(*document));
+  send_kept_json(request, response, document_tag(*set, key, name), kept, *kept);
+}
+
+}  // namespace endpoint
 }  // namespace aerobreak

@@ -1,14 +1,13 @@
 #pragma once
-#include <httplib.h>
+#include "orchestrator/service/endpoints.hpp"
 
-#include "orchestrator/store/store.hpp"
-
-namespace aerobreak {
+namespace aerobreak::endpoint {
 
 // GET /api/studies/ID/correlations (the summary of every fit) and
 // GET /api/studies/ID/correlations/NAME (one fit with its data and curve), both with an optional
-// ?covariates=a,b choosing the pooled models' covariates (schemas/openapi.json). The endpoints own
-// the cache of fits they serve from.
-void register_correlation_endpoints(httplib::Server& server, Store& store);
+// ?covariates=a,b choosing the pooled models' covariates (schemas/openapi.json); served from
+// Endpoints::correlations, fitted once per result set.
+void get_study_correlations(Endpoints&, const httplib::Request&, httplib::Response&);
+void get_study_correlation(Endpoints&, const httplib::Request&, httplib::Response&);
 
-}  // namespace aerobreak
+}  // namespace aerobreak::endpoint

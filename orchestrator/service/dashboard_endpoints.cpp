@@ -1,8 +1,6 @@
 #include "orchestrator/service/dashboard_endpoints.hpp"
 
 #include <map>
-#include <memory>
-#include <mutex>
 #include <set>
 #include <string>
 
@@ -18,29 +16,6 @@ namespace {
 
 constexpr std::size_t kMaxProgressPage = 100;
 constexpr std::size_t kMaxFragmentGridPoints = 1000;
-
-// The grid points of recently filtered studies: a study's grid points never change once it is
-// stored, and listing them costs a pass over its cases. At most kStudies studies are kept.
-class GridPointCache {
- public:
-  using Points = std::vector<std::pair<std::string, nlohmann::ordered_json>>;
-  std::shared_ptr<const Points> points(Store& store, std::int64_t study_id) {
-    {
-      std::lock_guard lock(mutex_);
-      if (const auto found = cache_.find(study_id); found != cache_.end()) return found->second;
-    }
-    auto points = std::make_shared<const Points>(store.grid_points(study_id));
-    std::lock_guard lock(mutex_);
-    if (cache_.size() >= kStudies) cache_.clear();
-    cache_[study_id] = points;
-    return points;
-  }
-
- private:
-  static constexpr std::size_t kStudies = 32;
-  std::mutex mutex_;
-  std::map<std::int64_t, std::shared_ptr<const Points>> cache_;
-};
 
 nlohmann::ordered_json moments_json(const Moments& moments) {
   const auto estimate = mean_interval(moments.count, moments.sum, moments.sum_of_squares);
@@ -134,48 +109,51 @@ nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, c
 
 }  // namespace
 
-void register_dashboard_endpoints(httplib::Server& server, Store& store, const ServiceOptions& options,
-                                  std::shared_ptr<DataFileChecker> checker) {
-  auto grid = std::make_shared<GridPointCache>();
-  server.Get("/api/progress", guarded([&store](const httplib::Request& request, httplib::Response& response) {
-    PageRequest page;
-    page.limit = unsigned_parameter(request, "limit", 20, kMaxProgressPage);
-    page.offset = unsigned_parameter(request, "offset", 0, std::size_t{1} << 40);
-    const auto studies = store.studies(page);
-    nlohmann::ordered_json items = nlohmann::ordered_json::array();
-    for (const auto& study : studies.items) {
-      auto json = to_json(study, false);
-      json["progress"] = to_json(*store.progress(study.id));
-      items.push_back(std::move(json));
-    }
-    send_json(response, 200, {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
-  }));
-  // The grid statistics are one pass over the study's results: kept serialised until its versions move.
-  const auto grids = std::make_shared<VersionedDocuments>(
-      [&store](std::int64_t study) { return grid_json(study, store.grid_statistics(study)).dump(); });
-  server.Get(R"(/api/studies/(\d+)/grid)", guarded([&store, grids](const httplib::Request& request, httplib::Response& response) {
-    grids->serve(store, path_id(request), request, response);
-  }));
-  server.Get(R"(/api/studies/(\d+)/case-table)",
-             guarded([&store, &options, grid](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               const auto filter = case_filter(request, store, *grid, study.id);
-               const auto page = page_request(request, options);
-               const auto cases = store.cases(study.id, filter, page);
-               nlohmann::ordered_json items = nlohmann::ordered_json::array();
-               for (const auto& record : cases.items) items.push_back(case_row_json(record));
-               send_json(response, 200,
-                         {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
-             }));
-  server.Get(R"(/api/studies/(\d+)/fragment-sizes)",
-             guarded([&store, grid](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               send_json(response, 200, fragment_sizes_json(store, *grid, study, AxisFilter(request)));
-             }));
-  server.Get(R"(/api/cases/(\d+)/data)",
-             guarded([&store, &options, checker](const httplib::Request& request, httplib::Response& response) {
-               send_case_file(response, store, path_id(request), options.data_directory, *checker);
-             }));
+std::string grid_document(Store& store, std::int64_t study) {
+  return grid_json(study, store.grid_statistics(study)).dump();
 }
+
+namespace endpoint {
+
+void list_study_progress(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  PageRequest page;
+  page.limit = unsigned_parameter(request, "limit", 20, kMaxProgressPage);
+  page.offset = unsigned_parameter(request, "offset", 0, std::size_t{1} << 40);
+  const auto studies = e.store.studies(page);
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const auto& study : studies.items) {
+    auto json = to_json(study, false);
+    json["progress"] = to_json(*e.store.progress(study.id));
+    items.push_back(std::move(json));
+  }
+  send_json(response, 200,
+            {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+}
+
+void get_study_grid(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  e.grids.serve(e.store, path_id(request), request, response);
+}
+
+void get_study_case_table(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  const auto filter = case_filter(request, e.store, e.grid_points, study.id);
+  const auto page = page_request(request, e.options);
+  const auto cases = e.store.cases(study.id, filter, page);
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const auto& record : cases.items) items.push_back(case_row_json(record));
+  send_json(response, 200,
+            {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+}
+
+void get_study_fragment_sizes(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  send_json(response, 200, fragment_sizes_json(e.store, e.grid_points, study, AxisFilter(request)));
+}
+
+void get_case_data(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  send_case_file(response, e.store, path_id(request), e.options.data_directory, e.data_files);
+}
+
+}  // namespace endpoint
 
 }  // namespace aerobreak

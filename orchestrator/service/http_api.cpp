@@ -2,44 +2,23 @@
 
 #include <httplib.h>
 
-#include <memory>
 #include <optional>
 #include <string>
 
 #include "engine/core/version.hpp"
 #include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
-#include "orchestrator/service/correlation_endpoints.hpp"
-#include "orchestrator/service/dashboard_endpoints.hpp"
 #include "orchestrator/service/error_answers.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/service/json_body.hpp"
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
+#include "orchestrator/service/routes.hpp"
 #include "orchestrator/service/study_submission.hpp"
-#include "orchestrator/service/search_endpoints.hpp"
-#include "orchestrator/service/summary_endpoints.hpp"
-#include "orchestrator/service/table_endpoints.hpp"
-#include "orchestrator/service/web_endpoints.hpp"
+#include "orchestrator/service/study_templates.hpp"
 
 namespace aerobreak {
 namespace {
-
-void submit_study(const httplib::Request& request, httplib::Response& response, Store& store, Scheduler* scheduler,
-                  const ServiceOptions& options, DataFileChecker& checker) {
-  nlohmann::ordered_json document = parse_json_body(request.body);
-  try {
-    const Study study = parse_study(std::move(document), options.study_limits);
-    StudySubmission submission = make_submission(study);
-    recompute_lost_data_files(submission, store, checker);
-    const auto receipt = store.submit_study(submission);
-    if (scheduler) scheduler->wake();
-    response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
-    send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));
-  } catch (const StudyError& error) {
-    throw RequestError{422, "the study is not valid", violations_json(error.violations())};
-  }
-}
 
 nlohmann::ordered_json storage_fault_json(const std::optional<StorageFaultStatus>& fault) {
   if (!fault) return nullptr;
@@ -77,89 +56,107 @@ nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
 
 }  // namespace
 
-void register_http_api(httplib::Server& server, Store& store, Scheduler* scheduler, const ServiceOptions& options) {
+namespace endpoint {
+
+void get_health(Endpoints& e, const httplib::Request&, httplib::Response& response) {
+  send_json(response, 200, health(e.store, e.scheduler));
+}
+
+void get_openapi(Endpoints&, const httplib::Request&, httplib::Response& response) {
+  response.set_content(std::string(openapi_text()), "application/json");
+}
+
+void get_templates(Endpoints&, const httplib::Request&, httplib::Response& response) {
+  send_json(response, 200, study_templates_json());
+}
+
+void list_studies(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto page = page_request(request, e.options);
+  const auto studies = e.store.studies(page);
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const auto& study : studies.items) items.push_back(to_json(study, false));
+  send_json(response, 200,
+            {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+}
+
+void submit_study(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  nlohmann::ordered_json document = parse_json_body(request.body);
+  try {
+    const Study study = parse_study(std::move(document), e.options.study_limits);
+    StudySubmission submission = make_submission(study);
+    recompute_lost_data_files(submission, e.store, e.data_files);
+    const auto receipt = e.store.submit_study(submission);
+    if (e.scheduler) e.scheduler->wake();
+    response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
+    send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));
+  } catch (const StudyError& error) {
+    throw RequestError{422, "the study is not valid", violations_json(error.violations())};
+  }
+}
+
+void get_study(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  auto json = to_json(study, true);
+  json["progress"] = to_json(*e.store.progress(study.id));
+  send_json(response, 200, json);
+}
+
+void list_study_cases(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  std::optional<CaseStatus> status;
+  if (request.has_param("status")) {
+    status = parse_case_status(request.get_param_value("status"));
+    if (!status) throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
+  }
+  const auto page = page_request(request, e.options);
+  send_json(response, 200, page_json(e.store.cases(study.id, status, page), page));
+}
+
+void list_study_results(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  std::optional<std::string> outcome;
+  if (request.has_param("outcome")) {
+    outcome = request.get_param_value("outcome");
+    if (*outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
+      throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
+  }
+  const auto page = page_request(request, e.options);
+  send_json(response, 200, page_json(e.store.results(study.id, outcome, page), page));
+}
+
+void cancel_study(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
+  if (!e.store.cancel_study(study.id))
+    throw RequestError{409, "study " + std::to_string(study.id) + " is already cancelled"};
+  send_json(response, 200, to_json(*e.store.progress(study.id)));
+}
+
+void get_case(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto detail = e.store.case_detail(path_id(request));
+  if (!detail) throw RequestError{404, "no case " + std::string(request.matches[1])};
+  std::optional<DataFileCheck> check;
+  if (detail->data_file) check = e.data_files.check(*detail->data_file, detail->data_file_digest);
+  send_json(response, 200, to_json(*detail, check));
+}
+
+void list_jobs(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto limit = unsigned_parameter(request, "limit", 20, e.options.max_page_size);
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const auto& job : e.store.jobs(limit)) items.push_back(to_json(job));
+  send_json(response, 200, {{"items", items}});
+}
+
+}  // namespace endpoint
+
+void register_http_api(httplib::Server& server, Endpoints& endpoints) {
+  const ServiceOptions& options = endpoints.options;
   server.set_pre_routing_handler([&options](const httplib::Request& request, httplib::Response& response) {
     return check_request(request, response, options);
   });
   server.set_error_handler(answer_error);
   server.set_exception_handler(answer_exception);
   if (options.access_log) server.set_logger(access_logger(options.access_log));
-
-  server.Get("/api/health", guarded([&store, scheduler](const httplib::Request&, httplib::Response& response) {
-    send_json(response, 200, health(store, scheduler));
-  }));
-  server.Get("/api/openapi.json", [](const httplib::Request&, httplib::Response& response) {
-    response.set_content(std::string(openapi_text()), "application/json");
-  });
-  server.Get("/api/studies", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-    const auto page = page_request(request, options);
-    const auto studies = store.studies(page);
-    nlohmann::ordered_json items = nlohmann::ordered_json::array();
-    for (const auto& study : studies.items) items.push_back(to_json(study, false));
-    send_json(response, 200,
-              {{"total", studies.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
-  }));
-  auto checker = std::make_shared<DataFileChecker>();
-  server.Post("/api/studies",
-              guarded([&store, scheduler, &options, checker](const httplib::Request& request, httplib::Response& response) {
-                submit_study(request, response, store, scheduler, options, *checker);
-              }));
-  server.Get(R"(/api/studies/(\d+))", guarded([&store](const httplib::Request& request, httplib::Response& response) {
-    const auto study = existing_study(store, path_id(request));
-    auto json = to_json(study, true);
-    json["progress"] = to_json(*store.progress(study.id));
-    send_json(response, 200, json);
-  }));
-  server.Get(R"(/api/studies/(\d+)/cases)",
-             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               std::optional<CaseStatus> status;
-               if (request.has_param("status")) {
-                 status = parse_case_status(request.get_param_value("status"));
-                 if (!status)
-                   throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
-               }
-               const auto page = page_request(request, options);
-               send_json(response, 200, page_json(store.cases(study.id, status, page), page));
-             }));
-  server.Get(R"(/api/studies/(\d+)/results)",
-             guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-               const auto study = existing_study(store, path_id(request));
-               std::optional<std::string> outcome;
-               if (request.has_param("outcome")) {
-                 outcome = request.get_param_value("outcome");
-                 if (*outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
-                   throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
-               }
-               const auto page = page_request(request, options);
-               send_json(response, 200, page_json(store.results(study.id, outcome, page), page));
-             }));
-  register_summary_endpoints(server, store);
-  register_correlation_endpoints(server, store);
-  register_search_endpoints(server, store);
-  register_table_endpoints(server, store);
-  server.Post(R"(/api/studies/(\d+)/cancel)",
-              guarded([&store](const httplib::Request& request, httplib::Response& response) {
-                const auto study = existing_study(store, path_id(request));
-                if (!store.cancel_study(study.id))
-                  throw RequestError{409, "study " + std::to_string(study.id) + " is already cancelled"};
-                send_json(response, 200, to_json(*store.progress(study.id)));
-              }));
-  server.Get(R"(/api/cases/(\d+))", guarded([&store, checker](const httplib::Request& request, httplib::Response& response) {
-    const auto detail = store.case_detail(path_id(request));
-    if (!detail) throw RequestError{404, "no case " + std::string(request.matches[1])};
-    std::optional<DataFileCheck> check;
-    if (detail->data_file) check = checker->check(*detail->data_file, detail->data_file_digest);
-    send_json(response, 200, to_json(*detail, check));
-  }));
-  server.Get("/api/jobs", guarded([&store, &options](const httplib::Request& request, httplib::Response& response) {
-    const auto limit = unsigned_parameter(request, "limit", 20, options.max_page_size);
-    nlohmann::ordered_json items = nlohmann::ordered_json::array();
-    for (const auto& job : store.jobs(limit)) items.push_back(to_json(job));
-    send_json(response, 200, {{"items", items}});
-  }));
-  register_dashboard_endpoints(server, store, options, checker);
-  register_web_endpoints(server, options);
+  register_routes(server, endpoints);
 }
 
 }  // namespace aerobreak

@@ -1,8 +1,64 @@
 #include "orchestrator/service/http_support.hpp"
 
 #include <charconv>
+#include <memory>
+#include <stdexcept>
+
+#include <zlib.h>
 
 namespace aerobreak {
+namespace {
+
+// Answers shorter than this go out uncompressed: compressing them saves less than it costs.
+constexpr std::size_t kCompressFromBytes = 1024;
+
+// The content types cpp-httplib would compress (text, JSON, JavaScript, XML, SVG).
+bool compressible(const std::string& content_type) {
+  if (content_type.rfind("text/", 0) == 0) return content_type.rfind("text/event-stream", 0) != 0;
+  for (const char* kind : {"json", "javascript", "xml", "svg"})
+    if (content_type.find(kind) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+std::string gzip(const std::string& text) {
+  z_stream stream{};
+  if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw std::runtime_error("zlib: deflateInit2 failed");
+  std::string out(deflateBound(&stream, static_cast<uLong>(text.size())), '\0');
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+  stream.avail_in = static_cast<uInt>(text.size());
+  stream.next_out = reinterpret_cast<Bytef*>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  const int status = deflate(&stream, Z_FINISH);
+  out.resize(stream.total_out);
+  deflateEnd(&stream);
+  if (status != Z_STREAM_END) throw std::runtime_error("zlib: deflate did not finish");
+  return out;
+}
+
+bool accepts_gzip(const httplib::Request& request) {
+  return request.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
+}
+
+void compress_answer(const httplib::Request& request, httplib::Response& response) {
+  // Error answers keep their body, where the service's error handler looks for it (error_answers.cpp).
+  if (response.status >= 400 || response.body.empty() || !request.ranges.empty() || response.has_header("Content-Encoding"))
+    return;
+  const std::string content_type = response.get_header_value("Content-Type");
+  if (!compressible(content_type)) return;
+  const bool gzipped = response.body.size() >= kCompressFromBytes && accepts_gzip(request);
+  auto body = std::make_shared<const std::string>(gzipped ? gzip(response.body) : std::move(response.body));
+  response.body.clear();
+  response.headers.erase("Content-Type");
+  response.set_header("Vary", "Accept-Encoding");
+  if (gzipped) response.set_header("Content-Encoding", "gzip");
+  response.set_content_provider(body->size(), content_type.c_str(),
+                                [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                  return sink.write(body->data() + offset, length);
+                                });
+}
 
 void send_json(httplib::Response& response, int status, const nlohmann::ordered_json& body) {
   response.status = status;

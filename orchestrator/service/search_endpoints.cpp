@@ -33,21 +33,22 @@ Json search_groups_json(const std::vector<SearchGroupRecord>& groups) {
   return out;
 }
 
-void register_search_endpoints(httplib::Server& server, Store& store) {
-  server.Get(R"(/api/studies/(\d+)/search)",
-             guarded([&store](const httplib::Request& request, httplib::Response& response) {
-               const auto id = path_id(request);
-               const auto study = store.study(id);
-               if (!study) throw RequestError{404, "no study " + std::to_string(id)};
-               if (!study->document.contains("search"))
-                 throw RequestError{404, "study " + std::to_string(id) + " has no adaptive search"};
-               const auto progress = store.progress(id);
-               send_json(response, 200,
-                         {{"study", id},
-                          {"search", study->document["search"]},
-                          {"complete", progress && progress->complete},
-                          {"groups", search_groups_json(store.search_groups(id, true))}});
-             }));
+namespace endpoint {
+
+void get_study_search(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto id = path_id(request);
+  const auto study = e.store.study(id);
+  if (!study) throw RequestError{404, "no study " + std::to_string(id)};
+  if (!study->document.contains("search"))
+    throw RequestError{404, "study " + std::to_string(id) + " has no adaptive search"};
+  const auto progress = e.store.progress(id);
+  send_json(response, 200,
+            {{"study", id},
+             {"search", study->document["search"]},
+             {"complete", progress && progress->complete},
+             {"groups", search_groups_json(e.store.search_groups(id, true))}});
 }
+
+}  // namespace endpoint
 
 }  // namespace aerobreak

@@ -1,9 +1,8 @@
 #pragma once
-#include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "orchestrator/store/store.hpp"
+#include "orchestrator/service/endpoints.hpp"
 
 namespace aerobreak {
 
@@ -11,8 +10,10 @@ namespace aerobreak {
 // 95 % intervals; with every round's record when the groups carry their history.
 nlohmann::ordered_json search_groups_json(const std::vector<SearchGroupRecord>& groups);
 
+namespace endpoint {
 // GET /api/studies/ID/search: the study's adaptive search (docs/ADAPTIVE.md), every round of
 // every group (404 for a study without a search).
-void register_search_endpoints(httplib::Server& server, Store& store);
+void get_study_search(Endpoints&, const httplib::Request&, httplib::Response&);
+}  // namespace endpoint
 
 }  // namespace aerobreak

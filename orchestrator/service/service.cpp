@@ -8,7 +8,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "orchestrator/scheduler/launcher.hpp"
 #include "orchestrator/service/bounded_server.hpp"
+#include "orchestrator/service/endpoints.hpp"
 #include "orchestrator/service/http_api.hpp"
 
 namespace aerobreak {
@@ -19,7 +21,13 @@ bool is_loopback_host(const std::string& host) {
   return ::inet_pton(AF_INET, host.c_str(), &address) == 1 && (ntohl(address.s_addr) >> 24) == 127;
 }
 
-std::filesystem::path default_web_directory() { return AEROBREAK_WEB_DIR; }
+std::filesystem::path default_web_directory() {
+  const std::filesystem::path installed =
+      (current_executable().parent_path() / AEROBREAK_INSTALLED_WEB_DIR).lexically_normal();
+  for (const auto& folder : {installed, std::filesystem::path(AEROBREAK_WEB_DIR)})
+    if (std::filesystem::is_regular_file(folder / "index.html")) return folder;
+  return installed;  // where a page was looked for first, for the message that there is none
+}
 
 Service::Service(Store& store, Scheduler* scheduler, ServiceOptions options)
     : store_(store), scheduler_(scheduler), options_(std::move(options)) {}
@@ -34,7 +42,8 @@ void Service::start() {
   server_->set_payload_max_length(options_.max_body_bytes);
   // Small JSON answers: without TCP_NODELAY, Nagle's algorithm and delayed ACKs add ~40 ms to each.
   server_->set_tcp_nodelay(true);
-  register_http_api(*server_, store_, scheduler_, options_);
+  endpoints_ = std::make_unique<Endpoints>(store_, scheduler_, options_);
+  register_http_api(*server_, *endpoints_);
   errno = 0;
   port_ = options_.port == 0 ? server_->bind_to_any_port(options_.host)
                              : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);

@@ -19,6 +19,8 @@ class Server;
 
 namespace aerobreak {
 
+struct Endpoints;
+
 struct ServiceOptions {
   std::string host = "127.0.0.1";
   int port = 8080;  // 0: any free port (see Service::port())
@@ -42,7 +44,11 @@ struct ServiceOptions {
   std::filesystem::path data_directory;
 };
 
-// The source tree's web/ folder, compiled in (the default of --web-dir).
+// The dashboard's folder when --web-dir is not given: the first of these that holds index.html,
+//   1. ../share/aerobreak/web beside the running executable's bin/ (an install, cmake/Install.cmake,
+//      wherever its prefix was moved),
+//   2. the source tree's web/ this binary was built from (a build run in place, build/aerobreak);
+// the first when neither does (the service then says it found no page there).
 std::filesystem::path default_web_directory();
 
 // True for 127.0.0.0/8, ::1 and "localhost".
@@ -68,6 +74,7 @@ class Service {
   Store& store_;
   Scheduler* scheduler_;
   ServiceOptions options_;
+  std::unique_ptr<Endpoints> endpoints_;  // what the server's handlers answer with: outlives it
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   std::atomic<bool> listening_ended_{false};  // the listening thread has returned

@@ -18,11 +18,15 @@ RequestError request_error(const ExportError& error) {
           nlohmann::ordered_json::array({{{"parameter", error.field}, {"message", error.what()}}})};
 }
 
-void send_table(const httplib::Request& request, httplib::Response& response, Store& store) {
-  const auto study = existing_study(store, path_id(request));
+}  // namespace
+
+namespace endpoint {
+
+void get_study_table(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  const auto study = existing_study(e.store, path_id(request));
   try {
     const auto export_request = parse_export_request(query_parameters(request));
-    const auto table = export_lookup_table(store, study, export_request);
+    const auto table = export_lookup_table(e.store, study, export_request);
     auto rendered = render_table(table, export_request, study.id);
     response.set_header("Content-Disposition", "attachment; filename=\"" + rendered.file_name + "\"");
     response.set_content(std::move(rendered.content), rendered.content_type);
@@ -31,12 +35,5 @@ void send_table(const httplib::Request& request, httplib::Response& response, St
   }
 }
 
-}  // namespace
-
-void register_table_endpoints(httplib::Server& server, Store& store) {
-  server.Get(R"(/api/studies/(\d+)/tables)", guarded([&store](const httplib::Request& request, httplib::Response& response) {
-               send_table(request, response, store);
-             }));
-}
-
+}  // namespace endpoint
 }  // namespace aerobreak

@@ -10,6 +10,8 @@
 
 namespace aerobreak {
 
+const char* const kDashboardFiles = R"(/|/[A-Za-z0-9_.\-/]+\.(html|js|css|svg|png))";
+
 const char* const kDashboardContentSecurityPolicy =
     "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; connect-src 'self'; "
     "font-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
@@ -18,10 +20,6 @@ namespace {
 
 // Page files are small; a larger one is not what the web folder should hold.
 constexpr std::uintmax_t kMaxAssetBytes = 8u << 20;
-
-// Paths that can name a page file: "/" and names ending in one of the served extensions, so that no
-// /api/ route is shadowed, whatever the order of registration.
-constexpr const char* kAssetRoute = R"(/|/[A-Za-z0-9_.\-/]+\.(html|js|css|svg|png))";
 
 void send_asset(httplib::Response& response, const WebAsset& asset) {
   std::error_code error;
@@ -39,21 +37,23 @@ void send_asset(httplib::Response& response, const WebAsset& asset) {
 
 }  // namespace
 
-void register_web_endpoints(httplib::Server& server, const ServiceOptions& options) {
-  if (options.web_directory.empty()) return;
-  auto assets = std::make_shared<const WebAssets>(list_web_assets(options.web_directory));
+std::shared_ptr<const WebAssets> load_web_assets(const std::filesystem::path& web_directory) {
+  if (web_directory.empty()) return nullptr;
+  auto assets = std::make_shared<const WebAssets>(list_web_assets(web_directory));
   if (assets->by_path.empty())
-    std::cerr << "aerobreak: no dashboard: " << options.web_directory.string() << " holds no page (--web-dir)\n";
+    std::cerr << "aerobreak: no dashboard: " << web_directory.string() << " holds no page (--web-dir)\n";
   for (const auto& file : assets->missing)
     std::cerr << "aerobreak: the dashboard lacks " << file << " (run scripts/setup.sh, which runs npm ci in web/)\n";
-  const std::string folder = options.web_directory.string();
-  server.Get(kAssetRoute, guarded([assets, folder](const httplib::Request& request, httplib::Response& response) {
-    const auto found = assets->by_path.find(request.path);
-    if (found == assets->by_path.end())
-      throw RequestError{404, request.path == "/" ? "no dashboard in " + folder + " (--web-dir)"
-                                                  : "no dashboard file " + request.path};
-    send_asset(response, found->second);
-  }));
+  return assets;
+}
+
+void endpoint::get_dashboard_file(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
+  if (!e.web_assets) throw RequestError{404, "no dashboard: this service serves the API only (--web-dir \"\")"};
+  const auto found = e.web_assets->by_path.find(request.path);
+  if (found == e.web_assets->by_path.end())
+    throw RequestError{404, request.path == "/" ? "no dashboard in " + e.options.web_directory.string() + " (--web-dir)"
+                                                : "no dashboard file " + request.path};
+  send_asset(response, found->second);
 }
 
 }  // namespace aerobreak

@@ -2,7 +2,11 @@
 
 #include <hdf5.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 
@@ -15,9 +19,17 @@
 namespace aerobreak {
 namespace {
 
+// "<path>.<host>.<pid>.<n>.partial": a name of this writer's own. An attempt whose rank was given
+// up (stopped, or its node cut off) may still hold its file open, with HDF5's lock on it; the
+// case's next attempt, on another rank, must not need that name (seen with a rank stopped by
+// SIGSTOP: the re-run failed on the lock, as a storage fault, for as long as the rank stayed
+// stopped: tests/slurm/run_slurm_cluster.sh).
 std::filesystem::path partial_path_of(const std::filesystem::path& path) {
+  static std::atomic<unsigned> writers{0};
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) != 0) std::strcpy(host, "host");
   std::filesystem::path partial = path;
-  partial += ".partial";
+  partial += "." + std::string(host) + "." + std::to_string(::getpid()) + "." + std::to_string(writers++) + ".partial";
   return partial;
 }
 

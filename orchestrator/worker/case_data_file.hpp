@@ -25,9 +25,10 @@ class DataFileError : public std::runtime_error {
 //   particles/all/fragment    step [1], time [1], value [1][N] (int32, the index into the result's
 //                             /fragments list, largest first; sampled at the last frame only)
 //
-// The file is written as "<path>.partial" (parent directories created) and renamed to `path` by
-// commit(), so that `path` only ever names a complete file; an uncommitted file is removed. Every
-// failure to create, write or rename it throws DataFileError.
+// The file is written under a name of its own beside `path`, "<path>.<host>.<pid>.<n>.partial"
+// (parent directories created), and renamed to `path` by commit(), so that `path` only ever names
+// a complete file and two attempts at one case never write the same file; an uncommitted file is
+// removed. Every failure to create, write or rename it throws DataFileError.
 class CaseDataFile {
  public:
   explicit CaseDataFile(std::filesystem::path path);

@@ -31,8 +31,8 @@ struct CaseRunOutcome {
 // runs to its end between two notes, so a case whose relaxation alone takes longer than its wall
 // time overruns it by that much.
 //
-// A non-empty data_file receives the bulk arrays (case_data_file.hpp): written under
-// "<data_file>.partial", parent directories created, and renamed when complete; then its size and
+// A non-empty data_file receives the bulk arrays (case_data_file.hpp): written under a name of its
+// own ending in ".partial", parent directories created, and renamed when complete; then its size and
 // SHA-256 are taken, so that the store can tell later whether the file is still the one written.
 //
 // Throws CaseError for an invalid document, WallTimeExceeded, DataFileError when the data file

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
+#include <utility>
 
 namespace aerobreak {
 
@@ -14,6 +14,14 @@ void send_text(int destination, int tag, std::string_view text) {
     throw std::length_error("MPI message of " + std::to_string(text.size()) + " bytes is too long");
   MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, destination, tag, MPI_COMM_WORLD);
 }
+
+PendingSend::PendingSend(int destination, int tag, std::string text) : text_(std::move(text)) {
+  if (text_.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("MPI message of " + std::to_string(text_.size()) + " bytes is too long");
+  MPI_Isend(text_.data(), static_cast<int>(text_.size()), MPI_CHAR, destination, tag, MPI_COMM_WORLD, &request_);
+}
+
+PendingSend::~PendingSend() { MPI_Wait(&request_, MPI_STATUS_IGNORE); }
 
 std::optional<TextMessage> try_receive_text(int source, int tag) {
   int arrived = 0;
@@ -32,13 +40,6 @@ std::optional<TextMessage> try_receive_text(int source, int tag) {
   MPI_Recv(message.text.data(), length, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
   return message;
-}
-
-TextMessage wait_for_text(int source) {
-  while (true) {
-    if (auto message = try_receive_text(source, MPI_ANY_TAG)) return std::move(*message);
-    std::this_thread::sleep_for(kPollPause);
-  }
 }
 
 }  // namespace aerobreak

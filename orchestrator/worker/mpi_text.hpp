@@ -1,4 +1,6 @@
 #pragma once
+#include <mpi.h>
+
 #include <chrono>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@ enum MessageTag : int {
   kTagCase = 1,    // rank 0 -> worker rank: a serialized case assignment
   kTagStop = 2,    // rank 0 -> worker rank: no more cases (empty)
   kTagAnswer = 3,  // worker rank -> rank 0: the serialized result or failed message
+  kTagAlive = 4,   // worker rank -> rank 0: still running its case (empty), every kHeartbeatInterval
 };
 
 // How long a waiting rank sleeps between two looks for a message. Open MPI's blocking receive
@@ -28,11 +31,24 @@ struct TextMessage {
 
 void send_text(int destination, int tag, std::string_view text);
 
+// A text on its way to one rank that the sender does not wait for: a rank stopped before it takes
+// its message (hung, or on a node that is lost) must not hold the sender, as a blocking send would
+// even for a short message. The text is kept here until the receiver has it; destroying a send
+// waits for that, so a sender destroys one only when its receiver has answered or the job aborts.
+class PendingSend {
+ public:
+  PendingSend(int destination, int tag, std::string text);
+  ~PendingSend();
+  PendingSend(const PendingSend&) = delete;
+  PendingSend& operator=(const PendingSend&) = delete;
+
+ private:
+  const std::string text_;
+  MPI_Request request_ = MPI_REQUEST_NULL;
+};
+
 // The next message from `source` with `tag` (MPI_ANY_SOURCE, MPI_ANY_TAG allowed) if one has
 // arrived; never blocks.
 std::optional<TextMessage> try_receive_text(int source, int tag);
-
-// Waits for the next message from `source` with any tag, sleeping kPollPause between looks.
-TextMessage wait_for_text(int source);
 
 }  // namespace aerobreak

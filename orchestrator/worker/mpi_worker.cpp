@@ -14,7 +14,7 @@
 namespace aerobreak {
 namespace {
 
-void run_rank(const MpiSession& mpi) {
+void run_rank(const MpiSession& mpi, std::chrono::milliseconds silence_limit) {
   std::vector<std::string> hosts = mpi.gather_hosts();
   if (mpi.rank() != 0) {
     send_stdout_to_stderr();
@@ -23,15 +23,15 @@ void run_rank(const MpiSession& mpi) {
   }
   ProtocolOutput out;
   out.send(ready_message(mpi.size(), hosts, ::getpid(), version()));
-  Broker(mpi, out, std::move(hosts)).run();
+  Broker(mpi, out, std::move(hosts), silence_limit).run();
 }
 
 }  // namespace
 
-void run_worker_job() {
+void run_worker_job(std::chrono::milliseconds silence_limit) {
   const MpiSession mpi;
   try {
-    run_rank(mpi);
+    run_rank(mpi, silence_limit);
   } catch (const std::exception& e) {
     // One rank cannot go on: the job as a whole cannot keep its protocol, so it ends at once.
     mpi.abort(e.what());

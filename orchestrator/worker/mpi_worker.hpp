@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 
 namespace aerobreak {
 
@@ -7,7 +8,8 @@ namespace aerobreak {
 // announces the job ("ready"), brokers cases from stdin to the ranks and runs cases itself in a
 // second thread; ranks >= 1 run the cases rank 0 hands them. Returns after a stop message, once
 // every case is answered and MPI is finalised; stdin ending without a stop, or a failure of the
-// job itself, aborts the whole job instead (MPI_Abort, exit status 1).
-void run_worker_job();
+// job itself, aborts the whole job instead (MPI_Abort, exit status 1). A busy rank silent for
+// `silence_limit` is given up (broker.hpp).
+void run_worker_job(std::chrono::milliseconds silence_limit);
 
 }  // namespace aerobreak

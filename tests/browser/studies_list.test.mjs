@@ -1,22 +1,14 @@
 // The studies list in real Chromium against a real `aerobreak serve`: a submitted study appears,
 // its progress advances without a reload while it runs, and a study whose name and description
 // are HTML is shown as text (inert).
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { Service, launchBrowser, openPage, smallStudy, until, withScreenshot } from './support.mjs';
+import { openPage, serviceAndBrowser, smallStudy, until, withScreenshot } from './support.mjs';
 
 let service;
 let browser;
 
-before(async () => {
-  service = await Service.start();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await service?.stop();
-});
+serviceAndBrowser((started) => ({ service, browser } = started));
 
 test('the list shows a submitted study and its progress advances without a reload', async () => {
   const page = await openPage(browser, service);

@@ -28,21 +28,42 @@ after(async () => {
   await service?.stop();
 });
 
-// What a chart holds: its curves (label, points) and, from uPlot's own data, the non-null values of
-// each series.
+// What a chart holds: its curves (label, style, points), from uPlot's own data the non-null values
+// of each series, the whiskers drawn (clipped intervals), the scales' ranges, the ticks and labels
+// of each axis as the chart's options make them, the width of the y label against the plot's
+// height, and the legend's entries with their swatch styles.
 function chartContents(page, id) {
   return page.evaluate((chartId) => {
     const chart = document.getElementById(chartId);
     const u = chart.uplot;
+    const axis = (i) => {
+      if (!u) return null;
+      const scale = u.scales[i === 0 ? 'x' : 'y'];
+      const ticks = u.axes[i].splits ? u.axes[i].splits(u, i, scale.min, scale.max) : [];
+      return { label: u.axes[i].label, ticks, tickLabels: u.axes[i].values(u, ticks), range: [scale.min, scale.max] };
+    };
+    const labelWidth = () => {
+      const context = document.createElement('canvas').getContext('2d');
+      context.font = u.axes[1].labelFont[0];
+      return context.measureText(u.axes[1].label).width;
+    };
     return {
-      curves: chart.curves.map((curve) => ({ label: curve.label, fit: curve.fit, dashed: curve.dashed,
+      curves: chart.curves.map((curve) => ({ label: curve.label, fit: curve.fit, style: curve.style,
         points: curve.points.map((p) => [p.x, p.y]), band: curve.points.map((p) => [p.lo, p.hi]) })),
       seriesLabels: u ? u.series.slice(1).map((s) => s.label) : [],
       nonNull: u ? u.data.slice(1).map((column) => column.filter((v) => v !== null).length) : [],
-      legend: chart.querySelectorAll('.legend li').length,
+      whiskers: (chart.whiskers || []).map((w) => ({ label: w.label, lo: w.lo.filter((v) => v !== null),
+        hi: w.hi.filter((v) => v !== null) })),
+      x: axis(0), y: axis(1), yLabelWidth: u ? labelWidth() : 0, plotHeight: u ? u.bbox.height / devicePixelRatio : 0,
+      legend: [...chart.querySelectorAll('.legend li')].map((li) => ({ text: li.textContent, group: li.dataset.group,
+        swatch: li.querySelector('.swatch').className })),
     };
   }, id);
 }
+
+// Every whisker of a chart lies within [low, high].
+const whiskersWithin = (chart, [low, high]) => chart.whiskers.every((w) => [...w.lo,
+  ...w.hi].every((v) => v >= low && v <= high));
 
 async function openStudy(page, search = '') {
   await page.goto(`${service.origin}/?study=${studyId}${search}`);
@@ -74,11 +95,43 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     // The measured curves come first; the fitted ones and the small-strain rings (tested below) after.
     const measured = measuredCurves(probability);
     assert.equal(measured.length, 4);
-    assert.ok(probability.legend >= 4);
-    // Each curve: its probability and the two bounds of its band, 3 values each.
-    assert.equal(probability.seriesLabels.filter((label) => !/\(fit|^outside/.test(label)).length, 12);
-    assert.deepEqual(probability.nonNull.slice(0, 12), Array(12).fill(3));
+    assert.ok(probability.legend.length >= 4);
+    // Each measured curve: one series of 3 points, its Wilson intervals as whiskers (not bands).
+    assert.equal(probability.seriesLabels.filter((label) => !/\(fit|^outside/.test(label)).length, 4);
+    assert.deepEqual(probability.nonNull.slice(0, 4), Array(4).fill(3));
     assert.deepEqual(sortedPoints(measured), sortedPoints(probabilities('break-up').map((points) => ({ points }))));
+    assert.equal(probability.whiskers.length, 4);
+    const wilson = serverCurves((row) => row.outcomes['break-up'].ci95).flat().map(([, ci]) => ci);
+    assert.deepEqual(probability.whiskers.flatMap((w) => w.lo.map((lo, i) => [lo, w.hi[i]])).sort(), wilson.sort());
+    // The legend: a key of the kinds (measured with whiskers), then one entry per group.
+    assert.deepEqual(probability.legend.filter((entry) => /\bmeasured\b/.test(entry.swatch)).map((entry) => entry.text),
+      ['measured, whiskers: 95 % interval']);
+    assert.equal(probability.legend.filter((entry) => entry.group !== undefined).length, 4);
+
+    // A click on a legend entry hides its series, another shows it again.
+    const shown = () => page.evaluate(() => document.getElementById('plot-probability').uplot.series[1].show);
+    const firstGroup = page.locator('#plot-probability .legend li[data-group]').first();
+    await firstGroup.click();
+    assert.equal(await shown(), false);
+    await firstGroup.click();
+    assert.equal(await shown(), true);
+
+    // Every plot along the speed spans the tested speeds, not whole decades, with a tick at each.
+    for (const id of ['plot-probability', 'plot-retained', 'plot-damage', 'plot-restitution']) {
+      const chart = await chartContents(page, id);
+      const [low, high] = chart.x.range;
+      assert.ok(low < kSpeeds[0] && low > kSpeeds[0] / 1.3 && high > kSpeeds[2] && high < kSpeeds[2] * 1.3,
+        `${id}: ${low}-${high}`);
+      assert.deepEqual(chart.x.ticks, kSpeeds, id);
+      assert.ok(chart.yLabelWidth <= chart.plotHeight, `${id}: the y label fits`);
+    }
+    // Bounded quantities: the axis keeps [0, 1] and the intervals are cut to it.
+    for (const id of ['plot-probability', 'plot-retained', 'plot-damage']) {
+      const chart = await chartContents(page, id);
+      assert.ok(chart.y.range[0] >= -0.05 && chart.y.range[0] < 0 && chart.y.range[1] > 1 && chart.y.range[1] <= 1.05,
+        id);
+      assert.ok(whiskersWithin(chart, [0, 1]), id);
+    }
 
     for (const id of ['plot-retained', 'plot-restitution']) {
       const chart = await chartContents(page, id);
@@ -94,6 +147,11 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     const critical = await chartContents(page, 'plot-critical');
     const measuredCritical = critical.curves.filter((curve) => !curve.label.startsWith('fitted'));
     assert.equal(measuredCritical.flatMap((c) => c.points).length, crossing.length);
+    // N has a tick and a label at each size; the y label fits beside the plot.
+    assert.deepEqual(critical.x.ticks, [8, 16]);
+    assert.deepEqual(critical.x.tickLabels, ['8', '16']);
+    assert.equal(critical.y.label, 'critical speed (d/τ)');
+    assert.ok(critical.yLabelWidth <= critical.plotHeight, 'the y label fits');
     assert.ok(crossing.length >= 1, 'break-up takes over somewhere between 0.005 and 0.3 d/tau');
     for (const [n, speed] of measuredCritical.flatMap((c) => c.points)) {
       assert.ok([8, 16].includes(n));
@@ -252,8 +310,16 @@ test('the correlations service: fitted curves with bands over the points, critic
       const measured = probability.curves.find((curve) => curve.label === drawn.label.replace(' (fit)', ''));
       assert.ok(measured && measured.points.length === 3, 'drawn over its measured curve');
     }
-    // Measured curves and their bands, fitted curves and their bands, in uPlot's data.
-    assert.equal(probability.seriesLabels.length, 12 + 3 * fitted.length + (probability.curves.length - 4 - fitted.length));
+    // Measured curves (their whiskers drawn apart), fitted curves with the two bounds of their bands,
+    // and the small-strain rings, in uPlot's data.
+    assert.equal(probability.seriesLabels.length,
+      4 + 3 * fitted.length + (probability.curves.length - 4 - fitted.length));
+    // The legend keeps fitted and measured apart: its key has a swatch of each, a fit's dashed over
+    // a band; each group's entry stands for both of its series.
+    const kinds = probability.legend.filter((entry) => entry.group === undefined && !entry.text.startsWith('outside'));
+    assert.deepEqual(kinds.map((entry) => entry.text), ['measured, whiskers: 95 % interval', 'fit, band: 95 % interval']);
+    assert.match(kinds[0].swatch, /\bmeasured\b.*\bwhiskers\b/);
+    assert.match(kinds[1].swatch, /\bfitted\b.*\bband\b/);
 
     const critical = await chartContents(page, 'plot-critical');
     const expected = [];
@@ -269,6 +335,16 @@ test('the correlations service: fitted curves with bands over the points, critic
       .flatMap((curve) => curve.points.map(([n], i) => [n, ...curve.band[i]]));
     assert.deepEqual(drawnV50.sort(), v50.sort());
     assert.equal(await page.locator('#correlations-table tbody tr').count(), 4);
+    // A warning for each critical value the data do not pin down: an estimate outside its fit's
+    // tested speeds, or an interval reaching more than 1.5 times beyond them; a mark in its cell.
+    const far = groupFits.flatMap((fit) => fit.critical.filter((value) => {
+      if (typeof value.estimate !== 'number') return false;
+      const { min, max } = fit.validity.impact_speed;
+      return value.estimate < min || value.estimate > max || value.ci95[0] < min / 1.5 || value.ci95[1] > max * 1.5;
+    }));
+    assert.ok(far.length > 0, 'three speeds, three replicates: some critical value is not pinned down');
+    assert.equal(await page.locator('#correlations-warnings li').count(), far.length);
+    assert.equal(await page.locator('#correlations-table .warning-mark').count(), far.length);
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
   });

@@ -7,6 +7,7 @@ import { mkdtempSync, readFileSync, existsSync, mkdirSync, writeFileSync, rmSync
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { setTimeout as sleep } from 'node:timers/promises';
+import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
 
 export const binary = process.env.AEROBREAK_BINARY;
@@ -29,12 +30,14 @@ export async function until(condition, { timeoutMs = 30000, intervalMs = 100, wh
 }
 
 export class Service {
-  // `arguments_`: more options of `aerobreak serve` (e.g. --token-file).
-  static async start(arguments_ = []) {
+  // `arguments_`: more options of `aerobreak serve` (e.g. --token-file); `store`: a store file to
+  // serve instead of a fresh one.
+  static async start(arguments_ = [], { store } = {}) {
     if (!binary || !existsSync(binary)) throw new Error('AEROBREAK_BINARY must name the built aerobreak');
     const directory = mkdtempSync(path.join(tmpdir(), 'aerobreak-browser-'));
     const portFile = path.join(directory, 'port');
-    const child = spawn(binary, ['serve', '--store', path.join(directory, 'store.sqlite'), '--port', '0', '--port-file', portFile,
+    const storeFile = store || path.join(directory, 'store.sqlite');
+    const child = spawn(binary, ['serve', '--store', storeFile, '--port', '0', '--port-file', portFile,
       '--ranks', '2', '--idle-shutdown', '1', ...arguments_], { stdio: ['ignore', 'ignore', 'pipe'] });
     let log = '';
     child.stderr.on('data', (chunk) => { log += chunk; });
@@ -118,6 +121,21 @@ export async function openPage(browser, service) {
 
 export function launchBrowser() {
   return chromium.launch({ executablePath: chromiumPath, args: chromiumArguments });
+}
+
+// A service with a fresh store and a browser, started before a file's tests (handed to
+// `started({ service, browser })`) and stopped after them.
+export function serviceAndBrowser(started) {
+  const shared = {};
+  before(async () => {
+    shared.service = await Service.start();
+    shared.browser = await launchBrowser();
+    started(shared);
+  });
+  after(async () => {
+    await shared.browser?.close();
+    await shared.service?.stop();
+  });
 }
 
 // Runs `body`; on failure writes a full-page screenshot named after the test, then fails.

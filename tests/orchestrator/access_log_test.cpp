@@ -7,7 +7,7 @@
 
 namespace aerobreak::testing {
 
-TEST_CASE("serve logs a line per request, none with --quiet (issue 15, access log)", "[service]") {
+TEST_CASE("serve logs a line per request, none with --quiet", "[service]") {
   ScratchDirectory scratch("access-log");
   {
     ServiceProcess service(scratch.path());

@@ -1,5 +1,6 @@
 // Connections that hold on (slow-loris, idle sockets, too many at once) cannot keep the service
-// from answering, and a port another service listens on is refused (issue 15 #4, #7). Real
+// from answering, and a port another service listens on is refused (docs/ORCHESTRATOR.md, "Limits"
+// and "What happens when things fail"). Real
 // `aerobreak serve`, real sockets, loopback only; every wait is bounded.
 #include <memory>
 #include <vector>
@@ -27,7 +28,7 @@ std::vector<std::unique_ptr<RawConnection>> open_connections(int port, int count
 
 }  // namespace
 
-TEST_CASE("Health answers while 8 connections dribble headers and 24 sockets sit idle, and both are cut off (issue 15 #4)",
+TEST_CASE("Health answers while 8 connections dribble headers and 24 sockets sit idle, and both are cut off",
           "[service][hostile]") {
   ScratchDirectory scratch("slow-loris");
   ServiceProcess service(scratch.path());
@@ -60,7 +61,7 @@ TEST_CASE("Health answers while 8 connections dribble headers and 24 sockets sit
   for (auto& connection : idle) CHECK(connection->closed_by_peer());
 }
 
-TEST_CASE("Connections beyond --max-connections get an immediate 503, and the service recovers (issue 15 #4)",
+TEST_CASE("Connections beyond --max-connections get an immediate 503, and the service recovers",
           "[service][hostile]") {
   ScratchDirectory scratch("max-connections");
   ServiceProcess service(scratch.path(), {"--max-connections", "4"});
@@ -78,7 +79,7 @@ TEST_CASE("Connections beyond --max-connections get an immediate 503, and the se
   CHECK(eventually([&] { return health_answers(service.port()); }, 5s));
 }
 
-TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port (issue 15 #7)",
+TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port",
           "[service][hostile]") {
   ScratchDirectory scratch("port-taken");
   ServiceProcess first(scratch.path());

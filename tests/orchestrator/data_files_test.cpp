@@ -1,6 +1,7 @@
-// Each case's HDF5 file is checked against the size and SHA-256 its worker recorded (issue 15
-// #11): a damaged or deleted file shows in the case, and submitting the study again recomputes it.
-// Also the receipt of a study submitted again when all its cases are done (issue 15 #12).
+// Each case's HDF5 file is checked against the size and SHA-256 its worker recorded
+// (docs/ORCHESTRATOR.md, Store, "Data files checked"): a damaged or deleted file shows in the case,
+// and submitting the study again recomputes it.
+// Also the receipt of a study submitted again when all its cases are done.
 #include <fstream>
 
 #include "tests/orchestrator/service_process.hpp"
@@ -35,7 +36,7 @@ void flip_a_byte(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting the study recomputes it (issue 15 #11)",
+TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting the study recomputes it",
           "[service]") {
   ScratchDirectory scratch("data-files");
   ServiceProcess service(scratch.path());

@@ -1,6 +1,9 @@
 // Progress, the outcome table and the grid statistics over real HTTP: served from the store's
 // summaries, the outcome table and the grid statistics with ETags that follow the study's results,
-// and 304 for a client that has them.
+// and 304 for a client that has them. A study's and a case's units; the study templates; answers
+// compressed with gzip (never Brotli per request).
+#include <fstream>
+
 #include "tests/orchestrator/service_process.hpp"
 
 namespace aerobreak::testing {
@@ -96,6 +99,68 @@ TEST_CASE("Progress, outcomes and grid of a study that does not exist are 404 wi
     const Answer answer = get(service, path);
     CHECK(answer.status == 404);
     CHECK(Json::parse(answer.body).at("error") == "no study 999");
+  }
+}
+
+TEST_CASE("A study's and a case's answers name their units, and the templates hold the default study", "[service]") {
+  ScratchDirectory scratch("read-endpoints-units");
+  ServiceProcess service(scratch.path());
+  const auto templates = service.get("/api/templates");
+  REQUIRE(templates.at("items").size() == 1);
+  const auto& item = templates.at("items")[0];
+  CHECK(item.at("name") == "default");
+  std::ifstream file(std::string(AEROBREAK_SOURCE_DIR) + "/studies/default.study.json");
+  auto expected = Json::parse(file);
+  expected.erase("$schema");
+  CHECK(item.at("document") == expected);
+
+  // The default study made one case: physical, in SI.
+  Json physical = item.at("document");
+  physical["name"] = "physical, one case";
+  physical["axes"] = {{"impact_speed", {{"values", {8}}}}, {"primaries", {{"values", {8}}}}};
+  physical["replicates"] = {{"count", 1}, {"seed", 1}};
+  const auto physical_id = submit(service, physical).at("id").get<std::int64_t>();
+  const auto reduced_id = submit(service, small_study("reduced", {0.01}, 1, 8)).at("id").get<std::int64_t>();
+  const Json si{{"system", "physical"}, {"length", "m"}, {"mass", "kg"}, {"time", "s"}, {"speed", "m/s"}, {"energy", "J"}};
+  const Json reduced{{"system", "reduced"}, {"length", "d"},     {"mass", "m"},
+                     {"time", "tau"},       {"speed", "d/tau"}, {"energy", "k_n d^2"}};
+  for (const auto& [id, units] : {std::pair{physical_id, si}, std::pair{reduced_id, reduced}}) {
+    INFO("study " << id);
+    const auto study = service.get("/api/studies/" + std::to_string(id));
+    CHECK(study.at("units") == units);
+    const auto cases = service.get("/api/studies/" + std::to_string(id) + "/cases");
+    const auto detail = service.get("/api/cases/" + std::to_string(cases.at("items")[0].at("id").get<std::int64_t>()));
+    CHECK(detail.at("units") == units);
+  }
+  for (const auto& study : service.get("/api/progress").at("items")) CHECK(study.at("units").at("system").is_string());
+  for (const auto id : {physical_id, reduced_id}) REQUIRE(eventually([&] { return study_complete(service, id); }, 120s));
+}
+
+TEST_CASE("Answers of 1 kB or more go out gzip-compressed for a client that accepts gzip, none with Brotli", "[service]") {
+  ScratchDirectory scratch("read-endpoints-gzip");
+  ServiceProcess service(scratch.path());
+  const auto plain = service.client().Get("/api/openapi.json", httplib::Headers{{"Accept-Encoding", "identity"}});
+  REQUIRE(plain);
+  REQUIRE(plain->body.size() > 1024);
+  CHECK(plain->get_header_value("Content-Encoding").empty());
+  for (const std::string path : {"/api/openapi.json", "/api/templates", "/"}) {
+    INFO(path);
+    const auto browser = service.client().Get(path.c_str(), httplib::Headers{{"Accept-Encoding", "gzip, deflate, br"}});
+    REQUIRE(browser);
+    CHECK(browser->status == 200);
+    CHECK(browser->get_header_value("Content-Encoding") == "gzip");
+    CHECK(browser->get_header_value("Vary") == "Accept-Encoding");
+    const auto brotli_only = service.client().Get(path.c_str(), httplib::Headers{{"Accept-Encoding", "br"}});
+    REQUIRE(brotli_only);
+    CHECK(brotli_only->get_header_value("Content-Encoding").empty());
+    CHECK(brotli_only->body == browser->body);  // the client inflated the gzip body
+  }
+  for (const std::string accepted : {"gzip", "gzip, deflate, br"}) {
+    INFO(accepted);
+    const auto small = service.client().Get("/api/health", httplib::Headers{{"Accept-Encoding", accepted}});
+    REQUIRE(small);
+    CHECK(small->body.size() < 1024);
+    CHECK(small->get_header_value("Content-Encoding").empty());
   }
 }
 

@@ -39,13 +39,14 @@ inline bool process_alive(pid_t pid) { return pid > 0 && ::kill(pid, 0) == 0; }
 
 class ServiceProcess {
  public:
-  // The store is DIRECTORY/store.sqlite unless `store_file` names another.
+  // The store is DIRECTORY/store.sqlite unless `store_file` names another; `program` is the
+  // aerobreak that serves (an installed one, say).
   ServiceProcess(const std::filesystem::path& directory, std::vector<std::string> extra_arguments = {},
-                 std::filesystem::path store_file = {})
+                 std::filesystem::path store_file = {}, const std::string& program = AEROBREAK_BINARY)
       : directory_(directory), store_file_(store_file.empty() ? directory / "store.sqlite" : store_file) {
     const auto port_file = directory_ / "port";
     std::filesystem::remove(port_file);
-    std::vector<std::string> arguments{AEROBREAK_BINARY, "serve",  "--store", store_file_.string(),
+    std::vector<std::string> arguments{program,          "serve",  "--store", store_file_.string(),
                                        "--port",         "0",      "--port-file", port_file.string(),
                                        "--idle-shutdown", "1"};
     // Two ranks unless the test chooses (an option may be given once).

@@ -1,4 +1,5 @@
-// Storage faults (issue 15 #5, #6): a store whose disk fills up mid-study, and a second
+// Storage faults (docs/ORCHESTRATOR.md, "What happens when things fail"): a store whose disk fills
+// up mid-study, and a second
 // orchestrator started on a store that one runs. Real `aerobreak serve`, a real SQLite file on a
 // real (small) file system, real mpirun workers.
 #include <sys/mount.h>
@@ -56,7 +57,7 @@ bool no_case_failed(const ServiceProcess& service, std::int64_t study) {
 }  // namespace
 
 TEST_CASE("A full disk under the store fails no case, keeps serve up, shows in health, and the study finishes once "
-          "space returns (issue 15 #5)",
+          "space returns",
           "[service][crash]") {
   if (::geteuid() != 0) {
     WARN("skipped: mounting a small tmpfs needs root (CI runs as root)");
@@ -93,7 +94,7 @@ TEST_CASE("A full disk under the store fails no case, keeps serve up, shows in h
   CHECK(service.get("/api/health").at("scheduler").at("storage_fault").is_null());
 }
 
-TEST_CASE("A second orchestrator on a store in use is refused and the first runs on undisturbed (issue 15 #6)",
+TEST_CASE("A second orchestrator on a store in use is refused and the first runs on undisturbed",
           "[service][crash]") {
   ScratchDirectory scratch("store-lock");
   ServiceProcess service(scratch.path());

@@ -10,30 +10,13 @@
 set -euo pipefail
 build=${1:-build}
 aerobreak=$(realpath "$build/aerobreak")
-sudo=()
-if [[ $(id -u) -ne 0 ]]; then
-  command -v sudo >/dev/null || { echo "run_slurm_study: needs root or sudo" >&2; exit 1; }
-  sudo=(sudo)
-fi
-
-missing=()
-for p in slurm-wlm munge sqlite3; do
-  [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" == "install ok installed" ]] || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "run_slurm_study: installing ${missing[*]}"
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+source "$(dirname "$0")/slurm_support.sh"
+sudo=("${slurm_sudo[@]}")
+install_missing_packages slurm-wlm munge sqlite3
 
 work=$(mktemp -d /tmp/aerobreak-slurm.XXXXXX)
 chmod 755 "$work"
 daemons=()  # munged, slurmctld, slurmd: stopped in the reverse order
-# Ends a process this script started: SIGTERM, SIGKILL after 10 s.
-stop_process() {
-  "${sudo[@]}" kill "$1" 2>/dev/null || return 0
-  for _ in $(seq 100); do "${sudo[@]}" kill -0 "$1" 2>/dev/null || return 0; sleep 0.1; done
-  "${sudo[@]}" kill -9 "$1" 2>/dev/null || true
-}
 # The slurmstepd processes of this cluster: those listening on sockets in its spool directory.
 step_daemons() {
   "${sudo[@]}" ss -Hxlp 2>/dev/null | awk -v dir="$work/spool/" 'index($0, dir)' | grep -o 'pid=[0-9]*' |
@@ -64,41 +47,21 @@ free_port() {
 
 host=$(hostname -s)
 cpus=$(nproc)
-mkdir -p "$work/munge" "$work/state" "$work/spool"
-chmod 755 "$work/munge"  # the socket must be reachable by the user that runs srun
-
-# munge: a key of our own, a socket of our own.
-"${sudo[@]}" dd if=/dev/urandom of="$work/munge/munge.key" bs=1024 count=1 status=none
-"${sudo[@]}" chmod 400 "$work/munge/munge.key"
-"${sudo[@]}" munged --force --socket="$work/munge/socket" --key-file="$work/munge/munge.key" \
-  --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" --seed-file="$work/munge/munged.seed"
-for _ in $(seq 50); do [[ -s "$work/munge/munged.pid" ]] && break; sleep 0.1; done
-daemons+=("$(cat "$work/munge/munged.pid")")
+mkdir -p "$work/state" "$work/spool"
+daemons+=("$(start_munge "$work/munge")")  # the socket must be reachable by the user that runs srun
 
 cat >"$work/slurm.conf" <<CONF
 ClusterName=aerobreak-test
 SlurmctldHost=$host
 SlurmctldPort=$(free_port)
 SlurmdPort=$(free_port)
-SlurmUser=root
-SlurmdUser=root
-AuthType=auth/munge
-CredType=cred/munge
-AuthInfo=socket=$work/munge/socket
 StateSaveLocation=$work/state
 SlurmdSpoolDir=$work/spool
 SlurmctldPidFile=$work/slurmctld.pid
 SlurmdPidFile=$work/slurmd.pid
 SlurmctldLogFile=$work/slurmctld.log
 SlurmdLogFile=$work/slurmd.log
-ProctrackType=proctrack/linuxproc
-TaskPlugin=task/none
-SwitchType=switch/none
-SelectType=select/cons_tres
-SelectTypeParameters=CR_Core
-JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
-ReturnToService=2
+$(common_slurm_conf "$work/munge")
 NodeName=$host CPUs=$cpus State=UNKNOWN
 PartitionName=aerobreak Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
@@ -141,7 +104,7 @@ echo "run_slurm_study: aerobreak run --launcher srun --ranks $ranks"
   >"$work/run.out" 2>&1 || {
   echo "run_slurm_study: aerobreak run failed:" >&2
   tail -n 30 "$work/run.out" >&2
-  tail -n 30 "$store.data"/logs/job-*.log >&2 2>/dev/null || true
+  tail -n 30 "${store%.sqlite}.data"/logs/job-*.log >&2 2>/dev/null || true
   exit 1
 }
 tail -n 8 "$work/run.out"

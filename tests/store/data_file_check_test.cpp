@@ -1,4 +1,5 @@
-// DataFileChecker (issue 15 #11): a case's data file against the size and SHA-256 its worker
+// DataFileChecker (docs/ORCHESTRATOR.md, Store, "Data files checked"): a case's data file against
+// the size and SHA-256 its worker
 // recorded. The reference digest is FIPS 180-4's example, checked with `sha256sum`:
 //   printf abc | sha256sum   -> ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad
 #include <catch2/catch.hpp>

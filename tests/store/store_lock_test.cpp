@@ -1,4 +1,4 @@
-// One orchestrator per store (issue 15 #6): a Store holds the store's lock while it lives.
+// One orchestrator per store (docs/ORCHESTRATOR.md, `STORE.lock`): a Store holds the store's lock while it lives.
 #include <sys/wait.h>
 #include <unistd.h>
 

@@ -18,7 +18,7 @@ using Json = nlohmann::ordered_json;
 TEST_CASE("the default study and its cases keep their hashes") {
   // studies/default.study.json. Should a schema change (a new default) alter these, every stored
   // case would be run again: that is a decision to take knowingly, not a value to update. The
-  // default study itself was replaced knowingly (issue 19: 20 nm ammonium-nitrate-like primaries
+  // default study itself was replaced knowingly (from 640 reduced-units cases to 20 nm ammonium-nitrate-like primaries
   // in SI units, the wall's adhesion as an axis, so that it shows stick, bounce and break-up;
   // docs/STUDIES.md): the values below are its hashes as this code computes them, pinned from
   // then on. That the hashing itself did not change with the move to OpenSSL's SHA-256 is checked

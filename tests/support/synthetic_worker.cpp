@@ -8,6 +8,8 @@
 //   AEROBREAK_SYNTHETIC_DELAY  seconds each case takes (default 0)
 //   AEROBREAK_SYNTHETIC_DATA   a directory: each result then comes with a small data file written
 //                              there, with its size and SHA-256, as the engine's HDF5 files do
+//   AEROBREAK_SYNTHETIC_RESULT a result document (a file) each result is a copy of, with the drawn
+//                              outcome class: results of a real case's size (the scale benchmark)
 #include <poll.h>
 #include <unistd.h>
 
@@ -44,6 +46,14 @@ void send(const nlohmann::ordered_json& message) {
   if (::write(STDOUT_FILENO, line.data(), line.size()) < 0) std::exit(1);
 }
 
+// The document results start from: AEROBREAK_SYNTHETIC_RESULT's, or a minimal one.
+nlohmann::ordered_json result_template() {
+  const char* file = std::getenv("AEROBREAK_SYNTHETIC_RESULT");
+  if (!file) return {{"outcome", {{"class", ""}}}, {"synthetic", true}};
+  std::ifstream in(file);
+  return nlohmann::ordered_json::parse(in);
+}
+
 void answer(const CaseAssignment& a) {
   const auto& d = a.document;
   const double speed = d.at("impact").at("speed").get<double>();
@@ -52,7 +62,9 @@ void answer(const CaseAssignment& a) {
   const auto orientation_seed = d.at("impact").value("orientation_seed", std::uint64_t{0});
   const std::string outcome =
       testing::SyntheticLaw{}.outcome(speed, gamma, testing::uniform_from_seeds(cluster_seed, orientation_seed));
-  const nlohmann::ordered_json result{{"outcome", {{"class", outcome}}}, {"synthetic", true}};
+  static const nlohmann::ordered_json kTemplate = result_template();
+  nlohmann::ordered_json result = kTemplate;
+  result["outcome"]["class"] = outcome;
   const char* data_directory = std::getenv("AEROBREAK_SYNTHETIC_DATA");
   if (!data_directory) {
     send(result_message(a.case_id, a.attempt, 0, 0.0, result, ""));
@@ -91,7 +103,12 @@ int main() {
   std::deque<std::string> lines;
   std::string buffer;
   bool stopping = false;
+  auto last_heartbeat = Clock::now();
   while (!stopping || !pending.empty()) {
+    if (Clock::now() - last_heartbeat >= kHeartbeatInterval) {  // as rank 0 of a real job does
+      send(heartbeat_message());
+      last_heartbeat = Clock::now();
+    }
     while (!pending.empty() && (stopping || pending.front().due <= Clock::now())) {
       answer(pending.front().assignment);
       pending.pop_front();

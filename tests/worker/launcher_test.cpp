@@ -15,14 +15,18 @@
 
 using namespace aerobreak;
 
-TEST_CASE("Worker job command lines: mpirun, srun with PMIx and stdin to task 0, direct") {
+TEST_CASE("Worker job command lines: mpirun, srun with PMIx, stdin to task 0 and kill on bad exit, direct") {
   LauncherConfig config{"mpirun", 4, {"--hostfile", "hosts"}, "/opt/aerobreak"};
   CHECK(join_command(worker_job_command(config)) == "mpirun -np 4 --hostfile hosts /opt/aerobreak worker");
   config.kind = "srun";
   config.arguments = {"--mpi=pmi2"};
   // The launcher's own arguments come after aerobreak's, so that a site can override them.
   CHECK(join_command(worker_job_command(config)) ==
-        "srun --ntasks=4 --input=0 --mpi=pmix --mpi=pmi2 /opt/aerobreak worker");
+        "srun --ntasks=4 --input=0 --mpi=pmix --kill-on-bad-exit=1 --mpi=pmi2 /opt/aerobreak worker");
+  config.silence_limit = 2.5;
+  CHECK(join_command(worker_job_command(config)) ==
+        "srun --ntasks=4 --input=0 --mpi=pmix --kill-on-bad-exit=1 --mpi=pmi2 /opt/aerobreak worker "
+        "--silence-limit 2.5");
   config = {"direct", 1, {}, "/opt/aerobreak"};
   CHECK(join_command(worker_job_command(config)) == "/opt/aerobreak worker");
   config.ranks = 2;

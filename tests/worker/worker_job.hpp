@@ -51,7 +51,7 @@ enum class Launch { mpirun, direct };
 
 class WorkerJob {
  public:
-  explicit WorkerJob(int ranks, Launch launch = Launch::mpirun) {
+  explicit WorkerJob(int ranks, Launch launch = Launch::mpirun, std::vector<std::string> worker_arguments = {}) {
     // A job that dies must fail the test through write()'s status, not kill it with SIGPIPE.
     ::signal(SIGPIPE, SIG_IGN);
     static std::atomic<int> counter{0};
@@ -74,6 +74,7 @@ class WorkerJob {
     posix_spawnattr_setpgroup(&attributes, 0);
 
     std::vector<std::string> arguments{AEROBREAK_BINARY, "worker"};
+    arguments.insert(arguments.end(), worker_arguments.begin(), worker_arguments.end());
     if (launch == Launch::mpirun)
       arguments.insert(arguments.begin(), {"mpirun", "--oversubscribe", "-np", std::to_string(ranks)});
     std::vector<std::string> environment{marker_, "OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
@@ -106,6 +107,7 @@ class WorkerJob {
   }
 
   const std::string& marker() const { return marker_; }
+  pid_t pid() const { return pid_; }
 
   void send_line(const std::string& line) {
     const std::string text = line + "\n";
@@ -118,7 +120,8 @@ class WorkerJob {
     input_ = -1;
   }
 
-  // The next protocol message within `timeout` seconds; other lines are kept in other_lines().
+  // The next protocol message within `timeout` seconds; other lines are kept in other_lines(),
+  // heartbeats are counted in heartbeats().
   std::optional<Json> next_message(double timeout) {
     const auto start = Clock::now();
     while (true) {
@@ -126,7 +129,12 @@ class WorkerJob {
       if (end != std::string::npos) {
         const std::string line = buffer_.substr(0, end);
         buffer_.erase(0, end + 1);
-        if (line.rfind("@aerobreak ", 0) == 0) return Json::parse(line.substr(11));
+        if (line.rfind("@aerobreak ", 0) == 0) {
+          Json message = Json::parse(line.substr(11));
+          if (message.value("type", "") != "heartbeat") return message;
+          ++heartbeats_;
+          continue;
+        }
         other_lines_.push_back(line);
         continue;
       }
@@ -172,6 +180,7 @@ class WorkerJob {
   }
 
   const std::vector<std::string>& other_lines() const { return other_lines_; }
+  int heartbeats() const { return heartbeats_; }
 
  private:
   static std::vector<char*> pointers(std::vector<std::string>& strings) {
@@ -188,6 +197,7 @@ class WorkerJob {
   int output_ = -1;
   std::string buffer_;
   std::vector<std::string> other_lines_;
+  int heartbeats_ = 0;
   std::optional<int> exit_status_;
 };
 

@@ -2,15 +2,18 @@
 // through their stdin and stdout (docs/WORKER_PROTOCOL.md).
 #include <catch2/catch.hpp>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <system_error>
 #include <thread>
 
 #include "engine/impact/impact_result.hpp"
 #include "engine/io/h5md_reader.hpp"
+#include "orchestrator/worker/worker_protocol.hpp"
 #include "worker_cases.hpp"
 #include "worker_job.hpp"
 
@@ -40,6 +43,17 @@ Json answer_of(WorkerJob& job, std::int64_t id, const std::string& type) {
   CHECK(answer["case"] == id);
   CHECK(answer["rank"] == started["rank"]);
   return answer;
+}
+
+// The process of a rank other than rank 0 (whose pid the ready message gives) of `job`.
+pid_t worker_rank_process(const WorkerJob& job, pid_t rank0) {
+  for (pid_t p : processes_with_marker(job.marker())) {
+    std::ifstream comm("/proc/" + std::to_string(p) + "/comm");
+    std::string name;
+    std::getline(comm, name);
+    if (p != job.pid() && p != rank0 && name == "aerobreak") return p;
+  }
+  return -1;
 }
 
 struct Scratch {
@@ -158,7 +172,8 @@ TEST_CASE("A case with a data file writes the first and last states under that n
   const Json result = answer_of(job, 41, "result");
   CHECK(result["data_file"] == data_file.string());
   REQUIRE(std::filesystem::exists(data_file));
-  CHECK_FALSE(std::filesystem::exists(data_file.string() + ".partial"));
+  for (const auto& entry : std::filesystem::directory_iterator(data_file.parent_path()))
+    CHECK(entry.path() == data_file);  // nothing half-written left beside it
   REQUIRE(h5md_frame_count(data_file) == 2);
   CHECK(read_h5md_frame(data_file, 0).position.size() == 16);
   CHECK(read_h5md_frame(data_file, 1).position.size() == 16);
@@ -187,4 +202,63 @@ TEST_CASE("Started without mpirun, the worker is a job of one rank") {
   CHECK(answer_of(job, 61, "result")["rank"] == 0);
   CHECK(answer_of(job, 62, "result")["rank"] == 0);
   stop_cleanly(job);
+}
+
+TEST_CASE("A running job says it is alive every couple of seconds") {
+  WorkerJob job(2);
+  job.expect("ready", kPatience);
+  job.send(case_message(81, slow_case(1e6), 5.0));  // stopped by its wall time after 5 s
+  CHECK(answer_of(job, 81, "failed")["kind"] == "wall_time");
+  CHECK(job.heartbeats() >= 5 / kHeartbeatInterval.count());
+  stop_cleanly(job);
+}
+
+TEST_CASE("A rank stopped before it takes its case is given up too: the hand-over never waits for the rank") {
+  WorkerJob job(2, Launch::mpirun, {"--silence-limit", "2"});
+  const pid_t rank0 = job.expect("ready", kPatience)["pid"].get<pid_t>();
+  const pid_t rank1 = worker_rank_process(job, rank0);
+  REQUIRE(rank1 > 0);
+  REQUIRE(::kill(rank1, SIGSTOP) == 0);  // stopped before its first case reaches it
+  job.send(case_message(73, tiny_case()));
+  CHECK(job.expect("started", kPatience)["rank"] == 1);
+  CHECK(job.expect("rank_lost", kPatience)["rank"] == 1);
+  const Json failed = job.expect("failed", kPatience);
+  CHECK(failed["case"] == 73);
+  CHECK(failed["kind"] == "lost");
+  job.send(case_message(74, tiny_case()));
+  CHECK(answer_of(job, 74, "result")["rank"] == 0);
+}
+
+TEST_CASE("A rank stopped mid-case is given up after the silence limit: its case fails as lost, the others go on") {
+  WorkerJob job(2, Launch::mpirun, {"--silence-limit", "2"});
+  const pid_t rank0 = job.expect("ready", kPatience)["pid"].get<pid_t>();
+  job.send(case_message(71, slow_case(1e6), 60.0));
+  const Json started = job.expect("started", kPatience);
+  REQUIRE(started["rank"] == 1);  // the broker hands out to the other ranks first
+  const pid_t rank1 = worker_rank_process(job, rank0);
+  REQUIRE(rank1 > 0);
+  const auto stopped = Clock::now();
+  REQUIRE(::kill(rank1, SIGSTOP) == 0);  // as a rank that hangs on a remote node
+
+  const Json lost = job.expect("rank_lost", kPatience);
+  CHECK(lost["rank"] == 1);
+  CHECK(lost["ranks"] == 1);
+  CHECK(lost["silent_seconds"].get<double>() >= 2.0);
+  const Json failed = job.expect("failed", kPatience);
+  CHECK(failed["case"] == 71);
+  CHECK(failed["kind"] == "lost");
+  CHECK_THAT(failed["error"].get<std::string>(), Contains("rank 1") && Contains("sent nothing"));
+  CHECK(seconds_since(stopped) < 2.0 + kPatience);
+
+  job.send(case_message(72, tiny_case()));  // the job goes on with the rank it has left
+  CHECK(answer_of(job, 72, "result")["rank"] == 0);
+  // A stop then ends the job without waiting for the stopped rank (MPI_Finalize would).
+  job.send(stop_message());
+  const std::optional<int> status = job.wait_exit(kPatience);
+  REQUIRE(status.has_value());
+  CHECK(*status != 0);
+  const auto ended = Clock::now();
+  while (!processes_with_marker(job.marker()).empty() && seconds_since(ended) < 15.0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  CHECK(processes_with_marker(job.marker()).empty());
 }

@@ -85,3 +85,93 @@ TEST_CASE("A case message with its case and attempt but bad fields is answered a
                   "/data_file");
   check_malformed(R"(@aerobreak {"type":"case","case":4,"attempt":1,"document":{},"data_file":3})", "/data_file");
 }
+
+namespace {
+
+// The typed message of a line a job writes, as the orchestrator reads it.
+JobMessage job_message(const Json& message) {
+  std::string line = protocol_line(message);
+  line.pop_back();
+  auto decoded = decode_job_line(line);
+  REQUIRE(decoded);
+  return std::move(*decoded);
+}
+
+}  // namespace
+
+TEST_CASE("Every message a job writes decodes to its typed message with every field") {
+  const auto ready = std::get<JobReady>(job_message(ready_message(2, {"n1", "n2"}, 4242, "1.2.3")));
+  CHECK(ready.ranks == 2);
+  CHECK(ready.hosts == std::vector<std::string>{"n1", "n2"});
+  CHECK(ready.pid == 4242);
+  CHECK(ready.version == "1.2.3");
+
+  const auto started = std::get<CaseStarted>(job_message(started_message(9007199254740993, 3, 1, "n2")));
+  CHECK(started.case_id == 9007199254740993);
+  CHECK(started.attempt == 3);
+  CHECK(started.rank == 1);
+  CHECK(started.host == "n2");
+
+  const Json result{{"outcome", "stick"}, {"retained_mass_fraction", 1.0}};
+  const auto with_file =
+      std::get<CaseResult>(job_message(result_message(5, 0, 1, 12.5, result, "/d/5.h5", 2048, "ab12")));
+  CHECK(with_file.case_id == 5);
+  CHECK(with_file.rank == 1);
+  CHECK(with_file.seconds == 12.5);
+  CHECK(with_file.result == nlohmann::json(result));
+  CHECK(with_file.data_file == "/d/5.h5");
+  CHECK(with_file.data_file_size == 2048);
+  CHECK(with_file.data_file_sha256 == "ab12");
+  const auto without_file = std::get<CaseResult>(job_message(result_message(5, 0, 1, 12.5, result, "")));
+  CHECK(without_file.data_file.empty());
+  CHECK(without_file.data_file_size == -1);
+  CHECK(without_file.data_file_sha256.empty());
+
+  for (const auto kind :
+       {FailureKind::invalid, FailureKind::error, FailureKind::wall_time, FailureKind::storage, FailureKind::lost}) {
+    const auto failed = std::get<CaseFailed>(job_message(failed_message(6, 2, 0, 0.5, kind, "why")));
+    CHECK(failed.case_id == 6);
+    CHECK(failed.attempt == 2);
+    CHECK(failed.seconds == 0.5);
+    CHECK(failed.kind == kind);
+    CHECK(failed.error == "why");
+  }
+  CHECK(std::get<JobProtocolError>(job_message(protocol_error_message("not JSON"))).message == "not JSON");
+
+  CHECK(std::holds_alternative<JobHeartbeat>(job_message(heartbeat_message())));
+  const auto lost = std::get<RankLost>(job_message(rank_lost_message(3, "n3", 5, 61.5)));
+  CHECK(lost.rank == 3);
+  CHECK(lost.host == "n3");
+  CHECK(lost.ranks == 5);
+  CHECK(lost.silent_seconds == 61.5);
+}
+
+TEST_CASE("A job message with wrong fields is told apart: an answer for its case, or a line to log") {
+  // An answer whose case and attempt can be read stays tied to them, with what is wrong.
+  const auto no_result = std::get<UnreadableAnswer>(
+      job_message({{"type", "result"}, {"case", 4}, {"attempt", 1}, {"rank", 0}, {"seconds", 1.0}, {"data_file", ""}}));
+  CHECK(no_result.type == "result");
+  CHECK(no_result.case_id == 4);
+  CHECK(no_result.attempt == 1);
+  CHECK_THAT(no_result.problem, Contains("/result"));
+  const auto bad_kind = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
+                                                                 {"rank", 0}, {"seconds", 1.0}, {"kind", "oom"},
+                                                                 {"error", "x"}}));
+  CHECK_THAT(bad_kind.problem, Contains("/kind"));
+  const auto negative = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
+                                                                 {"rank", 0}, {"seconds", -1.0}, {"kind", "error"},
+                                                                 {"error", "x"}}));
+  CHECK_THAT(negative.problem, Contains("/seconds"));
+  // Without its case or attempt, or of no known type, it is only logged.
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "started"}, {"attempt", 1}})).problem,
+             Contains("/case"));
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "paused"}})).problem, Contains("unknown message type"));
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "ready"}, {"ranks", 2}, {"hosts", {"n1"}}})).problem,
+             Contains("/hosts"));
+  CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "rank_lost"}, {"rank", 3}, {"host", "n3"}})).problem,
+             Contains("/ranks"));
+  // Lines that are not protocol: no prefix, or no JSON object after it.
+  CHECK_FALSE(decode_job_line(R"({"type":"ready"})"));
+  CHECK_FALSE(decode_job_line("@aerobreak {\"type\":"));
+  CHECK_FALSE(decode_job_line("@aerobreak [1]"));
+}

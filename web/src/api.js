@@ -21,16 +21,6 @@ export async function getJson(path, { signal } = {}) {
   return parse(await fetch(path, { signal, headers: { Accept: 'application/json' } }));
 }
 
-// null when the service has no such endpoint (an optional panel is then hidden).
-export async function getOptionalJson(path, options) {
-  try {
-    return await getJson(path, options);
-  } catch (error) {
-    if (error instanceof ApiError && error.status === 404) return null;
-    throw error;
-  }
-}
-
 function post(path, body, token) {
   const headers = { 'Content-Type': 'application/json', Accept: 'application/json' };
   if (token) headers.Authorization = `Bearer ${token}`;

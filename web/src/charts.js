@@ -1,68 +1,206 @@
-// Charts with uPlot: curves with their 95 % bands, or points; a legend of our own (one entry per
-// curve). The chart keeps its uPlot instance and its curves on the element (element.uplot,
-// element.curves) for the browser tests to read.
+// Charts with uPlot (docs/WEB.md). Each curve has a style:
+//   measured  points joined by a line, with the 95 % interval of each point as a whisker;
+//   points    the same points and whiskers without the line;
+//   fitted    a dashed (or dotted: dash 'dotted') line with its 95 % band where it has one;
+//   markers   hollow rings (e.g. grid points with flagged results).
+// Each axis spans the data; a bounded quantity (bounds [0, 1]) keeps its whole range and its
+// intervals are clipped to it. The legend (chart_legend.js) hides and shows series. The chart
+// keeps its uPlot instance, its curves and its whiskers on the element (element.uplot,
+// element.curves, element.whiskers) for the browser tests to read.
 import uPlot from '/vendor/uPlot.esm.js';
 import { el, replaceChildren } from './dom.js';
+import { axisTicks, paddedRange, spacedLabels } from './chart_scales.js';
+import { legend } from './chart_legend.js';
 
-const kPalette = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2', '#b3261e', '#00838f', '#8d6e00', '#455a64',
+const kPalette = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2', '#00838f', '#b3261e', '#8d6e00', '#455a64',
   '#d81b60', '#5d4037', '#3949ab', '#689f38'];
-const kHeight = 280;
+const kHeight = 300;
+const kDashes = { dashed: [7, 4], dotted: [2, 3] };
+
+// The red, green and blue of '#rrggbb' or 'rgb(r, g, b)'.
+function channels(color) {
+  if (color.startsWith('rgb')) return color.match(/\d+/g).slice(0, 3).map(Number);
+  const value = Number.parseInt(color.slice(1), 16);
+  return [value >> 16, (value >> 8) & 255, value & 255];
+}
 
 function translucent(color, alpha) {
-  const value = Number.parseInt(color.slice(1), 16);
-  return `rgba(${value >> 16}, ${(value >> 8) & 255}, ${value & 255}, ${alpha})`;
+  return `rgba(${channels(color).join(', ')}, ${alpha})`;
 }
 
-// Aligned data for uPlot: the union of x values and, per curve, y (and its bounds) at each x.
-function alignedData(curves) {
-  const xs = [...new Set(curves.flatMap((curve) => curve.points.map((point) => point.x)))].sort((a, b) => a - b);
-  const column = (curve, field) => {
-    const byX = new Map(curve.points.map((point) => [point.x, point[field]]));
-    return xs.map((x) => (byX.has(x) && byX.get(x) !== undefined ? byX.get(x) : null));
-  };
-  return { xs, column };
+export const paletteColor = (i) => kPalette[i % kPalette.length];
+
+// `color` mixed with white by `share` (0: the colour, 1: white).
+function lighter(color, share) {
+  return `rgb(${channels(color).map((channel) => Math.round(channel + (255 - channel) * share)).join(', ')})`;
 }
 
-// Gives each curve without a colour the next one of the palette.
+// Colours of curves grouped by up to two axes (curve.groupValues): one hue per value of one axis
+// and, where there is a second (N, say), lighter shades for its smaller values; a curve keeps its
+// colour in every plot of the page.
+export function colourGroups(curves) {
+  const keys = Object.keys((curves[0] || {}).groupValues || {});
+  const shadeAxis = keys.length === 2 ? (keys.includes('primaries') ? 'primaries' : keys[0]) : null;
+  const hueAxis = keys.find((key) => key !== shadeAxis);
+  const values = (axis) => [...new Set(curves.map((curve) => JSON.stringify(curve.groupValues[axis])))].sort((a, b) =>
+    (JSON.parse(a) < JSON.parse(b) ? -1 : 1));
+  const [hues, shades] = [values(hueAxis), shadeAxis ? values(shadeAxis) : []];
+  for (const curve of curves) {
+    const hue = paletteColor(Math.max(0, hues.indexOf(JSON.stringify(curve.groupValues[hueAxis]))));
+    const shade = shadeAxis ? shades.indexOf(JSON.stringify(curve.groupValues[shadeAxis])) : 0;
+    curve.color = shadeAxis && shades.length > 1 ? lighter(hue, (0.5 * (shades.length - 1 - shade)) / (shades.length - 1)) : hue;
+  }
+  return curves;
+}
+
+// Gives each curve without a colour the next one of the palette, and without a style 'measured'.
 export function assignColors(curves) {
   curves.forEach((curve, i) => {
-    curve.color = curve.color || kPalette[i % kPalette.length];
+    curve.color = curve.color || paletteColor(i);
+    curve.style = curve.style || 'measured';
   });
   return curves;
 }
 
-function seriesOptions(curves, { withBands, pointsOnly, data }) {
+const clip = (value, bounds) => (value === null || value === undefined || !bounds ? value
+  : Math.min(bounds[1], Math.max(bounds[0], value)));
+
+// Aligned data for uPlot: the union of x values and, per curve, a column of one field (clipped to
+// `bounds`) at each x, null where the curve has no point; each column is filled from the curve's
+// points through an index of x (no search per x).
+function aligner(curves, bounds) {
+  const xs = [...new Set(curves.flatMap((curve) => curve.points.map((point) => point.x)))].sort((a, b) => a - b);
+  const index = new Map(xs.map((x, i) => [x, i]));
+  const column = (curve, field) => {
+    const values = new Array(xs.length).fill(null);
+    for (const point of curve.points) {
+      const value = point[field];
+      if (value !== null && value !== undefined) values[index.get(point.x)] = clip(value, bounds);
+    }
+    return values;
+  };
+  return { xs, column };
+}
+
+const hasIntervals = (curve) => curve.points.some((point) =>
+  typeof point.lo === 'number' && typeof point.hi === 'number');
+
+function lineSeries(curve) {
+  const { color, style } = curve;
+  const base = { label: curve.label, stroke: color, spanGaps: true };
+  const none = () => null;
+  const dash = kDashes[curve.dash || 'dashed'];
+  if (style === 'fitted') return { ...base, width: 1.75, dash, points: { show: false } };
+  const ring = { show: true, size: 13, width: 2, stroke: color, fill: 'transparent' };
+  if (style === 'markers') return { ...base, paths: none, points: ring };
+  return { ...base, width: 2, paths: style === 'points' ? none : undefined,
+    points: { show: true, size: 7, fill: color, stroke: color } };
+}
+
+// uPlot's series, bands and data columns, and per measured curve with intervals its whiskers;
+// curve.series lists the uPlot series indices that draw it (for the legend's toggle).
+function seriesOptions(curves, data) {
   const series = [{}];
   const bands = [];
   const columns = [data.xs];
-  assignColors(curves).forEach((curve) => {
-    const color = curve.color;
+  const whiskers = [];
+  for (const curve of curves) {
+    curve.series = [series.length];
+    series.push(lineSeries(curve));
     columns.push(data.column(curve, 'y'));
-    series.push({
-      label: curve.label, stroke: color, width: curve.dashed ? 1.5 : 2, dash: curve.dashed ? [6, 4] : undefined,
-      spanGaps: true, paths: pointsOnly || curve.pointsOnly ? () => null : undefined,
-      points: curve.hollow ? { show: true, size: 12, width: 2, stroke: color, fill: 'transparent' }
-        : { show: !curve.dashed, size: 6, fill: color },
+    if (!hasIntervals(curve) || curve.style === 'markers') continue;
+    if (curve.style === 'fitted') {
+      for (const bound of ['upper', 'lower']) {
+        curve.series.push(series.length);
+        series.push({ label: `${curve.label} (${bound} 95 %)`, stroke: 'transparent', width: 0, spanGaps: true,
+          points: { show: false } });
+      }
+      columns.push(data.column(curve, 'hi'), data.column(curve, 'lo'));
+      bands.push({ series: [series.length - 2, series.length - 1], fill: translucent(curve.color, 0.13) });
+    } else {
+      whiskers.push({ series: curve.series[0], label: curve.label, color: translucent(curve.color, 0.75),
+        lo: data.column(curve, 'lo'), hi: data.column(curve, 'hi') });
+    }
+  }
+  return { series, bands, columns, whiskers };
+}
+
+// Draws each shown measured series' intervals as vertical whiskers with caps, inside the plot area.
+function drawWhiskers(u, whiskers, log) {
+  const ctx = u.ctx;
+  const { left, top, width, height } = u.bbox;
+  const ratio = uPlot.pxRatio || 1;
+  const cap = 3 * ratio;
+  const floor = (value) => (log ? Math.max(value, u.scales.y.min) : value);
+  ctx.save();
+  ctx.beginPath();
+  ctx.rect(left, top, width, height);
+  ctx.clip();
+  ctx.lineWidth = 1.25 * ratio;
+  for (const whisker of whiskers) {
+    if (!u.series[whisker.series].show) continue;
+    ctx.strokeStyle = whisker.color;
+    ctx.beginPath();
+    u.data[0].forEach((x, i) => {
+      if (whisker.lo[i] === null || whisker.hi[i] === null) return;
+      const px = u.valToPos(x, 'x', true);
+      const [low, high] = [u.valToPos(floor(whisker.lo[i]), 'y', true), u.valToPos(floor(whisker.hi[i]), 'y', true)];
+      ctx.moveTo(px, low);
+      ctx.lineTo(px, high);
+      ctx.moveTo(px - cap, low);
+      ctx.lineTo(px + cap, low);
+      ctx.moveTo(px - cap, high);
+      ctx.lineTo(px + cap, high);
     });
-    if (!withBands || !curve.points.some((point) => point.lo !== null && point.lo !== undefined)) return;
-    columns.push(data.column(curve, 'hi'), data.column(curve, 'lo'));
-    for (const bound of ['upper', 'lower'])
-      series.push({ label: `${curve.label} (${bound} 95 %)`, stroke: translucent(color, 0.35), width: 1, spanGaps: true, points: { show: false } });
-    bands.push({ series: [series.length - 2, series.length - 1], fill: translucent(color, 0.12) });
-  });
-  return { series, bands, columns };
+    ctx.stroke();
+  }
+  ctx.restore();
 }
 
-function legend(curves) {
-  return el('ul', { class: 'legend' }, curves.map((curve) => {
-    const swatch = el('span', { class: 'swatch' });
-    swatch.style.background = curve.color;
-    return el('li', { dataset: { points: curve.points.length } }, swatch, curve.label);
-  }));
+// The y range: the bounds when given (with a little room), else the data's span, with their
+// intervals unless `fitIntervals` is false (then an interval reaching far out is cut at the edge).
+function yRange(curves, { bounds, yLog, fitIntervals }) {
+  if (bounds) {
+    const room = (bounds[1] - bounds[0]) * 0.03;
+    return [bounds[0] - room, bounds[1] + room];
+  }
+  const values = curves.flatMap((curve) => curve.points.flatMap((point) =>
+    (fitIntervals && curve.style !== 'markers' ? [point.y, point.lo, point.hi] : [point.y])));
+  return paddedRange(values, { log: yLog, share: 0.06 }) || [0, 1];
 }
 
-// Draws `curves` ([{label, points: [{x, y, lo, hi}], dashed, pointsOnly, hollow}]) into `container`.
-export function plotCurves(container, curves, { xLabel, yLabel, xLog = true, yLog = false, yRange, withBands = true, pointsOnly = false }) {
+// 1-2-5 ticks over the y scale's current range.
+const logTicksOf = (u) => axisTicks([], [u.scales.y.min, u.scales.y.max], { log: true });
+
+// The x axis spans every curve; its ticks sit at the measured x values (a fitted curve's many
+// points would hide them).
+function axisOptions(curves, data, { xLabel, yLabel, xLog, yLog }) {
+  const xRange = paddedRange(data.xs, { log: xLog, share: 0.04 }) || [0, 1];
+  const measured = curves.filter((curve) => curve.style !== 'fitted')
+    .flatMap((curve) => curve.points.map((point) => point.x));
+  const xTicks = axisTicks(measured.length ? measured : data.xs, xRange, { log: xLog });
+  // `filter` keeps every tick (uPlot's own thins a log axis's ticks to whole decades).
+  const keepAll = (u, splits) => splits;
+  const x = { label: xLabel, values: spacedLabels('x'), filter: keepAll, ...(xTicks ? { splits: () => xTicks } : {}) };
+  const y = { label: yLabel, size: 58, values: spacedLabels('y'),
+    ...(yLog ? { filter: keepAll, splits: (u) => logTicksOf(u) } : {}) };
+  return { xRange, axes: [x, y] };
+}
+
+// Each chart follows its container's width; the width last seen is kept on the container, so that
+// a chart drawn again needs no layout of the page to size itself.
+const resizer = new ResizeObserver((entries) => {
+  for (const { target, contentRect } of entries) {
+    target.knownWidth = contentRect.width;
+    const width = Math.max(320, Math.floor(contentRect.width) - 8);
+    if (target.uplot && Math.abs(target.uplot.width - width) > 2) target.uplot.setSize({ width, height: kHeight });
+  }
+});
+
+// Draws `curves` ([{label, points: [{x, y, lo, hi}], style, dash, color}]) into `container`.
+// `bounds`: the quantity's range, e.g. [0, 1].
+export function plotCurves(container, curves, options) {
+  const { xLabel, yLabel, xLog = true, yLog = false, bounds = null, fitIntervals = true } = options;
   if (container.uplot) container.uplot.destroy();
   container.uplot = null;
   container.curves = curves;
@@ -72,15 +210,25 @@ export function plotCurves(container, curves, { xLabel, yLabel, xLog = true, yLo
     replaceChildren(container, el('p', { class: 'note' }, 'Nothing to plot yet: no finished cases here.'));
     return;
   }
-  const data = alignedData(curves);
-  const { series, bands, columns } = seriesOptions(curves, { withBands, pointsOnly, data });
-  const holder = el('div', { class: 'plot' });
-  replaceChildren(container, holder, legend(curves));
+  assignColors(curves);
+  const data = aligner(curves, bounds);
   const logX = xLog && data.xs.every((x) => x > 0);
-  const options = {
-    width: Math.max(320, (container.clientWidth || 600) - 8), height: kHeight, legend: { show: false },
-    scales: { x: { time: false, distr: logX ? 3 : 1 }, y: yRange ? { range: yRange } : { distr: yLog ? 3 : 1 } },
-    axes: [{ label: xLabel }, { label: yLabel }], series, bands, cursor: { drag: { x: false, y: false } },
+  const { series, bands, columns, whiskers } = seriesOptions(curves, data);
+  const { xRange, axes } = axisOptions(curves, data, { ...options, xLog: logX });
+  const holder = el('div', { class: 'plot' });
+  const toggle = (curve, shown) => curve.series.forEach((index) => container.uplot.setSeries(index, { show: shown }));
+  replaceChildren(container, holder, legend(curves, toggle));
+  const chartOptions = {
+    width: Math.max(320, (container.knownWidth || container.clientWidth || 600) - 8), height: kHeight,
+    legend: { show: false },
+    scales: {
+      x: { time: false, distr: logX ? 3 : 1, range: () => xRange },
+      y: { distr: yLog ? 3 : 1, range: () => yRange(curves, { bounds, yLog, fitIntervals }) },
+    },
+    axes, series, bands, cursor: { drag: { x: false, y: false } },
+    hooks: { draw: [(u) => drawWhiskers(u, whiskers, yLog)] },
   };
-  container.uplot = new uPlot(options, columns, holder);
+  container.whiskers = whiskers;
+  container.uplot = new uPlot(chartOptions, columns, holder);
+  resizer.observe(container);
 }

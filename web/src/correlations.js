@@ -1,23 +1,28 @@
 // What the correlations service (docs/CORRELATIONS.md) adds to a study page: the per-group logistic
 // fits of an outcome against the impact speed or the energy per contact, drawn as dashed curves with
 // their 95 % bands over the measured points; the fitted critical speeds v10, v50, v90 against N with
-// their profile-likelihood intervals; a table of them and the scaling exponents of v50. The summary
+// their profile-likelihood intervals; a table of them, marking the values the data do not pin down
+// (extrapolations), and the scaling exponents of v50. The summary
 // (GET /api/studies/ID/correlations) names every fit with its group and critical values; a fit's
-// curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (no
-// such service, or no results yet) hides these parts; so does a 409, which older services gave for
-// a study without results.
+// curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (the study
+// has no results yet) hides these parts.
 import { ApiError, getJson } from './api.js';
-import { valueKey } from './series.js';
+import { conditionKey, valueKey } from './series.js';
 
 // The dose of a fit for each choice of x (series.js).
 const kDoseOfX = { impact_speed: 'impact_speed', energy_per_contact: 'energy_per_contact' };
-export const kLevelNames = { 0.1: 'v10', 0.5: 'v50', 0.9: 'v90' };
+// The levels whose crossings are the critical values, and how each is drawn against N.
+export const kLevels = [0.1, 0.5, 0.9];
+const kLevelDashes = { 0.1: 'dashed', 0.5: 'solid', 0.9: 'dotted' };
+const kDosePrefixes = { impact_speed: 'v', energy_per_contact: 'E' };
+// A critical value's name: v50 for the speed where P crosses 0.5, E50 for the energy per contact.
+export const levelName = (level, dose) => `${kDosePrefixes[dose] || 'x'}${Math.round(level * 100)}`;
 
 export async function loadCorrelationSummary(studyId) {
   try {
     return await getJson(`/api/studies/${studyId}/correlations`);
   } catch (error) {
-    if (error instanceof ApiError && (error.status === 404 || error.status === 409)) return null;
+    if (error instanceof ApiError && error.status === 404) return null;
     throw error;
   }
 }
@@ -56,13 +61,17 @@ export class Correlations {
       .filter(({ fit }) => fit);
     const documents = await Promise.all(pairs.map(({ fit }) => this.document(fit.name)));
     return pairs.flatMap(({ curve, fit }, i) => (documents[i].curves || []).slice(0, 1).map((fitted) => ({
-      label: `${curve.label} (fit)`, color: curve.color, dashed: true, fit: fit.name,
+      label: `${curve.label} (fit)`, color: curve.color, style: 'fitted', fit: fit.name,
+      group: curve.group, groupLabel: curve.groupLabel, styleLabel: 'fit, band: 95 % interval',
       points: fitted.points.map((point) => ({ x: point.dose, y: point.value, lo: point.ci95[0], hi: point.ci95[1] })),
     })));
   }
 
-  // Fitted critical values against N: per level and per value of the other series axes, the
-  // groups' estimates with their 95 % intervals. v50 carries its band; v10 and v90 are dashed.
+  // Fitted critical values against N: per level and per condition (the values of the group's axes
+  // other than N outside the slice), the groups' estimates; v50 carries its 95 % interval as a
+  // band and is drawn solid, v10 dashed, v90 dotted. `group` keys the condition (its axis values
+  // in `groupValues`), so that a condition's measured and fitted series share a colour and an
+  // entry of the legend.
   criticalCurves(outcome, xAxis, slice) {
     const series = new Map();
     for (const fit of this.groupFits(outcome, xAxis, slice)) {
@@ -71,29 +80,45 @@ export class Correlations {
       const others = Object.entries(rest).filter(([axis]) => !(axis in slice));
       for (const critical of fit.critical || []) {
         if (typeof critical.estimate !== 'number') continue;
-        const level = kLevelNames[critical.level] || `p${critical.level}`;
+        const level = levelName(critical.level, fit.dose);
         const key = `${level} ${valueKey(others)}`;
-        if (!series.has(key)) series.set(key, {
-          label: `fitted ${level}${others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`).join('')}`,
-          dashed: level !== 'v50', points: [] });
-        const [lo, hi] = critical.ci95 || [null, null];
-        series.get(key).points.push({ x: primaries, y: critical.estimate, lo: level === 'v50' ? lo : null, hi: level === 'v50' ? hi : null });
+        const where = others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`);
+        const groupValues = Object.fromEntries(others);
+        if (!series.has(key)) series.set(key, { label: `fitted ${level}${where.join('')}`, level, style: 'fitted',
+          groupValues, group: conditionKey(groupValues), groupLabel: where.join('').slice(2) || 'all',
+          styleLabel: `fitted ${level}${critical.level === 0.5 ? ', band: 95 % interval' : ''}`,
+          dash: kLevelDashes[critical.level], points: [] });
+        const [lo, hi] = critical.level === 0.5 && critical.ci95 ? critical.ci95 : [null, null];
+        series.get(key).points.push({ x: primaries, y: critical.estimate, lo, hi });
       }
     }
     return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
   }
 
-  // The scaling fit of v50 for `outcome` (exponents per axis), or null.
-  scaling(outcome) {
-    return this.summary.fits.find((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5) || null;
+  // The scaling fits of v50 for `outcome` (exponents per axis) whose group lies in the slice.
+  scalings(outcome, slice) {
+    return this.summary.fits.filter((fit) => fit.kind === 'scaling' && fit.response === outcome && fit.level === 0.5 &&
+      inSlice(fit.group || {}, slice));
   }
 }
 
-// The lookup-table formats of the export service (docs/WEB.md), offered when it answers HEAD for
-// CSV; [] when it has no such endpoint.
-const kTableFormats = ['csv', 'dat', 'json', 'hdf5', 'melcor'];
+// A critical value is an extrapolation when its estimate lies outside the doses its fit saw (the
+// fit's validity box) or its 95 % interval reaches more than kFarBeyond times beyond them.
+export const kFarBeyond = 1.5;
 
-export async function tableFormats(studyId) {
-  const response = await fetch(`/api/studies/${studyId}/tables?format=${kTableFormats[0]}`, { method: 'HEAD' });
-  return response.status === 404 ? [] : kTableFormats;
+// The extrapolated critical values of `fits` ([{fit, level, critical, range: [min, max]}]).
+export function extrapolations(fits) {
+  const found = [];
+  for (const fit of fits) {
+    const box = (fit.validity || {})[fit.dose];
+    if (!box) continue;
+    for (const critical of fit.critical || []) {
+      if (typeof critical.estimate !== 'number') continue;
+      const [lo, hi] = critical.ci95 || [critical.estimate, critical.estimate];
+      const outside = critical.estimate < box.min || critical.estimate > box.max;
+      if (outside || lo < box.min / kFarBeyond || hi > box.max * kFarBeyond)
+        found.push({ fit, level: levelName(critical.level, fit.dose), critical, range: [box.min, box.max] });
+    }
+  }
+  return found;
 }

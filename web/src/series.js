@@ -1,9 +1,12 @@
 // Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM.
+import { unitText, withUnit } from './units.js';
 
 const kAxisLabels = {
-  impact_speed: 'impact speed v₀ (d/τ)', gamma_over_kn: 'γ/k_n', primaries: 'N',
+  impact_speed: 'impact speed v₀', gamma_over_kn: 'γ/k_n', primaries: 'N',
   energy_per_contact: 'energy per contact E_kin / (N_c E_break)',
 };
+// The kind of unit of each axis that has one (the study's units name it: study.units).
+const kAxisUnits = { impact_speed: 'speed' };
 const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N', energy_per_contact: 'E/(N_c E_b)' };
 // Axes that get one curve per value (the others are fixed by the slice choosers).
 export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
@@ -11,9 +14,19 @@ export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
 // which varies along the named axis (each point of a curve is still one grid point).
 const kDerivedX = { energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean' } };
 
-export const axisLabel = (name) => kAxisLabels[name] || name;
-const shortLabel = (name) => kShortLabels[name] || name;
+// An axis's name for the page, with its unit in the study's `units` (GET /api/studies/ID) if it has one.
+export const axisLabel = (name, units = {}) => withUnit(kAxisLabels[name] || name, units[kAxisUnits[name]]);
+// A value of an axis with its unit, e.g. "20 m/s".
+export const axisValueText = (name, value, units = {}) => {
+  const unit = units[kAxisUnits[name]];
+  return unit ? `${value} ${unitText(unit)}` : String(value);
+};
+export const shortAxisLabel = (name) => kShortLabels[name] || name;
+const shortLabel = shortAxisLabel;
 export const valueKey = (value) => JSON.stringify(value);
+// The same key for the same axis values in whatever order: a condition of the series axes.
+export const conditionKey = (values) => JSON.stringify(Object.entries(values)
+  .sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0)));
 
 // The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
 export const alongAxis = (xAxis) => (kDerivedX[xAxis] ? kDerivedX[xAxis].along : xAxis);
@@ -120,14 +133,15 @@ export function criticalSpeedCurves(curves, level = 0.5) {
 
 // Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
 // per result.
-export function fragmentCurves(response, xAxis) {
+export function fragmentCurves(response, xAxis, units) {
   const along = alongAxis(xAxis);
   return response.grid_points
     .filter((point) => point.results > 0)
     .sort((a, b) => a.grid_point[along] - b.grid_point[along])
     .map((point) => ({
       key: valueKey(point.grid_point[along]),
-      label: `${shortLabel(along)} = ${point.grid_point[along]} (${point.results} results)`,
+      label: `${shortLabel(along)} = ${axisValueText(along, point.grid_point[along], units)} ` +
+        `(${point.results} results)`,
       points: point.sizes.map(([primaries, count]) => ({ x: primaries, y: count / point.results })),
     }));
 }
@@ -137,6 +151,6 @@ export function fragmentCurves(response, xAxis) {
 export function flaggedPoints(curves, flag, label) {
   const points = curves.flatMap((curve) => curve.points.filter((point) => point.row[flag] > 0));
   const results = points.reduce((sum, point) => sum + point.row[flag], 0);
-  return { label: `${label} (${results} results at ${points.length} grid points)`, pointsOnly: true, hollow: true,
+  return { label: `${label} (${results} results at ${points.length} grid points)`, style: 'markers',
     color: '#b3261e', points: points.map(({ x, y, row }) => ({ x, y, count: row[flag] })) };
 }

@@ -1,5 +1,6 @@
 // A result's outcome by what leaves the wall (docs/IMPACT.md section 5), its small-strain check and
-// the energy groups that govern it (schemas/result.schema.json: /outcome, /validity, /dimensionless).
+// the energy groups that govern it (schemas/result.schema.json: /outcome, /validity, /dimensionless),
+// every dimensional value in the case's units (units.js caseUnits: SI for a physical case).
 import { el, formatNumber, table } from '../dom.js';
 
 const yesNo = (value) => (value === true ? 'yes' : value === false ? 'no' : '–');
@@ -9,7 +10,26 @@ export function facts(entries, attributes = {}) {
     .map(([label, value]) => [el('dt', {}, label), el('dd', {}, value === null ? '–' : value)]));
 }
 
-export function outcomeSection(outcome) {
+// Thresholds of the classification that carry a unit (the others are fractions).
+const kThresholdKinds = { quiet_window: 'time' };
+
+function thresholdFacts(thresholds, units) {
+  return Object.entries(thresholds || {}).map(([name, value]) => {
+    const kind = kThresholdKinds[name];
+    const label = `threshold ${name.replaceAll('_', ' ')}`;
+    return [kind ? units.label(label, kind) : label, formatNumber(kind ? units.value(value, kind) : value, 4)];
+  });
+}
+
+function reentrainedTable(fragments, units) {
+  const column = (label, kind, field) => ({
+    label: units.label(label, kind), value: (f) => formatNumber(units.value(f[field], kind), 4), numeric: true });
+  return table([{ label: 'Primaries', value: (f) => f.primaries, numeric: true }, column('Mass', 'mass', 'mass'),
+    column('Normal velocity', 'speed', 'normal_velocity'), column('Speed', 'speed', 'speed')],
+  fragments, { id: 'reentrained-table' });
+}
+
+export function outcomeSection(outcome, units) {
   if (!outcome) return null;
   const restitution = outcome.restitution || {};
   const fragments = outcome.reentrained_fragments || [];
@@ -23,15 +43,12 @@ export function outcomeSection(outcome) {
       ['fragments', formatNumber(outcome.fragment_count)],
       ['largest fragment share', formatNumber(outcome.largest_fragment_share, 4)],
       ['largest re-entrained share', formatNumber(outcome.largest_reentrained_share, 4)],
-      ['restitution normal', formatNumber(restitution.normal, 4)], ['restitution tangential', formatNumber(restitution.tangential, 4)],
-      ...Object.entries(outcome.thresholds || {}).map(([name, value]) => [`threshold ${name.replaceAll('_', ' ')}`, formatNumber(value, 4)])],
+      ['restitution normal', formatNumber(restitution.normal, 4)],
+      ['restitution tangential', formatNumber(restitution.tangential, 4)],
+      ...thresholdFacts(outcome.thresholds, units)],
     { id: 'outcome-facts' }),
     el('h3', {}, `Re-entrained fragments (${fragments.length})`),
-    fragments.length === 0 ? el('p', { class: 'note' }, 'Nothing left the wall.')
-      : table([{ label: 'Primaries', value: (f) => f.primaries, numeric: true },
-        { label: 'Mass', value: (f) => formatNumber(f.mass, 4), numeric: true },
-        { label: 'Normal velocity (d/τ)', value: (f) => formatNumber(f.normal_velocity, 4), numeric: true },
-        { label: 'Speed (d/τ)', value: (f) => formatNumber(f.speed, 4), numeric: true }], fragments, { id: 'reentrained-table' }));
+    fragments.length === 0 ? el('p', { class: 'note' }, 'Nothing left the wall.') : reentrainedTable(fragments, units));
 }
 
 function strainRow(label, strain) {
@@ -52,18 +69,31 @@ export function validitySection(validity) {
       ['ratios are upper bounds', yesNo(validity.bound)]], { id: 'validity-facts' }));
 }
 
-export function energyGroupsSection(dimensionless, si) {
+// A rolling energy, or what its absence means: null when the case has no rolling resistance.
+const orNoRolling = (value) => (value === null ? 'no rolling resistance' : formatNumber(value, 4));
+
+// The groups, with the impact's speed and energies in the case's units: for a physical case the
+// result's SI values (/si) beside the reduced speed.
+export function energyGroupsSection(result, units) {
+  const { dimensionless, energy } = result;
   if (!dimensionless) return null;
-  const joules = si || {};
+  const joules = result.si || {};
+  const siEnergy = (label, value) => [units.label(label, 'energy'),
+    value === undefined ? undefined : orNoRolling(value)];
+  const physicalRows = units.physical ? [
+    [units.reduced('impact speed', 'speed'), formatNumber(dimensionless.impact_speed, 4)],
+    siEnergy('impact kinetic energy', joules.impact_kinetic_energy_J), siEnergy('breaking energy',
+      joules.breaking_energy_J),
+    siEnergy('rolling energy', joules.rolling_energy_J),
+  ] : [siEnergy('impact kinetic energy', (energy || {}).impact_kinetic)];
   return el('section', { class: 'panel', id: 'energy-groups' }, el('h2', {}, 'Energy groups'),
     facts([['E_kin / (N_c E_break)', formatNumber(dimensionless.energy_per_contact, 4)],
-      ['E_kin / E_roll', formatNumber(dimensionless.energy_over_rolling, 4)],
+      ['E_kin / E_roll', orNoRolling(dimensionless.energy_over_rolling)],
       ['N_c, initial contacts', formatNumber(dimensionless.initial_contacts)],
       ['N, primaries', formatNumber(dimensionless.primaries)],
       ['λ (eq 19)', formatNumber(dimensionless.lambda, 4)], ['κ (eq 6)', formatNumber(dimensionless.kappa, 4)],
-      ['γ/k_n', formatNumber(dimensionless.gamma_over_kn, 4)], ['impact speed (d/τ)', formatNumber(dimensionless.impact_speed, 4)],
-      ['impact kinetic energy (J)', joules.impact_kinetic_energy_J === undefined ? undefined : formatNumber(joules.impact_kinetic_energy_J, 4)],
-      ['breaking energy (J)', joules.breaking_energy_J === undefined ? undefined : formatNumber(joules.breaking_energy_J, 4)],
-      ['rolling energy (J)', joules.rolling_energy_J === undefined ? undefined : formatNumber(joules.rolling_energy_J, 4)]],
+      ['γ/k_n', formatNumber(dimensionless.gamma_over_kn, 4)],
+      [units.label('impact speed', 'speed'), formatNumber(units.value(dimensionless.impact_speed, 'speed'), 4)],
+      ...physicalRows],
     { id: 'energy-groups-facts' }));
 }

@@ -2,21 +2,10 @@
 // every two seconds without reloading the page.
 import { getJson, query } from '../api.js';
 import { el, formatDuration, formatNumber, formatTime, replaceChildren, table } from '../dom.js';
+import { progressBar, studyState } from '../progress.js';
 
 const kRefreshMs = 2000;
 const kPageSize = 20;
-
-function progressBar(progress) {
-  const counts = progress.counts;
-  const total = Math.max(1, progress.total - counts.cancelled);
-  const bar = el('div', { class: 'progress', title: `${counts.done} done, ${counts.failed} failed, ${counts.running} running` });
-  for (const status of ['done', 'failed', 'running']) {
-    const part = el('span', { class: status });
-    part.style.width = `${(100 * counts[status]) / total}%`;
-    bar.append(part);
-  }
-  return bar;
-}
 
 function countsText(counts) {
   return ['queued', 'running', 'done', 'failed', 'cancelled']
@@ -27,12 +16,13 @@ function countsText(counts) {
 
 const kColumns = [
   { label: 'Study', value: (s) => el('a', { href: `/?study=${s.id}`, 'data-nav': true, class: 'study-name' }, s.name) },
-  { label: 'Status', value: (s) => s.status },
+  { label: 'Status', value: (s) => el('span', { class: 'study-state' }, studyState(s)) },
   { label: 'Cases', value: (s) => s.cases, numeric: true },
   { label: 'Progress', value: (s) => progressBar(s.progress) },
   { label: 'Counts', value: (s) => el('span', { class: 'counts' }, countsText(s.progress.counts)) },
   { label: 'Cases/h', value: (s) => el('span', { class: 'rate' }, formatNumber(s.progress.cases_per_hour, 3)), numeric: true },
-  { label: 'Time left', value: (s) => (s.progress.complete ? 'complete' : formatDuration(s.progress.seconds_left)) },
+  { label: 'Time left',
+    value: (s) => (s.progress.complete || s.status === 'cancelled' ? '–' : formatDuration(s.progress.seconds_left)) },
   { label: 'Submitted', value: (s) => formatTime(s.created_at) },
 ];
 

@@ -1,10 +1,11 @@
 // A study: its description, progress and axes, plots of the server's per-grid-point statistics,
-// the optional correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
+// once it has results the correlation and table panels, and its cases. Every choice (outcome, x axis, slice,
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
 import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
-import { Correlations, loadCorrelationSummary, tableFormats } from '../correlations.js';
+import { progressBar, studyState } from '../progress.js';
+import { Correlations, loadCorrelationSummary } from '../correlations.js';
 import { createPlots } from './study_plots.js';
 import { createCaseTable } from './case_table.js';
 import { tablesPanel } from './study_tables.js';
@@ -39,61 +40,79 @@ function progressText(progress) {
   const parts = [`${c.done} done`, `${c.failed} failed`, `${c.running} running`, `${c.queued} queued`];
   if (c.cancelled) parts.push(`${c.cancelled} cancelled`);
   const rate = progress.cases_per_hour > 0 ? `, ${formatNumber(progress.cases_per_hour, 3)} cases/h` : '';
-  const left = progress.complete ? ', complete' : `, ${formatDuration(progress.seconds_left)} left`;
+  const left = progress.complete ? '' : `, ${formatDuration(progress.seconds_left)} left`;
   return `${progress.total} cases: ${parts.join(', ')}${rate}${left}`;
 }
 
-function axesTable(axes) {
+function axesTable(axes, units) {
   return table([
-    { label: 'Axis', value: (axis) => axisLabel(axis.name) },
+    { label: 'Axis', value: (axis) => axisLabel(axis.name, units) },
     { label: 'Values', value: (axis) => axis.values.map((value) => formatNumber(value, 4)).join(', ') },
   ], axes, { id: 'axes-table' });
 }
 
+const kUnitsText = { physical: 'SI units', reduced: 'reduced units (d, m, τ)',
+  mixed: 'units that differ between grid points' };
+
 function header(study, { onCancel }) {
-  const progressLine = el('p', { id: 'progress' }, progressText(study.progress));
-  const cancel = study.status === 'active' && !study.progress.complete
+  const state = studyState(study);
+  const cancel = state === 'running' || state === 'queued'
     ? el('button', { class: 'danger', id: 'cancel-study', onclick: onCancel }, 'Cancel study') : null;
-  return {
-    node: el('section', {},
-      el('h1', { id: 'study-name' }, study.name),
-      el('p', { class: 'description', id: 'study-description' }, study.description),
-      el('p', {}, `Study ${study.id}, ${study.status}. `, cancel), progressLine),
-    progressLine,
-  };
+  return el('section', {},
+    el('h1', { id: 'study-name' }, study.name),
+    el('p', { class: 'description', id: 'study-description' }, study.description),
+    el('p', {}, `Study ${study.id}, `, el('span', { id: 'study-state', class: `study-state ${state}` }, state),
+      `, in ${kUnitsText[study.units.system] || study.units.system}. `, cancel),
+    el('div', { class: 'progress-line' }, progressBar(study.progress), el('span', { id: 'progress' },
+      progressText(study.progress))));
 }
 
-function controls(state, grid, onChange) {
+function controls(state, grid, units, onChange) {
   const { axes } = grid;
   const xAxis = state.get('x', defaultXAxis(axes));
   const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
     .concat(derivedXChoices(grid).map((name) => ({ name })));
-  const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${axisLabel(axis.name)} `,
+  const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${axisLabel(axis.name, units)} `,
     select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]), state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
   return el('div', { class: 'controls', id: 'plot-controls' },
     el('label', {}, 'Outcome ', select(kOutcomes.map((o) => [o, o]), state.get('outcome', 'break-up'),
       (value) => onChange({ outcome: value }), { id: 'choose-outcome' })),
-    el('label', {}, 'Along ', select(numericAxes.map((a) => [a.name, axisLabel(a.name)]), xAxis,
+    el('label', {}, 'Along ', select(numericAxes.map((a) => [a.name, axisLabel(a.name, units)]), xAxis,
       (value) => onChange({ x: value }), { id: 'choose-x' })),
     slices);
 }
 
-// The parts other services add (correlations, lookup tables), asked for once the page is drawn:
-// fitting a large study the first time takes seconds, and the page does not wait for it.
-// A study without results has nothing to fit or tabulate (the services answer 404 or 409): neither
-// is asked then.
-function loadOptionalParts(id, { hasResults, plots, tablesHolder, redraw, stopped }) {
-  if (!hasResults) return;
-  loadCorrelationSummary(id).then((summary) => {
-    if (!summary || stopped()) return;
-    plots.setCorrelations(new Correlations(id, summary));
-    redraw();
-  }).catch(() => {});
-  tableFormats(id).then((formats) => {
-    if (!stopped()) replaceChildren(tablesHolder, tablesPanel(id, formats));
-  }).catch(() => {});
+// The parts a study has once it has results: the lookup-table links, and the correlations, asked
+// for once the page is drawn (fitting a large study the first time takes seconds, and the page
+// does not wait for it). A study without results has nothing to fit or tabulate (the correlations
+// answer 404, the tables 409): neither is shown then. While the study runs the correlations are
+// asked again when results first arrive, at most every kCorrelationsRefreshMs while more arrive,
+// and once more when it ends.
+const kCorrelationsRefreshMs = 30000;
+
+function createResultParts(id, { plots, tablesHolder, redraw, stopped }) {
+  let asked = null;
+  function ask(study) {
+    if (!asked) replaceChildren(tablesHolder, tablesPanel(id));
+    asked = { done: study.progress.counts.done, complete: study.progress.complete, at: Date.now() };
+    loadCorrelationSummary(id).then((summary) => {
+      if (stopped()) return;
+      plots.setCorrelations(summary ? new Correlations(id, summary) : null);
+      redraw();
+    }).catch(() => {});
+  }
+  // Asks when `study` has results the last answer did not see and it is time to.
+  return (study) => {
+    const { counts: { done }, complete } = study.progress;
+    if (done === 0) return;
+    const due = done !== asked?.done && Date.now() - (asked?.at ?? 0) >= kCorrelationsRefreshMs;
+    if (!asked || (complete && !asked.complete) || due) ask(study);
+  };
 }
+
+// The grid statistics change only with the cases' states and results.
+const countsKey = (study) => JSON.stringify(study.progress.counts);
 
 export async function showStudy(view, parameters, { showNotice }) {
   const state = new ViewState(parameters);
@@ -102,6 +121,7 @@ export async function showStudy(view, parameters, { showNotice }) {
   const firstCases = caseTable.fetchPage();
   firstCases.catch(() => {});
   const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
+  const units = study.units;
   let current = { study, grid };
   let timer = null;
   let stopped = false;
@@ -114,31 +134,37 @@ export async function showStudy(view, parameters, { showNotice }) {
       showNotice(`cancel failed: ${error.message}`);
     }
   };
-  let top = header(study, { onCancel });
   const plots = createPlots({ state });
   const tablesHolder = el('div');
   const controlsHolder = el('div');
-  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, (changes) => {
+  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, units, (changes) => {
     state.set(changes);
     drawControls();
-    plots.draw(current.grid);
+    if (Object.keys(changes).every((name) => name === 'outcome')) plots.drawOutcome(current.grid, units);
+    else plots.draw(current.grid, units);
   }));
-  const headerHolder = el('div', {}, top.node);
+  const headerHolder = el('div', {}, header(study, { onCancel }));
   replaceChildren(view, headerHolder,
-    el('h2', {}, 'Axes'), axesTable(grid.axes),
+    el('h2', {}, 'Axes'), axesTable(grid.axes, units),
     el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tablesHolder,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
-  await Promise.all([plots.draw(grid), caseTable.load(grid.axes, firstCases)]);
-  loadOptionalParts(id, { hasResults: study.progress.counts.done > 0, plots, tablesHolder, redraw: () => plots.draw(current.grid), stopped: () => stopped });
+  await Promise.all([plots.draw(grid, units), caseTable.load(grid.axes, units, firstCases)]);
+  const askResultParts = createResultParts(id, { plots, tablesHolder,
+    redraw: () => plots.drawOutcome(current.grid, units), stopped: () => stopped });
+  askResultParts(study);
 
   async function refresh() {
-    const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
+    const [nextStudy, nextGrid] = await Promise.all([getJson(`/api/studies/${id}`),
+      getJson(`/api/studies/${id}/grid`)]);
     if (stopped) return;
+    const gridChanged = countsKey(nextStudy) !== countsKey(current.study);
     current = { study: nextStudy, grid: nextGrid };
-    top = header(nextStudy, { onCancel });
-    replaceChildren(headerHolder, top.node);
-    await Promise.all([plots.draw(nextGrid), caseTable.load(nextGrid.axes)]);
+    replaceChildren(headerHolder, header(nextStudy, { onCancel }));
+    askResultParts(nextStudy);
+    if (!gridChanged) return;
+    caseTable.forget();
+    await Promise.all([plots.draw(nextGrid, units), caseTable.load(nextGrid.axes, units)]);
   }
   async function poll() {
     try {

@@ -1,42 +1,90 @@
 // The correlations panel of a study page: for the plotted outcome, x and slice, each group's fitted
-// critical values v10, v50, v90 with their 95 % intervals and the fit's status, and the scaling
-// exponents of v50 (docs/CORRELATIONS.md).
+// critical values v10, v50, v90 with their 95 % intervals and the fit's status, a warning for each
+// value the data do not pin down (its estimate outside the tested doses, or its interval reaching
+// far beyond them), and the scaling exponents of v50 (docs/CORRELATIONS.md).
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
 import { axisLabel } from '../series.js';
-import { kLevelNames } from '../correlations.js';
+import { extrapolations, kFarBeyond, kLevels, levelName } from '../correlations.js';
+import { unitText } from '../units.js';
 
-const interval = (critical) => (critical && typeof critical.estimate === 'number'
-  ? `${formatNumber(critical.estimate)} [${(critical.ci95 || []).map((v) => formatNumber(v)).join(', ')}]` : '–');
+function interval(critical, warning) {
+  if (!critical || typeof critical.estimate !== 'number') return '–';
+  const text = `${formatNumber(critical.estimate)} [${(critical.ci95 || []).map((v) => formatNumber(v)).join(', ')}]`;
+  return warning ? [text, ' ', el('span', { class: 'warning-mark', title: warning }, '⚠')] : text;
+}
 
-function criticalColumns(shownAxes) {
+function criticalColumns(shownAxes, { units, dose }, warningOf) {
+  const unit = dose === 'impact_speed' && units.speed ? ` (${unitText(units.speed)})` : '';
   return [
-    ...shownAxes.map((axis) => ({ label: axisLabel(axis), value: (fit) => formatNumber(fit.group[axis], 4), numeric: true })),
+    ...shownAxes.map((axis) => ({ label: axisLabel(axis, units), value: (fit) => formatNumber(fit.group[axis], 4),
+      numeric: true })),
     { label: 'fit', value: (fit) => fit.name }, { label: 'status', value: (fit) => fit.status },
     { label: 'cases', value: (fit) => fit.cases, numeric: true },
-    ...Object.entries(kLevelNames).map(([level, name]) => ({
-      label: `${name} (95 %)`, value: (fit) => interval((fit.critical || []).find((c) => String(c.level) === level)), numeric: true })),
+    ...kLevels.map((level) => ({
+      label: `${levelName(level, dose)}${unit}, 95 %`, numeric: true,
+      value: (fit) => interval((fit.critical || []).find((c) => c.level === level), warningOf(fit, levelName(level,
+        dose))) })),
   ];
 }
 
-function scalingText(fit) {
-  if (!fit || !fit.exponents) return null;
-  const terms = Object.entries(fit.exponents).map(([axis, e]) =>
-    `${axisLabel(axis)}^${formatNumber(e.estimate)} [${e.ci95.map((v) => formatNumber(v)).join(', ')}]`);
-  return el('p', { id: 'correlations-scaling' }, `Scaling of v50 (${fit.status}): v50 ∝ ${terms.join(' · ')} (95 % intervals).`);
+const intervalText = (bounds) => (bounds || []).map((v) => formatNumber(v)).join(', ');
+const groupText = (group, units) => Object.entries(group).map(([axis,
+  value]) => `${axisLabel(axis, units)} = ${value}`).join(', ');
+
+// One line per extrapolated critical value.
+function warningLines(found, units, doseUnit) {
+  if (found.length === 0) return null;
+  const text = ({ fit, level, critical, range }) => {
+    const [lo, hi] = critical.ci95 || [];
+    const where = groupText(fit.group, units);
+    const value = `${formatNumber(critical.estimate)} [${formatNumber(lo)}, ${formatNumber(hi)}]${doseUnit}`;
+    const tested = `${formatNumber(range[0])}–${formatNumber(range[1])}${doseUnit}`;
+    return `${level}${where ? ` at ${where}` : ''}: ${value}, beyond the tested ${tested}: ` +
+      'an extrapolation, not a measurement.';
+  };
+  return el('ul', { class: 'warnings', id: 'correlations-warnings' }, found.map((entry) => el('li', {}, '⚠ ',
+    text(entry))));
+}
+
+// "v50 ∝ N^e [lo, hi]" for each scaling fit that has exponents; nothing for those without.
+function scalingLines(fits, units) {
+  const lines = fits.filter((fit) => fit.exponents && Object.keys(fit.exponents).length > 0).map((fit) => {
+    const terms = Object.entries(fit.exponents).map(([axis, e]) =>
+      `${axisLabel(axis, units)}^${formatNumber(e.estimate)} [${intervalText(e.ci95)}]`);
+    const where = groupText(fit.group || {}, units);
+    return el('p', { class: 'scaling' },
+      `Scaling of v50${where ? ` at ${where}` : ''} (${fit.status}): v50 ∝ ${terms.join(' · ')} ` +
+      '(exponents with 95 % intervals).');
+  });
+  return lines.length ? el('div', { id: 'correlations-scaling' }, lines) : null;
 }
 
 export function createCorrelationsPanel() {
   const body = el('div');
-  const node = el('section', { class: 'panel', id: 'panel-correlations', hidden: true }, el('h2', {}, 'Correlations'), body,
-    el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the dose; critical values where ' +
-      'the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood intervals (docs/CORRELATIONS.md).'));
-  function draw(correlations, { outcome, xAxis, slice }) {
+  const note = el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the dose; ' +
+    'critical values where the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood intervals ' +
+    `(docs/CORRELATIONS.md). ⚠: the estimate lies outside the tested range of the dose, or its interval reaches more ` +
+    `than ${kFarBeyond} times beyond it.`);
+  const node = el('section', { class: 'panel', id: 'panel-correlations', hidden: true },
+    el('h2', {}, 'Correlations'), body, note);
+
+  // Returns the extrapolated critical values drawn (for the critical-speed plot's note).
+  function draw(correlations, { outcome, xAxis, slice, units }) {
     node.hidden = !correlations;
-    if (!correlations) return;
+    if (!correlations) return [];
     const fits = correlations.groupFits(outcome, xAxis, slice);
+    const found = extrapolations(fits);
+    const warningOf = (fit, level) => {
+      const entry = found.find((f) => f.fit === fit && f.level === level);
+      return entry && `beyond the tested ${formatNumber(entry.range[0])}–${formatNumber(entry.range[1])}`;
+    };
+    const doseUnit = xAxis === 'impact_speed' && units.speed ? ` ${unitText(units.speed)}` : '';
     const shownAxes = fits.length ? Object.keys(fits[0].group).filter((axis) => !(axis in slice)) : [];
-    replaceChildren(body, fits.length === 0 ? el('p', { class: 'note' }, `No fit of ${outcome} along ${axisLabel(xAxis)}.`)
-      : table(criticalColumns(shownAxes), fits, { id: 'correlations-table' }), scalingText(correlations.scaling(outcome)));
+    replaceChildren(body, fits.length === 0 ? el('p', { class: 'note' },
+      `No fit of ${outcome} along ${axisLabel(xAxis, units)}.`)
+      : table(criticalColumns(shownAxes, { units, dose: xAxis }, warningOf), fits, { id: 'correlations-table' }),
+    warningLines(found, units, doseUnit), scalingLines(correlations.scalings(outcome, slice), units));
+    return found;
   }
   return { node, draw };
 }

@@ -1,16 +1,15 @@
 // The lookup-table downloads of a study (the export service, GET /api/studies/ID/tables): one link
-// per format for the chosen kind of table. Shown only when the service answers HEAD for CSV.
+// per format for the chosen kind of table. Shown once the study has results.
 import { el, replaceChildren, select } from '../dom.js';
 
 const kKinds = [['grid', 'grid: per grid point'], ['fit', 'fit: from the fitted curves'], ['sections', 'sections: per fragment size section']];
-const kFormatLabels = { csv: 'CSV', dat: '.dat', json: 'JSON', hdf5: 'HDF5', melcor: 'MELCOR' };
+const kFormats = [['csv', 'CSV'], ['dat', '.dat'], ['json', 'JSON'], ['hdf5', 'HDF5'], ['melcor', 'MELCOR']];
 
-export function tablesPanel(studyId, formats) {
-  if (formats.length === 0) return null;
+export function tablesPanel(studyId) {
   const links = el('p', { id: 'table-links' });
-  const drawLinks = (kind) => replaceChildren(links, formats.map((format) => [el('a', {
+  const drawLinks = (kind) => replaceChildren(links, kFormats.map(([format, label]) => [el('a', {
     href: `/api/studies/${studyId}/tables?format=${format}&kind=${kind}`, download: true, dataset: { format, kind },
-  }, kFormatLabels[format] || format), ' ']));
+  }, label), ' ']));
   drawLinks('grid');
   return el('section', { class: 'panel', id: 'tables-panel' }, el('h2', {}, 'Lookup tables'),
     el('div', { class: 'controls' }, el('label', {}, 'Table ', select(kKinds, 'grid', drawLinks, { id: 'choose-table-kind' }))),
