@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages aerobreak needs (only those missing), the dashboard's npm packages
-# (from the committed lockfiles) and builds aerobreak into build/.
+# (from the committed lockfiles) and builds the aerobreak program into build/ (only the program: ctest
+# builds the tests before it runs them, cmake/BuildBeforeTests.cmake).
 # Idempotent and quiet when everything is already there. Usage: scripts/setup.sh [--no-build]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,6 +21,7 @@ packages=(
   libeigen3-dev
   libboost-dev
   gfortran
+  openfoam
   chromium
 )
 # Node.js and npm for the dashboard's libraries and browser tests; a machine that already has a
@@ -63,5 +65,5 @@ build_dir=${AEROBREAK_BUILD_DIR:-build}
 if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-cmake --build "$build_dir" -j"$(nproc)"
+cmake --build "$build_dir" -j"$(nproc)" --target aerobreak
 echo "setup: built $build_dir/aerobreak"

@@ -103,6 +103,23 @@ ContactGraph find_contacts(const Cluster& cluster, double relative_tolerance) {
   return graph;
 }
 
+std::optional<PrimaryOverlap> find_overlap_beyond(const Cluster& cluster, double fraction) {
+  if (cluster.size() < 2) return std::nullopt;
+  const double largest = *std::max_element(cluster.radius.begin(), cluster.radius.end());
+  const CellList cells(cluster, 2.0 * largest);
+  std::optional<PrimaryOverlap> found;
+  for (std::size_t i = 0; i < cluster.size() && !found; ++i) {
+    const Vec3& xi = cluster.position[i];
+    cells.for_each_near(xi, [&](std::size_t j) {
+      if (found || j <= i) return;
+      const double smaller = std::min(cluster.radius[i], cluster.radius[j]);
+      const double overlap = cluster.radius[i] + cluster.radius[j] - norm(cluster.position[j] - xi);
+      if (overlap > fraction * smaller) found = PrimaryOverlap{i, j, overlap, smaller};
+    });
+  }
+  return found;
+}
+
 std::vector<std::size_t> connected_component_sizes(
     std::size_t primary_count, const std::vector<std::pair<std::size_t, std::size_t>>& edges) {
   DisjointSets sets(primary_count);

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+
 #include "engine/contact/contact_state.hpp"
 #include "engine/contact/dissipation.hpp"
 #include "engine/contact/rolling_resistance.hpp"
@@ -54,16 +56,18 @@ struct ContactModel {
            twisting.energy(s.twist_angle, s.contact_radius, c);
   }
 
-  // Energy a contact takes with it when it lets go at `overlap`: what its springs stored at the
-  // last evaluation, plus the elastic work over the final step, trapezoidal as velocity Verlet
-  // applies it with the force falling to zero, plus the work of `timing_force`, the normal force
-  // that times the jump to the crossing of the break overlap (dem/event_timing.hpp), over its two
-  // half kicks (taken as the final step's travel each); and the last damping force's work over
-  // its final half step.
-  void release(const ContactState& s, double overlap, double approach_rate, double dt, double timing_force,
-               DissipationTally& tally) const {
+  // Energy a contact takes with it when it lets go, found at `overlap` after the step: the work
+  // of its normal force is booked only where that force acts, from the last evaluation down to
+  // where the law lets go, max(overlap, -delta_b) (exactly, as the change of U_n; a Hertz or DMT
+  // contact lets go at delta = 0, where U_n = 0), so that it takes U_n there; with it what the
+  // other springs stored at the last evaluation; and the last damping force's work over its final
+  // half step. (The integrator's own error over the final step stays in the balance, as for any
+  // other step: docs/MODEL.md 10.)
+  void release(const ContactState& s, double overlap, double approach_rate, double dt, DissipationTally& tally) const {
     const NormalResponse last = normal.respond(s.overlap, s.constants);
-    tally.breaking += stored_energy(s, s.constants, last) + (0.5 * last.force + timing_force) * (overlap - s.overlap);
+    const double other_springs = stored_energy(s, s.constants, last) - last.energy;
+    const double let_go = std::max(overlap, -s.constants.break_overlap);
+    tally.breaking += normal.respond(let_go, s.constants).energy + other_springs;
     tally.damping += 0.5 * s.damping_force * approach_rate * dt;
   }
 

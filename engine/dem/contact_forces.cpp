@@ -30,9 +30,9 @@ class ContactForcesFor final : public ContactForces {
   double stored_energy(const ContactState& contact) const override {
     return model_.stored_energy(contact, contact.constants);
   }
-  void release(const ContactState& contact, double overlap, double approach_rate, double dt, double timing_force,
+  void release(const ContactState& contact, double overlap, double approach_rate, double dt,
                DissipationTally& tally) const override {
-    model_.release(contact, overlap, approach_rate, dt, timing_force, tally);
+    model_.release(contact, overlap, approach_rate, dt, tally);
   }
 
   void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
@@ -345,7 +345,7 @@ class ContactForcesFor final : public ContactForces {
     const ContactState state = ledger.pool.state(slot);
     const double timing = ledger.drifted ? ledger.timing_weight * release_timing(state, overlap) : 0.0;
     if (ledger.drifted) ledger.events.note_crossing(state.constants.break_overlap, state.overlap - overlap);
-    model_.release(state, overlap, approach_rate, dt, timing, ledger.tally);
+    model_.release(state, overlap, approach_rate, dt, ledger.tally);
     hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
     slot = -1;

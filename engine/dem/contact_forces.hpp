@@ -101,10 +101,9 @@ class ContactForces {
   virtual NormalResponse normal_response(double overlap, const ContactConstants& constants) const = 0;
   // Elastic energy the springs of a live contact store (ContactModel::stored_energy).
   virtual double stored_energy(const ContactState& contact) const = 0;
-  // Books the energy a contact takes with it when it lets go at `overlap` (ContactModel::release);
-  // `timing_force` is the normal force that timed its last jump (event_timing.hpp), 0 if none.
+  // Books the energy a contact takes with it when it lets go at `overlap` (ContactModel::release).
   virtual void release(const ContactState& contact, double overlap, double approach_rate, double dt,
-                       double timing_force, DissipationTally& tally) const = 0;
+                       DissipationTally& tally) const = 0;
 };
 
 // `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).

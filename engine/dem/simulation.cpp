@@ -435,7 +435,7 @@ void Simulation::close_lost_contacts(const std::vector<std::int32_t>& lost) {
     const double distance = norm(separation);
     const double gap = distance - particles_.radius[c.i] - particles_.radius[c.j];
     const double approach = dot(particles_.velocity[c.i] - particles_.velocity[c.j], separation) / distance;
-    pair_forces_->release(c, -gap, approach, dt_, 0.0, tally_);
+    pair_forces_->release(c, -gap, approach, dt_, tally_);
     if (spec_.van_der_waals) tally_.van_der_waals_handover -= spec_.hamaker.at_gap(gap, c.constants.radius).energy;
     pair_pool_.close(slot);
     ++pair_events_.broken;

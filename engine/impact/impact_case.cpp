@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "engine/impact/case_hints.hpp"
 #include "engine/impact/schema_text.hpp"
 #include "engine/io/cluster_library.hpp"
+#include "engine/io/json_text.hpp"
 
 namespace aerobreak {
 namespace {
@@ -58,9 +59,16 @@ ContactModelSpec model_from(const Json& m) {
 }
 
 // A cluster library (HDF5) holds named clusters: the case names one, or the library holds one.
+// A library that cannot be read (truncated, damaged, not aerobreak's) is a violation naming it.
 void check_library_choice(const std::filesystem::path& path, const std::string& name,
                           std::vector<SchemaViolation>& violations) {
-  const std::vector<std::string> names = list_clusters(path);
+  std::vector<std::string> names;
+  try {
+    names = list_clusters(path);
+  } catch (const std::runtime_error& error) {
+    violations.push_back({"/cluster/file/path", error.what()});
+    return;
+  }
   std::string listed;
   for (std::size_t k = 0; k < names.size() && k < 10; ++k) listed += (k == 0 ? "" : ", ") + names[k];
   if (names.size() > 10) listed += ", ...";
@@ -187,6 +195,25 @@ void read_model(const Json& d, ImpactCase& c, Violations& violations) {
 
 }
 
+// Why the impact speed cannot reach the wall in time, in the case's own units.
+std::string too_slow_message(const Json& d, const ImpactCase& c, double approach_time) {
+  std::ostringstream message;
+  if (!c.physical) {
+    message << "is too small: the cluster would reach the wall after " << approach_time
+            << " tau (gap / normal speed), beyond /run/time_limit (" << c.time_limit << " tau)";
+    return message.str();
+  }
+  const double tau = c.physical->time_unit();
+  message << "is too small: at " << d["impact"]["speed"].get<double>() << " m/s the cluster would reach the wall after "
+          << approach_time * tau << " s (the gap, " << c.gap << " d = " << c.gap * c.physical->diameter
+          << " m, over the normal speed), beyond ";
+  if (d["run"].contains("time_limit_s"))
+    message << "/run/time_limit_s (" << c.time_limit * tau << " s)";
+  else
+    message << "/run/time_limit (" << c.time_limit << " tau = " << c.time_limit * tau << " s)";
+  return message.str();
+}
+
 // Time limit, snapshot interval, time step and the settle criterion.
 void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   auto violation = [&](const std::string& pointer, const std::string& message) {
@@ -216,26 +243,21 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   // (docs/IMPACT.md): a speed too small to reach the wall within time_limit (5e-324 d/tau, say,
   // whose restitution would be noise over nothing) is no impact.
   const double approach_time = c.gap / (c.speed * std::cos(c.angle_degrees * std::numbers::pi / 180.0));
-  if (c.time_limit > 0.0 && !(approach_time < c.time_limit)) {
-    std::ostringstream message;
-    message << "is too small: the cluster would reach the wall after " << approach_time
-            << " tau (gap / normal speed), beyond /run/time_limit (" << c.time_limit << " tau)";
-    violation("/impact/speed", message.str());
-  }
-
+  if (c.time_limit > 0.0 && !(approach_time < c.time_limit))
+    violation("/impact/speed", too_slow_message(d, c, approach_time));
 }
 
 }  // namespace
 
-ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory) {
-  std::vector<SchemaViolation> violations = case_schema().validate_and_complete(document);
-  if (!violations.empty()) throw CaseError(std::move(violations));
+namespace {
 
+// A schema-valid, completed case read into reduced units, with the violations of the rules the
+// schema does not state (each names the field to change).
+ImpactCase read_case(Json document, const std::filesystem::path& base_directory, Violations& violations) {
   ImpactCase c;
-  c.document = document;
+  c.document = std::move(document);
   const Json& d = c.document;
   c.name = d.value("name", std::string());
-  // Rules the schema does not state are checked as each part is read; each names the field to change.
   read_materials(d, c);
   read_model(d, c, violations);
   c.cluster = cluster_source(c.document["cluster"], base_directory, violations);
@@ -247,19 +269,53 @@ ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesys
 
   c.thresholds.bounce_share = d["classification"]["largest_fragment_share"].get<double>();
   read_run(d, c, violations);
+  return c;
+}
 
+// Every problem of a case the schema refuses: its violations and, as far as the rest can be read
+// without the fields they name, the rules' violations of the rest. A material in the other unit
+// system is reported as that (at /units), followed by the problems of the case in the units it meant.
+Violations all_violations(const Json& given, Violations schema_violations, const std::filesystem::path& base_directory) {
+  if (const auto hint = units_hint(given)) {
+    Json meant = given;
+    meant["units"] = hint->meant_units;
+    Violations all{hint->violation};
+    try {
+      parse_impact_case(std::move(meant), base_directory);
+    } catch (const CaseError& error) {
+      all.insert(all.end(), error.violations().begin(), error.violations().end());
+    }
+    return all;
+  }
+  if (given.is_object() && given.value("units", std::string()) == "physical") add_unit_hints(schema_violations);
+  if (const auto rest = without_violating_members(case_schema(), given, schema_violations)) {
+    Violations rules;
+    read_case(*rest, base_directory, rules);
+    for (auto& rule : rules)
+      if (std::none_of(schema_violations.begin(), schema_violations.end(),
+                       [&](const SchemaViolation& v) { return v.pointer == rule.pointer; }))
+        schema_violations.push_back(std::move(rule));
+  }
+  return schema_violations;
+}
+
+}  // namespace
+
+ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory) {
+  const Json given = document;
+  Violations violations = case_schema().validate_and_complete(document);
+  if (!violations.empty()) throw CaseError(all_violations(given, std::move(violations), base_directory));
+  ImpactCase c = read_case(std::move(document), base_directory, violations);
   if (!violations.empty()) throw CaseError(std::move(violations));
   return c;
 }
 
 ImpactCase load_impact_case(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw CaseError({{"", "cannot open case file " + path.string()}});
   Json document;
   try {
-    document = Json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw CaseError({{"", path.string() + " is not valid JSON: " + e.what()}});
+    document = read_json_file(path, "case file");
+  } catch (const InputFileError& e) {
+    throw CaseError({{"", std::string(e.what())}});
   }
   return parse_impact_case(std::move(document), path.parent_path());
 }

@@ -85,7 +85,9 @@ const JsonSchema& result_schema();
 // cannot state (an adhesive law needs a surface energy, ...) and converts to reduced units.
 // Relative cluster file paths are resolved against `base_directory`. Throws CaseError.
 ImpactCase parse_impact_case(nlohmann::ordered_json document, const std::filesystem::path& base_directory = {});
-// Reads and parses a case file; a file that is not JSON throws CaseError naming the parse error.
+// Reads and parses a case file, bounded as a request body (engine/io/json_text.hpp: a regular file
+// of at most 1 MiB, nesting at most 64 deep, numbers a double holds); a file that cannot be read
+// that way or is not JSON throws CaseError naming the file and the problem.
 ImpactCase load_impact_case(const std::filesystem::path& path);
 
 }  // namespace aerobreak

@@ -371,6 +371,19 @@ double ImpactResult::damage_ratio() const {
                               : std::numeric_limits<double>::quiet_NaN();
 }
 
+namespace {
+
+// E_roll (eq 18's rolling energy) and E_kin / E_roll, or that the case has no rolling resistance.
+std::string rolling_line(const ImpactResult& r, const std::string& si_value) {
+  const double rolling_energy = r.contact_energies.rolling_energy;
+  if (!r.impact_case.model.rolling)
+    return "E_roll: no rolling resistance (/model/rolling/enabled is false), so no E_kin / E_roll\n";
+  return formatted("E_roll = %.6g k_n d^2", rolling_energy) + si_value +
+         formatted(", E_kin / E_roll = %.6g\n", r.energy_groups.energy_over_rolling);
+}
+
+}  // namespace
+
 std::string describe_setup(const ImpactResult& r) {
   const ImpactCase& c = r.impact_case;
   const ContactEnergies& e = r.contact_energies;
@@ -397,8 +410,7 @@ std::string describe_setup(const ImpactResult& r) {
          "\n" + formatted("E_break = %.6g k_n d^2", e.breaking_energy) + si(e.breaking_energy, energy_unit, "J") +
          formatted(" (%.4f F_c delta_c), E_kin / (N_c E_break) = %.6g\n", scale > 0.0 ? e.breaking_energy / scale : NAN,
                    r.energy_groups.energy_per_contact) +
-         formatted("E_roll = %.6g k_n d^2", e.rolling_energy) + si(e.rolling_energy, energy_unit, "J") +
-         formatted(", E_kin / E_roll = %.6g\n", r.energy_groups.energy_over_rolling);
+         rolling_line(r, si(e.rolling_energy, energy_unit, "J"));
 }
 
 std::vector<SchemaViolation> validate_result(const nlohmann::ordered_json& document) {

@@ -3,18 +3,21 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
 
 #include "engine/cluster/cluster_analysis.hpp"
+#include "engine/cluster/cluster_contacts.hpp"
 #include "engine/cluster/neighbour_order.hpp"
 #include "engine/cluster/random_stream.hpp"
 #include "engine/core/run_clock.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/relaxation.hpp"
 #include "engine/dem/simulation.hpp"
+#include "engine/impact/contact_scales.hpp"
 #include "engine/impact/impact_measurement.hpp"
 #include "engine/impact/settle.hpp"
 #include "engine/io/cluster_library.hpp"
@@ -80,12 +83,32 @@ void tell(const std::function<void(const std::string&)>& log, const std::string&
   if (log) log(line);
 }
 
+// Primaries that overlap by more than the contact laws' small-strain range (docs/MODEL.md 3.7:
+// half the smaller radius) start the run far outside any law: refused, naming the first such pair.
+void require_overlaps_in_range(const Cluster& cluster, const std::filesystem::path& file) {
+  const double limit = StrainLimits{}.overlap_ratio;
+  const auto deep = find_overlap_beyond(cluster, limit);
+  if (!deep) return;
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "primaries %zu and %zu (counted from 0) overlap by %.6g d, more than %g of the smaller radius "
+                "(%.6g d), the contact laws' small-strain range (docs/MODEL.md 3.7): no impact can start from it",
+                deep->i, deep->j, deep->overlap, limit, deep->smaller_radius);
+  throw CaseError({{"/cluster/file/path", file.string() + ": " + message}});
+}
+
 // A case's cluster file: a cluster library (HDF5, told by its signature), the named cluster or its
-// only one, or an XYZ file.
+// only one, or an XYZ file; its primaries may overlap only within the small-strain range.
 Cluster read_case_cluster(const ClusterSource& source) {
-  if (!is_hdf5_file(source.file)) return read_xyz_cluster(source.file, source.default_radius);
-  const std::string name = source.library_name.empty() ? list_clusters(source.file).at(0) : source.library_name;
-  return read_cluster(source.file, name).cluster;
+  Cluster cluster;
+  if (!is_hdf5_file(source.file)) {
+    cluster = read_xyz_cluster(source.file, source.default_radius);
+  } else {
+    const std::string name = source.library_name.empty() ? list_clusters(source.file).at(0) : source.library_name;
+    cluster = read_cluster(source.file, name).cluster;
+  }
+  require_overlaps_in_range(cluster, source.file);
+  return cluster;
 }
 
 }  // namespace

@@ -292,6 +292,20 @@ std::vector<SchemaViolation> JsonSchema::validate_and_complete(nlohmann::ordered
   return out;
 }
 
+std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema, nlohmann::ordered_json document,
+                                                                const std::vector<SchemaViolation>& violations) {
+  for (const auto& violation : violations) {
+    if (violation.pointer.empty()) return std::nullopt;
+    const Json::json_pointer member(violation.pointer);
+    if (!document.contains(member)) continue;
+    Json& parent = document[member.parent_pointer()];
+    if (!parent.is_object()) return std::nullopt;
+    parent.erase(member.back());
+  }
+  if (!schema.validate_and_complete(document).empty()) return std::nullopt;
+  return document;
+}
+
 bool json_equal(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b) {
   if (a.is_number() && b.is_number()) return numbers_equal(a, b);
   if (a.type() != b.type()) return false;

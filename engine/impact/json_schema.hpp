@@ -2,6 +2,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,13 @@ class JsonSchema {
 
 // Checks a schema (see JsonSchema) and resolves its references; std::invalid_argument otherwise.
 std::shared_ptr<const JsonSchema::Compiled> compile_json_schema(nlohmann::ordered_json schema);
+
+// The document without the members that `violations` name, completed again with the schema's
+// defaults: what the rest of a refused document looks like, so that its other problems can be
+// checked and reported in the same answer. nullopt when that is no valid document either (a
+// violation names a missing required member, an array item or the document itself).
+std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema, nlohmann::ordered_json document,
+                                                                const std::vector<SchemaViolation>& violations);
 
 // Equality of JSON values as JSON Schema defines it (const, enum): objects equal whatever the
 // order of their members, numbers by value (1 == 1.0), no equality across types (false != 0).

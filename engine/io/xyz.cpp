@@ -6,9 +6,13 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "engine/io/bounded_input.hpp"
 
 namespace aerobreak {
 
@@ -50,6 +54,13 @@ bool equals_ignoring_case(std::string_view a, std::string_view b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](char x, char y) { return lower(x) == lower(y); });
 }
 
+// At most the first 80 characters of `text`, for a message that quotes a file (a line of a
+// 256 MiB file can be the whole file).
+std::string excerpt(std::string_view text) {
+  constexpr std::size_t kQuoted = 80;
+  return text.size() <= kQuoted ? std::string(text) : std::string(text.substr(0, kQuoted)) + "...";
+}
+
 // Reads lines one by one, knows their numbers, and words errors as "source:line: reason: 'line'".
 class LineSource {
  public:
@@ -65,7 +76,7 @@ class LineSource {
   std::size_t number() const { return number_; }
 
   [[noreturn]] void fail(const std::string& reason) const {
-    throw std::runtime_error(source_name_ + ":" + std::to_string(number_) + ": " + reason + ": '" + line_ + "'");
+    throw std::runtime_error(source_name_ + ":" + std::to_string(number_) + ": " + reason + ": '" + excerpt(line_) + "'");
   }
   [[noreturn]] void fail_at_end(const std::string& reason) const {
     throw std::runtime_error(source_name_ + ": " + reason);
@@ -127,8 +138,8 @@ std::optional<ColumnLayout> declared_layout(const LineSource& source) {
 
 double finite_number(const LineSource& source, std::string_view field) {
   const std::optional<double> value = parse_double(field);
-  if (!value) source.fail("'" + std::string(field) + "' is not a number");
-  if (!std::isfinite(*value)) source.fail("'" + std::string(field) + "' is not finite");
+  if (!value) source.fail("'" + excerpt(field) + "' is not a number");
+  if (!std::isfinite(*value)) source.fail("'" + excerpt(field) + "' is not finite");
   return *value;
 }
 
@@ -227,8 +238,7 @@ Cluster read_xyz_cluster(std::istream& in, double default_radius, std::string_vi
 }
 
 Cluster read_xyz_cluster(const std::filesystem::path& path, double default_radius) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open for reading: " + path.string());
+  std::istringstream in(read_regular_file(path, kMaxClusterTextBytes, "cluster file"));
   return read_xyz_cluster(in, default_radius, path.string());
 }
 

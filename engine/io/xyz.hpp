@@ -19,6 +19,8 @@ namespace aerobreak {
 // Malformed lines, non-finite numbers, radii <= 0 and a particle count that disagrees with the
 // count line throw std::runtime_error naming the source, the line number and the line.
 Cluster read_xyz_cluster(std::istream& in, double default_radius = 0.5, std::string_view source_name = "XYZ input");
+// A file only if it is a regular file of at most kMaxClusterTextBytes (bounded_input.hpp; an
+// InputFileError, a std::runtime_error, names it otherwise).
 Cluster read_xyz_cluster(const std::filesystem::path& path, double default_radius = 0.5);
 
 // Writes the plain form ("x y z radius" per line after a '#' header) with the shortest decimal

@@ -21,6 +21,7 @@
 #include "engine/impact/cluster_generation.hpp"
 #include "engine/io/cluster_files.hpp"
 #include "engine/io/xyz.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 
 namespace aerobreak {
 namespace {
@@ -35,7 +36,7 @@ constexpr double kNotGiven = std::numeric_limits<double>::quiet_NaN();
 // (CLI11 returns a RuntimeError's exit code without printing anything itself).
 [[noreturn]] void fail_command(const std::string& verb, const std::string& message) {
   std::cerr << "aerobreak cluster " << verb << ": error: " << message << "\n";
-  throw CLI::RuntimeError(1);
+  throw CLI::RuntimeError(kExitError);
 }
 
 template <class Action>

@@ -15,6 +15,7 @@
 #include "engine/impact/impact_run.hpp"
 #include "engine/io/h5md_writer.hpp"
 #include "engine/io/xyz.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 
 namespace aerobreak {
 namespace {
@@ -126,15 +127,19 @@ void print_lines(const std::string& text) {
   }
 }
 
+int report_invalid_case(const ImpactOptions& o, const CaseError& e) {
+  std::cerr << "aerobreak impact: invalid case " << o.case_file << ":\n";
+  for (const auto& v : e.violations())
+    std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
+  return kExitInvalidInput;
+}
+
 int run_command(const ImpactOptions& o) {
   ImpactCase impact_case;
   try {
     impact_case = load_impact_case(o.case_file);
   } catch (const CaseError& e) {
-    std::cerr << "aerobreak impact: invalid case " << o.case_file << ":\n";
-    for (const auto& v : e.violations())
-      std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
-    return 1;
+    return report_invalid_case(o, e);
   }
   try {
     DocumentFile output(o.output);
@@ -159,9 +164,12 @@ int run_command(const ImpactOptions& o) {
                    static_cast<long long>(result.steps), result.wall_clock_seconds, result.cpu_seconds,
                    result.particle_steps_per_second, result.classification.reason.c_str());
     output.write(to_json(result));
+  } catch (const CaseError& e) {
+    // Found when the cluster is read (its primaries overlap beyond the contact laws' range).
+    return report_invalid_case(o, e);
   } catch (const std::exception& e) {
     std::cerr << "aerobreak impact: " << o.case_file << ": " << e.what() << "\n";
-    return 3;
+    return kExitPartlyFailed;
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include "orchestrator/cli/bench_command.hpp"
 #include "orchestrator/cli/impact_command.hpp"
 #include "orchestrator/cli/cluster_command.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/run_command.hpp"
 #include "orchestrator/cli/serve_command.hpp"
@@ -23,6 +24,14 @@ constexpr const char* kAbout =
     "damping, Mindlin friction, rolling and twisting resistance), classifies each impact as stick,\n"
     "bounce or break-up with its fragment-size distribution, and turns sweeps of impacts into\n"
     "correlation tables for system-level aerosol codes.";
+
+// CLI11 prints the message; every command-line error (an unknown option, a missing argument, a
+// file it names that does not exist) ends with one status, not CLI11's 100-114.
+int exit_status(const CLI::App& app, const CLI::ParseError& error) {
+  const int cli11_status = app.exit(error);
+  if (dynamic_cast<const CLI::RuntimeError*>(&error) || cli11_status == 0) return cli11_status;
+  return aerobreak::kExitInvalidInput;
+}
 
 }  // namespace
 
@@ -52,7 +61,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return exit_status(app, e);
   }
   if (argc == 1) {
     std::cout << app.help();

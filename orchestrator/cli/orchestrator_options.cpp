@@ -10,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include "orchestrator/store/data_paths.hpp"
+
 namespace aerobreak {
 
 void OrchestratorOptions::add_to(CLI::App& command) {
@@ -49,9 +51,7 @@ ServiceOptions OrchestratorOptions::service_options() const {
 }
 
 std::filesystem::path OrchestratorOptions::data_directory() const {
-  if (!data.empty()) return data;
-  std::filesystem::path path(store);
-  return path.replace_extension(".data");
+  return data.empty() ? default_data_directory(store) : std::filesystem::path(data);
 }
 
 SchedulerOptions OrchestratorOptions::scheduler_options(std::function<void(const std::string&)> log) const {

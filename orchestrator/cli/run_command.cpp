@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
@@ -17,9 +19,10 @@
 #include "orchestrator/cli/search_table.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/search_endpoints.hpp"
-#include "orchestrator/service/correlation_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/study/field_units.hpp"
+#include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
 namespace {
@@ -29,7 +32,17 @@ struct RunOptions {
   OrchestratorOptions orchestrator;
   int port = 8080;
   bool keep_serving = false;
+  bool recompute_data_files = false;
 };
+
+// ", 3 computed again: data file lost or damaged", or the advice when lost files were not asked for.
+std::string lost_files_text(const SubmissionReceipt& receipt) {
+  if (receipt.recomputed)
+    return ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged";
+  if (!receipt.data_files_lost) return {};
+  return ", " + std::to_string(receipt.data_files_lost) +
+         " with a data file lost or damaged (their results are kept; --recompute-data-files computes the files again)";
+}
 
 std::string duration_text(double seconds) {
   char text[32];
@@ -105,11 +118,11 @@ void print_failures(Store& store, std::int64_t study_id) {
 }
 
 // The study's lookup tables for system codes (docs/EXPORT.md), next to the store.
-void print_tables(Store& store, std::int64_t study_id) {
+void print_tables(Store& store, StudyFits& fits, std::int64_t study_id) {
   auto directory = store.file();
   directory.replace_extension(".tables");
   try {
-    const auto files = write_default_tables(store, study_id, directory);
+    const auto files = write_default_tables(store, fits, study_id, directory);
     std::cout << "\nLookup tables for system codes (docs/EXPORT.md) in " << directory.string() << "/:\n";
     for (const auto& file : files) std::cout << "  " << file.filename().string() << "\n";
   } catch (const std::exception& error) {
@@ -117,20 +130,28 @@ void print_tables(Store& store, std::int64_t study_id) {
   }
 }
 
-// The critical speeds of the study's fits (computed and stored now, so that the service serves them
-// from the store afterwards).
-void print_critical_speeds(Store& store, std::int64_t study_id) {
+// The critical speeds of the study's fits (fitted and stored now: the tables and the service then
+// read them from the store).
+void print_critical_speeds(Store& store, StudyFits& fits, std::int64_t study_id) {
   const auto study = store.study(study_id);
   try {
-    CorrelationCache cache(store);
-    const auto set = cache.current(*study, correlation_request(*study, std::nullopt));
-    std::cout << "\nCritical speeds in " << speed_unit_label(study->document)
-              << ": logistic fits of P in log impact speed, per group; 95 % profile-likelihood "
-                 "intervals (docs/CORRELATIONS.md)\n\n"
-              << format_critical_table(nlohmann::ordered_json::parse(set->summary));
+    const auto set = fits.current(*study, correlation_request(*study, std::nullopt));
+    std::cout << "\nCritical speeds in " << speed_unit_label(study_unit_system(study->document))
+              << ": logistic fits of P in log impact speed, per group (docs/CORRELATIONS.md)\n\n"
+              << format_critical_table(nlohmann::ordered_json::parse(set->summary), "impact_speed",
+                                       study_unit_system(study->document))
+              << "\n"
+              << critical_table_legend();
   } catch (const CorrelationRequestError& error) {
     std::cout << "\nNo critical speeds: " << error.what() << "\n";
   }
+}
+
+// The service lives as long as the command: its address, printed at the start, is dead from now on.
+void print_no_longer_served(const std::string& url, const std::filesystem::path& store_file) {
+  std::cerr << "aerobreak run: the study is over and " << url << " is no longer served. To see the page, the API or "
+            << "the tables again: aerobreak serve --store " << store_file.string()
+            << " (then http://127.0.0.1:8080/), or run with --keep-serving next time.\n";
 }
 
 int run(RunOptions options) {
@@ -139,20 +160,24 @@ int run(RunOptions options) {
   try {
     study = load_study(options.study_file);
   } catch (const StudyError& error) {
-    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n" << error.what() << "\n";
-    return 1;
+    std::cerr << "aerobreak run: " << options.study_file << " is not a valid study:\n";
+    for (const auto& v : error.violations())
+      std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
+    return kExitInvalidInput;
   }
   if (options.orchestrator.store.empty())
     options.orchestrator.store = "runs/" + std::filesystem::path(options.study_file).stem().stem().string() + ".sqlite";
 
-  Store store(options.orchestrator.store);
   const auto data_directory = options.orchestrator.data_directory();
+  Store store(options.orchestrator.store, Store::Access::orchestrator, data_directory);
   const auto log = line_log(data_directory / "orchestrator.log");
   Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
   StudySubmission submission = make_submission(study);
   DataFileChecker checker;
-  recompute_lost_data_files(submission, store, checker);
-  const auto receipt = store.submit_study(submission);
+  const auto lost = lost_data_files(submission, store, checker);
+  if (options.recompute_data_files) submission.recompute = lost;
+  auto receipt = store.submit_study(submission);
+  receipt.data_files_lost = lost.size();
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.port = options.port;
   service_options.access_log = log;
@@ -160,13 +185,11 @@ int run(RunOptions options) {
   scheduler.start();
 
   const std::string study_url = service->url() + "/api/studies/" + std::to_string(receipt.study_id);
-  const std::string recomputed =
-      receipt.recomputed ? ", " + std::to_string(receipt.recomputed) + " computed again: data file lost or damaged" : "";
   std::cerr << "aerobreak run: study '" << study.name << "': " << receipt.cases << " cases (" << receipt.already_done
-            << " already done" << recomputed << "), store " << store.file().string() << "\n"
+            << " already done" << lost_files_text(receipt) << "), store " << store.file().string() << "\n"
             << "aerobreak run: workers: " << scheduler.status().launcher_command << "\n"
             << "aerobreak run: open " << service->url() << "/?study=" << receipt.study_id
-            << " in a browser (API: " << study_url << ")\n";
+            << " in a browser while the study runs (API: " << study_url << ")\n";
 
   const auto started = std::chrono::steady_clock::now();
   ProgressBar bar;
@@ -180,7 +203,7 @@ int run(RunOptions options) {
       std::cerr << "aerobreak run: interrupted; finished cases are kept: run the same command again to go on\n";
       service->stop();
       scheduler.stop();
-      return 130;
+      return kExitInterrupted;
     }
   }
   bar.finish();
@@ -189,12 +212,16 @@ int run(RunOptions options) {
   std::cout << "Study '" << study.name << "' (" << study_url << ")\n\n";
   // A search's outcome table has a row per value it placed: its groups' crossings say more.
   if (study.search)
-    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)), study.search->axis);
+    std::cout << format_search_table(search_groups_json(store.search_groups(receipt.study_id, false)),
+                                     study.search->axis,
+                                     study_axis_unit(study.search->axis, study_unit_system(study.document)));
   else
-    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)), speed_unit_label(study.document));
-  print_critical_speeds(store, receipt.study_id);
+    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)),
+                                      study_unit_system(study.document));
+  StudyFits fits(store);  // fitted once, for the critical speeds, the fit table and the code
+  print_critical_speeds(store, fits, receipt.study_id);
   print_failures(store, receipt.study_id);
-  print_tables(store, receipt.study_id);
+  print_tables(store, fits, receipt.study_id);
   std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();
@@ -203,7 +230,8 @@ int run(RunOptions options) {
     signals.wait();
   }
   service->stop();
-  return progress.by_status.at("failed") > 0 ? 3 : 0;
+  if (!options.keep_serving) print_no_longer_served(service->url(), store.file());
+  return progress.by_status.at("failed") > 0 ? kExitPartlyFailed : kExitDone;
 }
 
 }  // namespace
@@ -220,12 +248,15 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   command->add_flag("--keep-serving", options->keep_serving, "Keep the service up after the study finished, until Ctrl-C");
+  command->add_flag("--recompute-data-files", options->recompute_data_files,
+                    "Compute again the done cases whose HDF5 data file is missing or damaged (without it they are "
+                    "reported, and their results kept and served)");
   command->callback([options, &exit_code] {
     try {
       exit_code = run(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak run: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

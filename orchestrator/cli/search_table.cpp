@@ -28,18 +28,20 @@ std::string progress_note(const nlohmann::ordered_json& estimate) {
 
 }  // namespace
 
-std::string format_search_table(const nlohmann::ordered_json& groups, const std::string& axis) {
-  std::string text = "Adaptive search of " + axis + " (95 % profile-likelihood intervals):\n";
+std::string format_search_table(const nlohmann::ordered_json& groups, const std::string& axis,
+                                const std::string& unit) {
+  const std::string in_unit = unit.empty() ? "" : " " + unit;
+  std::string text =
+      "Adaptive search of " + axis + (unit.empty() ? "" : " in " + unit) + " (95 % profile-likelihood intervals):\n";
   for (const auto& g : groups) {
     text += "  " + group_label(g.at("group")) + ": " + g.at("state").get<std::string>() + " after " +
             std::to_string(g.at("rounds").get<int>()) + " rounds, " + std::to_string(g.at("cases").get<int>()) + " cases\n";
     for (const auto& e : g.at("estimates")) {
       char level[16];
       std::snprintf(level, sizeof level, "%.2g", e.at("level").get<double>());
-      text += "    P(" + e.at("response").get<std::string>() + ") = " + level + " at " + axis + " " + number(e.at("estimate")) +
-              " [" + number(e.at("lower")) + ", " + number(e.at("upper")) + "]" +
-              progress_note(e) +
-              "\n";
+      text += "    P(" + e.at("response").get<std::string>() + ") = " + level + " at " + axis + " " +
+              number(e.at("estimate")) + " [" + number(e.at("lower")) + ", " + number(e.at("upper")) + "]" + in_unit +
+              progress_note(e) + "\n";
     }
   }
   return text;

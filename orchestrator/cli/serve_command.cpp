@@ -2,6 +2,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -9,6 +10,8 @@
 #include <memory>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
+#include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/service/service.hpp"
 
@@ -30,14 +33,12 @@ struct ServeOptions {
   std::size_t max_cases = 10000;
   std::size_t max_primaries = 100000;
   std::size_t max_connections = ConnectionLimits{}.max_connections;
+  std::size_t max_connections_per_client = 0;  // 0: half of max_connections
   bool quiet = false;
 };
 
 std::string read_token(const std::string& path) {
-  std::ifstream in(path);
-  std::string token;
-  if (!in || !std::getline(in, token)) throw std::runtime_error("cannot read a token from " + path);
-  while (!token.empty() && std::isspace(static_cast<unsigned char>(token.back()))) token.pop_back();
+  const std::string token = read_first_line(path, "token file");
   if (token.size() < 16) throw std::runtime_error("the token in " + path + " is shorter than 16 characters");
   return token;
 }
@@ -60,13 +61,16 @@ void write_port_file(const std::string& path, int port) {
 
 int serve(const ServeOptions& options) {
   ShutdownSignals signals;
-  Store store(options.orchestrator.store);
+  Store store(options.orchestrator.store, Store::Access::orchestrator, options.orchestrator.data_directory());
   const auto log = line_log({});
   Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.host = options.host;
   service_options.port = options.port;
   service_options.connections.max_connections = options.max_connections;
+  service_options.connections.max_connections_per_client =
+      options.max_connections_per_client > 0 ? options.max_connections_per_client
+                                             : std::max<std::size_t>(1, options.max_connections / 2);
   if (!options.quiet) service_options.access_log = log;
   if (!options.token_file.empty()) service_options.token = read_token(options.token_file);
   service_options.study_limits.max_cases = options.max_cases;
@@ -104,16 +108,20 @@ void add_serve_command(CLI::App& app, int& exit_code) {
   command->add_option("--max-primaries", options->max_primaries, "Largest cluster a client may ask for")
       ->capture_default_str();
   command->add_option("--max-connections", options->max_connections,
-                      "Connections served at once; beyond, a connection is answered 503 at once")
+                      "Connections served at once; beyond, a newcomer takes the slot of one that awaits its "
+                      "request, or one of 4 kept for /api/health, or is answered 503")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
+  command->add_option("--max-connections-per-client", options->max_connections_per_client,
+                      "Of them, the most one client address holds [default: half of --max-connections]")
+      ->check(CLI::Range(1, 10000));
   command->add_flag("--quiet", options->quiet, "No access log (one line per request on stderr)");
   command->callback([options, &exit_code] {
     try {
       exit_code = serve(*options);
     } catch (const std::exception& error) {
       std::cerr << "aerobreak serve: " << error.what() << "\n";
-      exit_code = 1;
+      exit_code = kExitError;
     }
   });
 }

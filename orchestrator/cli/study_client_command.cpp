@@ -3,12 +3,12 @@
 #include <httplib.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
+#include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 
@@ -39,6 +39,28 @@ struct ServiceUnreachable {
   std::string message;
 };
 
+// Why a request got no answer, as a sentence (httplib names only the kind of error: "Connection").
+std::string unreachable_reason(httplib::Error error) {
+  switch (error) {
+    case httplib::Error::Connection:
+      return "nothing accepts connections there.\n  Start a service with `aerobreak serve` (or keep the one of a run "
+             "up "
+             "with `aerobreak run STUDY.json --keep-serving`),\n  or give its address with --url or AEROBREAK_URL.";
+    case httplib::Error::ConnectionTimeout:
+      return "no connection within 5 s (is the address right, and reachable?)";
+    case httplib::Error::Read:
+      return "the connection broke before the whole answer came";
+    case httplib::Error::Write:
+      return "the connection broke while the request was sent";
+    case httplib::Error::SSLConnection:
+    case httplib::Error::SSLLoadingCerts:
+    case httplib::Error::SSLServerVerification:
+      return "the TLS connection failed (" + httplib::to_string(error) + ")";
+    default:
+      return "the request failed (" + httplib::to_string(error) + ")";
+  }
+}
+
 std::string environment_or(const char* name, const std::string& fallback) {
   const char* value = std::getenv(name);
   return value && *value ? value : fallback;
@@ -52,10 +74,7 @@ class ApiClient {
     client_.set_connection_timeout(5, 0);
     client_.set_read_timeout(60, 0);
     std::string token = environment_or("AEROBREAK_TOKEN", "");
-    if (!options.token_file.empty()) {
-      std::ifstream in(options.token_file);
-      if (!in || !std::getline(in, token)) throw std::runtime_error("cannot read a token from " + options.token_file);
-    }
+    if (!options.token_file.empty()) token = read_first_line(options.token_file, "token file");
     if (!token.empty()) headers_.emplace("Authorization", "Bearer " + token);
   }
 
@@ -66,7 +85,8 @@ class ApiClient {
 
  private:
   nlohmann::ordered_json answer(const httplib::Result& result, const std::string& path) {
-    if (!result) throw ServiceUnreachable{"cannot reach " + url_ + path + ": " + httplib::to_string(result.error())};
+    if (!result)
+      throw ServiceUnreachable{"no answer from the service at " + url_ + ": " + unreachable_reason(result.error())};
     nlohmann::ordered_json body = nlohmann::ordered_json::parse(result->body, nullptr, false);
     if (result->status >= 400) throw ServiceRefusal{result->status, body};
     if (body.is_discarded()) throw ServiceUnreachable{url_ + path + " did not answer with JSON"};
@@ -77,14 +97,6 @@ class ApiClient {
   httplib::Client client_;
   httplib::Headers headers_;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string study_path(long long id, const std::string& tail = {}) { return "/api/studies/" + std::to_string(id) + tail; }
 
@@ -99,9 +111,9 @@ void print_progress(const nlohmann::ordered_json& progress) {
   std::cout << (progress.at("complete").get<bool>() ? " (complete)" : "") << "\n";
 }
 
-// The study's document as the service stored it (for its units).
-nlohmann::ordered_json study_document(ApiClient& api, const ClientOptions& options) {
-  return api.get(study_path(options.study_id)).value("document", nlohmann::ordered_json::object());
+// The study's unit system as the service names it (its "units": physical, reduced or mixed).
+std::string unit_system(ApiClient& api, const ClientOptions& options) {
+  return api.get(study_path(options.study_id)).at("units").at("system").get<std::string>();
 }
 
 // The study's fits: the critical speeds and energies and the list of fits; one fit in full (JSON)
@@ -116,19 +128,24 @@ void print_correlations(ApiClient& api, const ClientOptions& options) {
     return;
   }
   const auto& provenance = answer.at("provenance");
-  std::cout << "Correlations of study " << provenance.at("study") << " (result set " << provenance.at("result_set_hash").get<std::string>().substr(0, 12)
-            << ", aerobreak " << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
-            << "Critical speeds in " << speed_unit_label(study_document(api, options)) << " (95 % profile-likelihood intervals):\n"
-            << format_critical_table(answer) << "\n"
-            << "Critical energies per contact E_kin/(N_c E_break):\n" << format_critical_table(answer, "energy_per_contact")
-            << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME") << " for one in full):\n"
+  const std::string system = unit_system(api, options);
+  std::cout << "Correlations of study " << provenance.at("study") << " (result set "
+            << provenance.at("result_set_hash").get<std::string>().substr(0, 12) << ", aerobreak "
+            << provenance.at("aerobreak_version").get<std::string>() << ")\n\n"
+            << "Critical speeds in " << speed_unit_label(system) << ":\n"
+            << format_critical_table(answer, "impact_speed", system) << "\n"
+            << "Critical energies per contact E_kin/(N_c E_break) (dimensionless):\n"
+            << format_critical_table(answer, "energy_per_contact", system) << "\n"
+            << critical_table_legend() << "\nFits (GET " << study_path(options.study_id, "/correlations/NAME")
+            << " for one in full):\n"
             << format_fit_list(answer);
 }
 
 int run_client(const std::string& action, const ClientOptions& options) {
   ApiClient api(options);
   if (action == "submit") {
-    const auto receipt = api.post("/api/studies", read_file(options.study_file));
+    const std::string study = read_regular_file(options.study_file, kMaxDocumentBytes, "study file");
+    const auto receipt = api.post("/api/studies", study);
     if (options.json) {
       std::cout << receipt.dump(2) << "\n";
     } else {
@@ -155,7 +172,7 @@ int run_client(const std::string& action, const ClientOptions& options) {
       std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
     } else {
       std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")),
-                                        speed_unit_label(study_document(api, options)));
+                                        unit_system(api, options));
     }
   } else if (action == "correlations") {
     print_correlations(api, options);
@@ -187,13 +204,13 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
             std::cerr << "  " << (violation.value("pointer", std::string()).empty() ? "(document)"
                                                                                      : violation.value("pointer", std::string()))
                       << ": " << violation.value("message", std::string()) << "\n";
-        exit_code = 2;
+        exit_code = kExitInvalidInput;
       } catch (const ServiceUnreachable& unreachable) {
         std::cerr << "aerobreak study " << name << ": " << unreachable.message << "\n";
-        exit_code = 3;
+        exit_code = kExitUnreachable;
       } catch (const std::exception& error) {
         std::cerr << "aerobreak study " << name << ": " << error.what() << "\n";
-        exit_code = 1;
+        exit_code = kExitError;
       }
     });
     return command;

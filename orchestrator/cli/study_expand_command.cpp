@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/study/study.hpp"
 
 namespace aerobreak {
@@ -44,7 +45,7 @@ void expand(const ExpandOptions& o) {
     for (const auto& v : e.violations())
       std::cerr << "  " << (v.pointer.empty() ? std::string("(document)") : v.pointer) << ": " << v.message << "\n";
     // CLI11's way for a callback to end the program with a status of its own.
-    throw CLI::RuntimeError(2);
+    throw CLI::RuntimeError(kExitInvalidInput);
   }
 }
 

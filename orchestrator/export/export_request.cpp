@@ -10,10 +10,14 @@
 namespace aerobreak {
 namespace {
 
-const std::map<std::string, TableKind> kKinds{{"grid", TableKind::grid}, {"fit", TableKind::fit}, {"sections", TableKind::sections}};
-const std::map<std::string, TableFormat> kFormats{{"csv", TableFormat::csv},     {"dat", TableFormat::dat},
-                                                  {"json", TableFormat::json},   {"hdf5", TableFormat::hdf5},
-                                                  {"melcor", TableFormat::melcor}, {"openfoam", TableFormat::openfoam}};
+const std::map<std::string, TableKind> kKinds{{"grid", TableKind::grid},
+                                              {"fit", TableKind::fit},
+                                              {"sections", TableKind::sections},
+                                              {"correlations", TableKind::correlations}};
+const std::map<std::string, TableFormat> kFormats{{"csv", TableFormat::csv},       {"dat", TableFormat::dat},
+                                                  {"json", TableFormat::json},     {"hdf5", TableFormat::hdf5},
+                                                  {"melcor", TableFormat::melcor}, {"openfoam", TableFormat::openfoam},
+                                                  {"fortran", TableFormat::fortran}, {"c", TableFormat::c}};
 const std::set<std::string> kQuantities{"p_stick", "p_bounce", "p_break_up", "retained_mass_fraction", "restitution"};
 const std::vector<std::string> kMaterialFields{"youngs_modulus", "poisson_ratio", "density", "surface_energy", "diameter"};
 
@@ -105,6 +109,12 @@ void apply(ExportRequest& request, const std::string& name, const std::string& v
   } else if (name == "gamma_over_kn") request.gamma_over_kn = positive(name, value);
   else if (name == "speeds") request.speeds = positive_list(name, value);
   else if (name == "sizes") request.sizes = positive_list(name, value);
+  else if (name == "diameters") request.diameters = positive_list(name, value);
+  else if (name == "diameter_type")
+    request.diameter_type = choice(std::map<std::string, DiameterType>{{"mobility", DiameterType::mobility},
+                                                                       {"volume", DiameterType::volume},
+                                                                       {"aerodynamic", DiameterType::aerodynamic}},
+                                   name, value);
   else if (name == "strict") request.strict = flag(name, value);
   else if (name == "select") request.select = selections(name, value);
   else throw ExportError(400, name, "unknown parameter '" + name + "'");
@@ -126,6 +136,15 @@ ExportRequest parse_export_request(const std::vector<std::pair<std::string, std:
     else apply(request, name, value);
   }
   if (!material.empty()) request.material = material_from(material);
+  const bool code = request.format == TableFormat::fortran || request.format == TableFormat::c;
+  if (code && request.kind != TableKind::correlations)
+    throw ExportError(400, "format", "formats fortran and c are the code of kind=correlations");
+  if (request.kind == TableKind::correlations && !code && request.format != TableFormat::json)
+    throw ExportError(400, "format", "kind=correlations is written as fortran, c or json (got format " + to_string(request.format) + ")");
+  if (!request.diameters.empty() && !request.sizes.empty())
+    throw ExportError(400, "diameters", "give sizes as primaries (sizes) or as diameters (diameters), not both");
+  if (!request.diameters.empty() && request.kind != TableKind::fit)
+    throw ExportError(400, "diameters", "diameters are evaluated from the fits: kind=fit");
   if (request.material && request.gamma_over_kn)
     throw ExportError(400, "gamma_over_kn", "give either a material or gamma_over_kn, not both (a material fixes gamma/k_n)");
   return request;

@@ -6,11 +6,13 @@
 #include <vector>
 
 #include "engine/core/material.hpp"
+#include "orchestrator/export/equivalent_diameters.hpp"
 
 namespace aerobreak {
 
-enum class TableKind { grid, fit, sections };
-enum class TableFormat { csv, dat, json, hdf5, melcor, openfoam };
+// kind=correlations is no table: the fitted correlations as code (formats json, fortran, c).
+enum class TableKind { grid, fit, sections, correlations };
+enum class TableFormat { csv, dat, json, hdf5, melcor, openfoam, fortran, c };
 
 // A material given at export (docs/EXPORT.md, "Units"): SI columns for it, provided its gamma/k_n
 // lies in the study's range.
@@ -32,6 +34,10 @@ struct ExportRequest {
   // kind=fit: the grid to evaluate (absent: the fit's own axes) and whether to refuse extrapolation.
   std::vector<double> speeds;
   std::vector<double> sizes;
+  // kind=fit: sizes as diameters instead (m when the table has SI, else d; aerodynamic in m only),
+  // each turned into N by the relations of docs/EXPORT.md section 2.
+  std::vector<double> diameters;
+  DiameterType diameter_type = DiameterType::mobility;
   bool strict = false;
   // select=NAME:VALUE[,NAME:VALUE]: only the rows whose input column NAME equals VALUE (a boolean
   // axis as 1 or 0), e.g. one wall of a study that sweeps /wall/adhesive.

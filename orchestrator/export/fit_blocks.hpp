@@ -2,24 +2,24 @@
 // Which fit each block of rows of table (b) comes from (docs/EXPORT.md, "kind=fit"): a size the
 // study ran from that size's own fits (per_size), a size it did not run from the fits pooled over
 // its sizes (pooled_ln_n). Internal to orchestrator/export.
+#include <array>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "orchestrator/export/export_request.hpp"
-#include "orchestrator/fitting/correlation_set.hpp"
+#include "orchestrator/fitting/logistic_prediction.hpp"
 
 namespace aerobreak {
 
 // The value of the `model` column.
 enum class FitModel { per_size = 0, pooled_ln_n = 1 };
 
-// One combination of the study's non-speed axes (N included) and the fits of its rows; a missing
-// fit (nullptr) gives NaN.
+// One combination of the study's non-speed axes (N included) and the fits of its rows, one per
+// determined outcome in the order stick, bounce, break-up; a missing fit (nullptr) gives no value.
 struct FitBlock {
   nlohmann::ordered_json group;  // the axes' values, N included
   double size = 0.0;             // N (NaN when the study has no size axis)
-  const LogisticFit* stick = nullptr;
-  const LogisticFit* break_up = nullptr;
+  std::array<const LogisticFit*, 3> fits{};
   FitModel model = FitModel::per_size;
 };
 
@@ -28,7 +28,7 @@ struct FitBlock {
 // `sizes` for a size without a fit (not run and no usable fit pooled over the sizes: says why).
 std::vector<FitBlock> fit_blocks(const CorrelationSet& set, const ExportRequest& request);
 
-// P and its 95 % band from one fit at a speed and the block's size.
-BandPoint fit_probability(const LogisticFit& fit, const FitBlock& block, double speed);
+// What one fit of a block says at a speed (predict at the block's size).
+Prediction block_prediction(const LogisticFit& fit, const FitBlock& block, double speed);
 
 }  // namespace aerobreak

@@ -1,10 +1,12 @@
-// Table (b) of docs/EXPORT.md: P(stick) and P(break-up) evaluated from the logistic fits of the
-// correlations (docs/CORRELATIONS.md): at a size the study ran from that size's fit (logit P = b0 +
-// b1 ln v, per group of the other axes), at a size it did not run from the fit pooled over its
-// sizes (logit P = b0 + b1 ln v + b2 ln N, fit_blocks.hpp). The pointwise 95 % band is
-// LogisticFit::probability's: the delta method on the linear predictor, eta +- 1.96 sqrt(x' Cov x),
-// then the logistic transform (Agresti, Categorical Data Analysis, 3rd ed., sec. 5.2: confidence intervals for probabilities);
-// a per-row flag says whether the row lies in the fits' validity boxes.
+// Table (b) of docs/EXPORT.md: P(stick), P(bounce) and P(break-up) evaluated from the logistic fits of
+// the correlations (docs/CORRELATIONS.md): at a size the study ran from that size's fit (logit P =
+// b0 + b1 ln v, per group of the other axes), at a size it did not run from the fit pooled over its
+// sizes per condition (logit P = b0 + b1 ln v + b2 ln N, fit_blocks.hpp). Each value, its pointwise
+// 95 % band and where it comes from are the fitting library's predict (logistic_prediction.hpp): the
+// delta method on the linear predictor, eta +- 1.96 sqrt(x' Cov x), then the logistic transform
+// (Agresti, Categorical Data Analysis, 3rd ed., sec. 5.2: confidence intervals for probabilities), or
+// the observed 0 or 1 of a group without a transition; a per-row flag says whether the row lies in
+// the fits' validity boxes.
 #include <cmath>
 #include <functional>
 
@@ -16,13 +18,16 @@ namespace aerobreak {
 namespace {
 
 constexpr int kDefaultSpeeds = 25;
+constexpr const char* kOutcomeColumns[] = {"p_stick", "p_bounce", "p_break_up"};
+constexpr const char* kOutcomeNames[] = {"P(stick)", "P(bounce)", "P(break-up)"};
 
 // The speeds asked for, or 25 log-spaced over the union of the block's fits' speed ranges.
 std::vector<double> speeds_for(const FitBlock& block, const ExportRequest& request) {
   if (!request.speeds.empty()) return request.speeds;
   double low = INFINITY, high = -INFINITY;
-  for (const auto* fit : {block.stick, block.break_up})
-    if (fit) low = std::min(low, fit->common.validity[0].min), high = std::max(high, fit->common.validity[0].max);
+  for (const auto* fit : block.fits)
+    if (fit && !fit->common.validity.empty())
+      low = std::min(low, fit->common.validity[0].min), high = std::max(high, fit->common.validity[0].max);
   std::vector<double> speeds;
   for (int i = 0; i < kDefaultSpeeds; ++i) speeds.push_back(low * std::pow(high / low, i / (kDefaultSpeeds - 1.0)));
   return speeds;
@@ -42,11 +47,18 @@ bool in_range(const InputRange& range, double value) {
   return value >= range.min * (1.0 - 1e-12) && value <= range.max * (1.0 + 1e-12);
 }
 
-// Inside the fit's validity box: every input of the fit (speed; N for a pooled fit) in its range.
-bool inside(const LogisticFit* fit, const FitRow& row) {
-  if (!fit) return true;
-  for (const auto& range : fit->common.validity)
-    if (!in_range(range, input_at(*fit, range, row))) return false;
+// The fits of a row that give a value there (those whose boxes the row is checked against).
+std::vector<const LogisticFit*> valued_fits(const FitRow& row) {
+  std::vector<const LogisticFit*> fits;
+  for (const auto* fit : row.block->fits)
+    if (fit && block_prediction(*fit, *row.block, row.speed).source != PredictionSource::none) fits.push_back(fit);
+  return fits;
+}
+
+// Inside every valued fit's validity box: every input of the fit (speed; N for a pooled fit) in its range.
+bool inside(const FitRow& row) {
+  for (const auto* fit : valued_fits(row))
+    if (!block_prediction(*fit, *row.block, row.speed).inside) return false;
   return true;
 }
 
@@ -67,8 +79,7 @@ void refuse_outside(const FitRow& row, const LogisticFit& fit, bool speed) {
 void refuse_extrapolation(const std::vector<FitRow>& rows) {
   for (const bool speed : {false, true})
     for (const auto& row : rows)
-      for (const auto* fit : {row.block->stick, row.block->break_up})
-        if (fit) refuse_outside(row, *fit, speed);
+      for (const auto* fit : valued_fits(row)) refuse_outside(row, *fit, speed);
 }
 
 std::vector<FitRow> fit_rows(const std::vector<FitBlock>& blocks, const ExportRequest& request) {
@@ -80,21 +91,27 @@ std::vector<FitRow> fit_rows(const std::vector<FitBlock>& blocks, const ExportRe
 
 using Evaluator = std::function<double(const FitRow&)>;
 
-Evaluator band(bool stick, int bound) {
-  return [stick, bound](const FitRow& row) {
-    const LogisticFit* fit = stick ? row.block->stick : row.block->break_up;
-    if (!fit) return kMissing;
-    const auto point = fit_probability(*fit, *row.block, row.speed);
-    return bound == 0 ? point.probability : bound < 0 ? point.lower : point.upper;
+// The value (bound 0), the band's lower (-1) or upper (1) end, or the source (2) of outcome k's prediction.
+Evaluator prediction_of(std::size_t k, int part) {
+  return [k, part](const FitRow& row) {
+    const LogisticFit* fit = row.block->fits[k];
+    const Prediction p = fit ? block_prediction(*fit, *row.block, row.speed) : Prediction{};
+    if (part == 2) return static_cast<double>(p.source);
+    if (p.source == PredictionSource::none) return kMissing;
+    return part == 0 ? p.band.probability : part < 0 ? p.band.lower : p.band.upper;
   };
 }
 
 nlohmann::ordered_json model_metadata() {
   return {{"column", "model: 0 = per_size, 1 = pooled_ln_n"},
           {"per_size", "a size the study ran: that size's own fit per group of the other axes, logit P = b0 + b1 ln v"},
-          {"pooled_ln_n", "a size the study did not run: the fit over all the study's sizes per group of the other axes, "
+          {"pooled_ln_n", "a size the study did not run: the fit over all the study's sizes per condition of the other axes, "
                           "logit P = b0 + b1 ln v + b2 ln N (inside the box between the sizes run, extrapolated outside)"},
-          {"band", "95 %: eta +- 1.96 sqrt(x' Cov x) on the linear predictor eta = x' b, then P = 1 / (1 + exp(-eta))"}};
+          {"band", "95 %: eta +- 1.96 sqrt(x' Cov x) on the linear predictor eta = x' b, then P = 1 / (1 + exp(-eta))"},
+          {"status", "p_OUTCOME_status: 0 = fitted (maximum likelihood); 1 = fitted under separation (Firth); 2 = no "
+                     "transition in the fit's data: the observed 0 or 1, band the Wilson interval of all its cases; "
+                     "3 = no value (too few data, not converged, or a pooled fit under separation)"},
+          {"outcomes", "each outcome is its own binomial fit: the three probabilities need not sum to 1"}};
 }
 
 }  // namespace
@@ -114,24 +131,26 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
       [speed_unit_of_study](const FitRow& row) { return row.speed / speed_unit_of_study; });
   std::vector<const nlohmann::ordered_json*> groups;
   for (const auto& block : blocks) groups.push_back(&block.group);
-  const auto axes = axis_columns(groups, {});
+  const auto axes = axis_columns(groups, {}, speed_unit_of_study != 1.0);
   for (const auto& axis : axes)
     add(axis.name, axis.unit(), axis.description(), ColumnRole::input, [&axis](const FitRow& row) { return axis.value(row.block->group); });
   add_axis_labels(table.metadata, axes);
   if (table.find("primaries")) {
     add("d_ve", "d", "volume-equivalent diameter d N^(1/3)", ColumnRole::derived,
         [](const FitRow& row) { return volume_equivalent_diameter(row.block->size); });
-    add("d_mob", "d", "mobility-equivalent diameter, free-molecular regime (docs/EXPORT.md)", ColumnRole::derived,
+    add("d_mob", "d", "mobility-equivalent diameter (docs/EXPORT.md section 2)", ColumnRole::derived,
         [](const FitRow& row) { return mobility_equivalent_diameter(row.block->size); });
   }
-  add("p_stick", "1", "P(stick) from the fit", ColumnRole::output, band(true, 0));
-  add("p_stick_lo", "1", "P(stick), 95 % band (delta method on the logit)", ColumnRole::output, band(true, -1));
-  add("p_stick_hi", "1", "P(stick), 95 % band", ColumnRole::output, band(true, 1));
-  add("p_break_up", "1", "P(break-up) from the fit", ColumnRole::output, band(false, 0));
-  add("p_break_up_lo", "1", "P(break-up), 95 % band (delta method on the logit)", ColumnRole::output, band(false, -1));
-  add("p_break_up_hi", "1", "P(break-up), 95 % band", ColumnRole::output, band(false, 1));
-  add("inside_validity", "1", "1: the speed (and for model 1 the size) lies in both fits' validity boxes; 0: extrapolated",
-      ColumnRole::output, [](const FitRow& row) { return inside(row.block->stick, row) && inside(row.block->break_up, row) ? 1.0 : 0.0; });
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::string name = kOutcomeColumns[k], what = kOutcomeNames[k];
+    add(name, "1", what + " from the fit", ColumnRole::output, prediction_of(k, 0));
+    add(name + "_lo", "1", what + ", 95 % band, lower end", ColumnRole::output, prediction_of(k, -1));
+    add(name + "_hi", "1", what + ", 95 % band, upper end", ColumnRole::output, prediction_of(k, 1));
+    add(name + "_status", "1", "where " + what + " comes from: 0 fitted, 1 fitted under separation (Firth), 2 no transition "
+        "in the fit's data (the observed 0 or 1), 3 no value", ColumnRole::output, prediction_of(k, 2));
+  }
+  add("inside_validity", "1", "1: the speed (and for model 1 the size) lies in the validity boxes of the fits that give a "
+      "value; 0: extrapolated", ColumnRole::output, [](const FitRow& row) { return inside(row) ? 1.0 : 0.0; });
   add("model", "1", "the fit of the row: 0 = per_size (the size's own fit, logit P = b0 + b1 ln v), 1 = pooled_ln_n (pooled over "
       "the study's sizes, logit P = b0 + b1 ln v + b2 ln N)", ColumnRole::input,
       [](const FitRow& row) { return static_cast<double>(row.block->model); });

@@ -1,4 +1,5 @@
 // Table (a) of docs/EXPORT.md: one row per grid point, from the grid-point statistics of the store.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -88,7 +89,7 @@ std::vector<ColumnSpec> input_columns() {
       {"gamma_over_kn", "1", "adhesion-to-stiffness ratio gamma/k_n", ColumnRole::input,
        [](const GridRow& r) { return r.inputs.gamma_over_kn; }},
       {"impact_angle", "deg", "impact angle from head-on", ColumnRole::input, [](const GridRow& r) { return r.inputs.angle; }},
-      {"fractal_dimension", "1", "the generator's target fractal dimension Df (NaN: not set, e.g. ballistic)", ColumnRole::input,
+      {"fractal_dimension", "1", "the generator's target fractal dimension Df (missing: not set, e.g. ballistic)", ColumnRole::input,
        [](const GridRow& r) { return r.inputs.fractal_dimension; }},
       {"lambda", "1", "adhesion over kinetic energy of one primary, report eq 19", ColumnRole::derived, lambda},
   };
@@ -114,10 +115,12 @@ std::vector<ColumnSpec> output_columns() {
        moment_mean(&GridPointStatistics::retained_mass_fraction, false)},
       {"retained_mass_fraction_sd", "1", "its standard deviation over the results", ColumnRole::output,
        moment_mean(&GridPointStatistics::retained_mass_fraction, true)},
-      {"restitution", "1", "mean normal restitution e_n of the largest fragment", ColumnRole::output,
+      {"restitution", "1", "mean normal restitution e_n of the bounces (missing where none bounced)", ColumnRole::output,
        moment_mean(&GridPointStatistics::restitution, false)},
-      {"restitution_sd", "1", "its standard deviation over the results", ColumnRole::output,
+      {"restitution_sd", "1", "its standard deviation over the bounces", ColumnRole::output,
        moment_mean(&GridPointStatistics::restitution, true)},
+      {"restitution_bounces", "1", "bounces the restitution is averaged over", ColumnRole::output,
+       [](const GridRow& r) { return r.statistics ? static_cast<double>(r.statistics->restitution.count) : kMissing; }},
       {"damage_ratio", "1", "mean damage ratio (initial contacts broken / initial contacts)", ColumnRole::output,
        moment_mean(&GridPointStatistics::damage_ratio, false)},
       {"largest_fragment_share", "1", "mean share of the primaries in the largest fragment", ColumnRole::output,
@@ -164,6 +167,11 @@ LookupTable grid_table(const StudyExportData& data) {
       column.values.push_back(specs[c].value(row));
     }
   }
+  // An input that no grid point has (e.g. the target fractal dimension of a ballistic generator)
+  // does not apply: no column.
+  std::erase_if(table.columns, [](const TableColumn& column) {
+    return column.role == ColumnRole::input && std::all_of(column.values.begin(), column.values.end(), [](double v) { return std::isnan(v); });
+  });
   return table;
 }
 

@@ -4,8 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <sstream>
+#include <vector>
 
 #include "engine/core/version.hpp"
+#include "orchestrator/export/equivalent_diameters.hpp"
 
 namespace aerobreak {
 namespace {
@@ -65,6 +69,18 @@ nlohmann::ordered_json validity(const LookupTable& table, const StudyExportData&
   return json;
 }
 
+// The validity ranges with the speed's also in m/s when the table has SI columns: each range in the
+// unit of the column a reader takes x from (the MELCOR and OpenFOAM adapters read m/s then).
+nlohmann::ordered_json with_si_speed(const nlohmann::ordered_json& validity, const PhysicalScaling& scaling) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : validity.items()) {
+    out[key] = value;
+    if (key == "impact_speed" && value.is_array())
+      out["impact_speed_m_s"] = {value[0].get<double>() * scaling.speed_unit(), value[1].get<double>() * scaling.speed_unit()};
+  }
+  return out;
+}
+
 double material_gamma_over_kn(const ExportMaterial& material) {
   return PhysicalScaling{material.material, material.diameter, 1.0}.reduced().surface_energy;
 }
@@ -75,19 +91,40 @@ nlohmann::ordered_json material_json(const ExportMaterial& material) {
           {"diameter_m", material.diameter},                       {"gamma_over_kn", material_gamma_over_kn(material)}};
 }
 
-// SI for every row from one scaling (the export's material), or from the study's own material
-// (physical study): nullopt when the rows have none.
-std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& table, const StudyExportData& data,
-                                                         const ExportRequest& request) {
-  if (request.material)
-    return std::vector<PhysicalScaling>(table.rows(), PhysicalScaling{request.material->material, request.material->diameter, 1.0});
+// The SI of the tables: the export's material, or the study's own (physical study) when every grid
+// point has the same; nullopt without.
+std::optional<PhysicalScaling> export_scaling(const StudyExportData& data, const ExportRequest& request) {
+  if (request.material) return PhysicalScaling{request.material->material, request.material->diameter, 1.0};
   if (data.inputs.empty() || !data.inputs.front().scaling) return std::nullopt;
   const auto& first = *data.inputs.front().scaling;
   for (const auto& inputs : data.inputs)
     if (!inputs.scaling || inputs.scaling->diameter != first.diameter ||
         inputs.scaling->speed_unit() != first.speed_unit())
       return std::nullopt;  // a study sweeping the material: SI only with an export material
-  return std::vector<PhysicalScaling>(table.rows(), first);
+  return first;
+}
+
+// SI for every row from the export's scaling: nullopt when the rows have none.
+std::optional<std::vector<PhysicalScaling>> row_scalings(const LookupTable& table, const StudyExportData& data,
+                                                         const ExportRequest& request) {
+  const auto scaling = export_scaling(data, request);
+  if (!scaling) return std::nullopt;
+  return std::vector<PhysicalScaling>(table.rows(), *scaling);
+}
+
+// kind=fit with diameters: the request with their N as sizes (docs/EXPORT.md section 2); a diameter
+// in m when the table has SI, else in d; an aerodynamic one needs SI.
+ExportRequest with_sizes_of_diameters(const ExportRequest& request, const std::optional<PhysicalScaling>& scaling) {
+  ExportRequest asked = request;
+  if (request.diameters.empty()) return asked;
+  if (request.diameter_type == DiameterType::aerodynamic && !scaling)
+    throw ExportError(422, "diameter_type", "an aerodynamic diameter needs the primaries' diameter and density: a physical "
+                                            "study or a material given at export");
+  for (const double diameter : request.diameters)
+    asked.sizes.push_back(request.diameter_type == DiameterType::aerodynamic
+                              ? primaries_of_diameter(DiameterType::aerodynamic, diameter, scaling->diameter, scaling->material.density)
+                              : primaries_of_diameter(request.diameter_type, scaling ? diameter / scaling->diameter : diameter));
+  return asked;
 }
 
 // d/tau in the study's speed unit: a physical study's speeds (and its fits' doses) are in m/s.
@@ -107,6 +144,33 @@ void add_constant_gamma(LookupTable& table, const StudyExportData& data) {
       .values.assign(table.rows(), gamma);
 }
 
+std::string plain_number(double value) {
+  std::ostringstream text;
+  text << value;  // the shortest of %g: 1, 1.08, 6.73e-08
+  return text.str();
+}
+
+// How the table's diameter columns follow from N (docs/EXPORT.md section 2): the relations, their
+// constants with sources, and with SI the primaries' diameter and density they were computed with.
+nlohmann::ordered_json diameter_metadata(const std::optional<std::vector<PhysicalScaling>>& scalings) {
+  nlohmann::ordered_json diameters = {
+      {"volume", "d_ve = d N^(1/3)"},
+      {"mobility", "d_mob = d (N/k_a)^(1/(2 D_alpha)), k_a = " + plain_number(kProjectedAreaPrefactor) +
+                       ", D_alpha = " + plain_number(kProjectedAreaExponent) +
+                       ": projected-area scaling (Eggersdorfer et al., J. Aerosol Sci. 46 (2012) 7), equal to the "
+                       "mobility diameter for primaries smaller than the gas mean free path (Rogak et al., Aerosol "
+                       "Sci. Technol. 18 (1993) 25)"}};
+  if (!scalings) return diameters;
+  diameters["aerodynamic"] = "rho_0 d_ae^2 Cc(d_ae) = rho_p d_ve^3 Cc(d_mob) / d_mob, rho_0 = " +
+                             plain_number(kUnitDensity) + " kg/m^3, Cc the slip correction in air at 296.15 K and "
+                             "101.3 kPa, mean free path " + plain_number(kAirMeanFreePath) +
+                             " m (Kim et al., J. Res. NIST 110 (2005) 31; DeCarlo et al., Aerosol Sci. Technol. 38 "
+                             "(2004) 1185)";
+  diameters["primary_diameter_m"] = scalings->front().diameter;
+  diameters["primary_density_kg_m3"] = scalings->front().material.density;
+  return diameters;
+}
+
 }  // namespace
 
 LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
@@ -114,7 +178,8 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   const auto data = read_study_export_data(store, study_id);
   LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
                       : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
-                                                            : fit_table(*fits, request, study_speed_unit(data));
+                                                            : fit_table(*fits, with_sizes_of_diameters(request, export_scaling(data, request)),
+                                                                        study_speed_unit(data));
   add_constant_gamma(table, data);
   if (!request.select.empty()) table = selected_rows(table, request.select);
   if (request.material)
@@ -132,9 +197,15 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
   if (request.material) table.metadata["material"] = material_json(*request.material);
   else if (scalings) table.metadata["material"] = "the study's own (physical units)";
   if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
-  table.metadata["validity"] = validity(table, data);
+  table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
+  table.metadata["diameters"] = diameter_metadata(scalings);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
-  table.metadata["missing_value"] = "NaN (CSV: empty field, JSON: null)";
+  if (!request.diameters.empty())
+    table.metadata["sizes_from"] = std::string(request.diameter_type == DiameterType::mobility ? "mobility"
+                                               : request.diameter_type == DiameterType::volume ? "volume-equivalent"
+                                                                                                : "aerodynamic") +
+                                   " diameters (docs/EXPORT.md section 2), in " + (scalings ? "m" : "d");
+  table.metadata["missing_value"] = "NaN in HDF5, an empty field in CSV, null in JSON, -1.0e+30 in .dat; left out of MELCOR and OpenFOAM";
   return table;
 }
 

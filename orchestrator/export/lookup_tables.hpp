@@ -4,6 +4,7 @@
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
 #include "orchestrator/export/study_export_data.hpp"
+#include "orchestrator/export/table_formats.hpp"
 #include "orchestrator/store/store.hpp"
 
 namespace aerobreak {
@@ -23,8 +24,8 @@ LookupTable sections_table(const StudyExportData& data, double section_ratio);
 // Table (b): P(stick) and P(break-up) from the logistic fits in impact speed, at the request's
 // speeds (default: 25 log-spaced over each fit's validity box) and sizes (default: those the study
 // ran), with their 95 % bands, a validity flag and the model of each row: a size the study ran from
-// its per-group fits, one it did not run from the fits pooled over its sizes (set.size_pooled,
-// made when set.request.size_axis is set). strict refuses a row outside a fit's validity box
+// its per-group fits, one it did not run from the fits pooled over its sizes per condition of the
+// other axes (OUTCOME.speed.pooled.cK with ln N its one covariate). strict refuses a row outside a fit's validity box
 // (ExportError 422 naming speeds or sizes); a size without a usable fit is refused (422, sizes).
 // `speed_unit_of_study`: d/tau in the study's speed unit (m/s for a physical study, 1 for a reduced one).
 LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, double speed_unit_of_study);
@@ -48,5 +49,9 @@ void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scal
 // cannot serve.
 LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request,
                                const CorrelationSet* fits = nullptr);
+
+// kind=correlations: the study's fits as code (format fortran or c) or its JSON description
+// (correlation_code.hpp), headed by the study's provenance and units.
+RenderedTable correlation_code_file(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet& fits);
 
 }  // namespace aerobreak

@@ -18,6 +18,10 @@ namespace {
 // with N where a size the study did not run comes from the fit pooled over the sizes).
 const char* kSizeInputs[] = {"primaries", "source_section", "model"};
 
+constexpr const char* kOutOfBounds =
+    "outside its speeds and sizes this table has no value: read it with outOfBounds error (a clamp would return the "
+    "value at the edge as if it held beyond)";
+
 const TableColumn& quantity_column(const LookupTable& table, const std::string& quantity) {
   const std::string name = quantity == "retained_mass_fraction" && !table.find(quantity) ? "to_wall" : quantity;
   if (const auto* column = table.find(name)) return *column;
@@ -63,10 +67,12 @@ std::map<double, std::map<double, double>> speed_size_values(const LookupTable& 
   return values;
 }
 
+// The header's last line says what happens outside the table, as the entries and docs/EXPORT.md
+// ask OpenFOAM to do it: stop, neither extrapolate nor clamp silently.
 std::string header(const LookupTable& table, const std::string& what) {
   std::string text = "// aerobreak lookup table: " + what + " (docs/EXPORT.md)\n";
   for (const auto& [key, value] : metadata_lines(table.metadata)) text += "// " + key + ": " + value + "\n";
-  return text;
+  return text + "// " + kOutOfBounds + "\n";
 }
 
 // The sizes every speed has: the columns of the csvFile data.
@@ -130,7 +136,7 @@ std::string openfoam_dictionary(const LookupTable& table, const std::string& qua
             " csvFile;\n" + entry + "Coeffs\n{\n    nHeaderLine         1;\n    refColumn           0;\n" +
             "    componentColumns    (" + std::to_string(i + 1) + ");\n    separator           \",\";\n" +
             "    mergeSeparators     no;\n    file                \"" + csv_file + "\";\n" +
-            "    outOfBounds         clamp;\n    interpolationScheme linear;\n}\n";
+            "    outOfBounds         error;\n    interpolationScheme linear;\n}\n";
   }
   return text;
 }

@@ -17,6 +17,8 @@ RenderedTable render_table(const LookupTable& table, const ExportRequest& reques
         return {openfoam_dictionary(table, request.quantity, quantity_stem + ".csv"), "text/plain; charset=utf-8",
                 quantity_stem + "_function1"};
       return {openfoam_table2d(table, request.quantity), "text/plain; charset=utf-8", quantity_stem + "_table2d"};
+    case TableFormat::fortran:
+    case TableFormat::c: break;  // the code of kind=correlations (correlation_code_file), not of a table
   }
   return {csv_text(table), "text/csv", stem + ".csv"};
 }

@@ -5,6 +5,7 @@
 
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
+#include "orchestrator/study/study_axes.hpp"
 
 namespace aerobreak {
 namespace {
@@ -31,8 +32,35 @@ PhysicalScaling physical_scaling(const nlohmann::ordered_json& material) {
 std::vector<AxisColumn> extra_axis_columns(const std::vector<GridRowInputs>& inputs) {
   std::vector<const nlohmann::ordered_json*> points;
   for (const auto& row : inputs) points.push_back(&row.grid_point);
-  return axis_columns(points, kOwnColumns);
+  return axis_columns(points, kOwnColumns, !inputs.empty() && inputs.front().scaling.has_value());
 }
+
+// The units of the axes a study sweeps most, by JSON pointer: (physical, reduced).
+struct AxisUnit {
+  const char* pointer;
+  const char* physical;
+  const char* reduced;
+};
+constexpr AxisUnit kAxisUnits[] = {
+    {"/impact/speed", "m/s", "d/tau"},
+    {"/impact/angle", "deg", "deg"},
+    {"/impact/gap", "d", "d"},
+    {"/material/youngs_modulus", "Pa", "m/(d tau^2)"},
+    {"/material/density", "kg/m^3", "m/d^3"},
+    {"/material/surface_energy", "J/m^2", "m/tau^2"},
+    {"/material/diameter", "m", "d"},
+    {"/material/poisson_ratio", "1", "1"},
+    {"/material/gamma_over_kn", "1", "1"},
+    {"/model/friction", "1", "1"},
+    {"/model/damping/dissipative_time", "tau", "tau"},
+    {"/model/damping/restitution", "1", "1"},
+    {"/model/rolling/critical_displacement", "d", "d"},
+    {"/cluster/generator/primaries", "1", "1"},
+    {"/cluster/generator/fractal_dimension", "1", "1"},
+    {"/cluster/generator/prefactor", "1", "1"},
+    {"/cluster/generator/geometric_standard_deviation", "1", "1"},
+    {"/run/time_limit_s", "s", "s"},
+};
 
 // Label text of an axis value: a string as it is, anything else as JSON.
 std::string label_of(const nlohmann::ordered_json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
@@ -70,8 +98,15 @@ double AxisColumn::value(const nlohmann::ordered_json& point) const {
 }
 
 std::string AxisColumn::unit() const {
-  if (encoding != Encoding::number || name == "primaries" || name == "gamma_over_kn") return "1";
-  return "as in the case";
+  if (encoding != Encoding::number) return "1";
+  return axis_unit(axis, physical);
+}
+
+std::string axis_unit(const std::string& axis, bool physical) {
+  const std::string pointer = axis.starts_with("/") ? axis : axis_pointer(axis);
+  for (const auto& unit : kAxisUnits)
+    if (pointer == unit.pointer) return physical ? unit.physical : unit.reduced;
+  return "unknown";
 }
 
 std::string AxisColumn::description() const {
@@ -81,13 +116,15 @@ std::string AxisColumn::description() const {
 }
 
 std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_json*>& points,
-                                     const std::vector<std::string>& left_out) {
+                                     const std::vector<std::string>& left_out, bool physical) {
   std::vector<AxisColumn> columns;
   for (const auto* point : points)
     for (const auto& [axis, value] : point->items()) {
       const std::string name = axis_column_name(axis);
       const bool known = std::any_of(columns.begin(), columns.end(), [&](const AxisColumn& c) { return c.axis == axis; });
-      if (!known && std::find(left_out.begin(), left_out.end(), name) == left_out.end()) columns.push_back(axis_column(axis, points));
+      if (known || std::find(left_out.begin(), left_out.end(), name) != left_out.end()) continue;
+      columns.push_back(axis_column(axis, points));
+      columns.back().physical = physical;
     }
   return columns;
 }

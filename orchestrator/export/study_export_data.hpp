@@ -34,6 +34,7 @@ struct AxisColumn {
   std::string name;                 // the column: axis_column_name(axis)
   Encoding encoding = Encoding::number;
   std::vector<std::string> labels;  // Encoding::label: the values in the order the grid first uses them
+  bool physical = false;            // a physical study: its material's values are SI
 
   // The axis's value in a grid point or fit group; NaN when the axis is absent.
   double value(const nlohmann::ordered_json& point) const;
@@ -42,9 +43,14 @@ struct AxisColumn {
 };
 
 // The axes of these grid points (or fit groups), in their order, except those whose column name is
-// in `left_out` (quantities with a column of their own).
+// in `left_out` (quantities with a column of their own); `physical`: of a physical study.
 std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_json*>& points,
-                                     const std::vector<std::string>& left_out);
+                                     const std::vector<std::string>& left_out, bool physical);
+
+// The unit of a study axis's values (docs/EXPORT.md, "Axis columns"): SI for a physical study's
+// material, the reduced units d, m, tau for the model's parameters and a reduced study's material,
+// deg for the angle, 1 for numbers without one; "unknown" for an axis this table does not know.
+std::string axis_unit(const std::string& axis, bool physical);
 // metadata.axis_labels.NAME = [label of 0, label of 1, ...] for each label-encoded axis.
 void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisColumn>& axes);
 

@@ -1,4 +1,5 @@
 // The neutral text formats of docs/EXPORT.md: RFC 4180 CSV, whitespace .dat for Fortran, JSON.
+#include <algorithm>
 #include <cmath>
 
 #include "orchestrator/export/table_formats.hpp"
@@ -52,19 +53,52 @@ std::string csv_text(const LookupTable& table) {
   return text;
 }
 
+namespace {
+
+// `text` after `prefix` on comment lines of at most kDatLineWidth characters, continued on lines
+// starting "#  "; a word longer than a line is cut.
+std::string comment_lines(const std::string& prefix, const std::string& text) {
+  const std::string continuation = "#  ";
+  const std::size_t longest = kDatLineWidth - continuation.size() - 1;
+  std::string out, line = prefix;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(' ', start), text.size());
+    for (std::size_t piece = start; piece < end; piece += longest) {
+      const std::string word = text.substr(piece, std::min(longest, end - piece));
+      if (line.size() + 1 + word.size() > kDatLineWidth) out += line + "\n", line = continuation;
+      line += " " + word;
+    }
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
+// The value as .dat writes it: the missing-value sentinel where there is none (no NaN: a reader
+// built to trap invalid operations must never meet one).
+std::string dat_number(double value) { return number_text(std::isnan(value) ? kDatMissingValue : value); }
+
+}  // namespace
+
 std::string dat_text(const LookupTable& table) {
-  std::string text = "# aerobreak lookup table, whitespace-separated for Fortran list-directed input (docs/EXPORT.md)\n";
-  for (const auto& [key, value] : metadata_lines(table.metadata)) text += "# " + key + ": " + value + "\n";
-  text += "# columns: " + std::to_string(table.columns.size()) + "\n# rows: " + std::to_string(table.rows()) + "\n";
+  std::string header = comment_lines("#", "aerobreak lookup table for Fortran list-directed input (docs/EXPORT.md): lines of "
+                                          "at most 80 characters; a row is one list-directed READ of `columns` values over "
+                                          "its lines; a missing value is the sentinel missing_value");
+  for (const auto& [key, value] : metadata_lines(table.metadata))
+    if (key != "missing_value") header += comment_lines("# " + key + ":", value);
+  header += "# missing_value: " + dat_number(kMissing) + "\n";
+  header += "# columns: " + std::to_string(table.columns.size()) + "\n# rows: " + std::to_string(table.rows()) + "\n";
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     const auto& column = table.columns[c];
-    text += "# column " + std::to_string(c + 1) + ": " + column.name + " [" + column.unit + "] " + column.description + "\n";
+    header += "# column " + std::to_string(c + 1) + " " + column.name + " '" + column.unit + "'\n";
+    header += comment_lines("#  ", column.description);
   }
-  for (std::size_t row = 0; row < table.rows(); ++row) {
+  const auto lines = static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n'));
+  std::string text = "# aerobreak lookup table (.dat)\n# header_lines: " + std::to_string(lines + 2) + "\n" + header;
+  for (std::size_t row = 0; row < table.rows(); ++row)
     for (std::size_t c = 0; c < table.columns.size(); ++c)
-      text += (c == 0 ? " " : "  ") + number_text(table.columns[c].values[row]);
-    text += "\n";
-  }
+      text += (c % kDatValuesPerLine == 0 ? " " : "  ") + dat_number(table.columns[c].values[row]) +
+              (c % kDatValuesPerLine == kDatValuesPerLine - 1 || c + 1 == table.columns.size() ? "\n" : "");
   return text;
 }
 

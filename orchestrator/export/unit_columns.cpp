@@ -6,6 +6,7 @@
 #include <set>
 
 #include "engine/core/units.hpp"
+#include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 
 namespace aerobreak {
@@ -118,6 +119,22 @@ LookupTable selected_rows(const LookupTable& table, const std::vector<std::pair<
   return selected;
 }
 
+namespace {
+
+// d_ae_m beside d_mob_m: the aerodynamic diameter of the row's N (from its mobility diameter).
+TableColumn aerodynamic_column(const TableColumn& mobility, const std::vector<PhysicalScaling>& scalings) {
+  TableColumn column{"d_ae_m", "m", "aerodynamic diameter: the unit-density sphere settling as fast, in air at 296 K and "
+                                    "101.3 kPa (docs/EXPORT.md section 2)", ColumnRole::derived, {}};
+  for (std::size_t row = 0; row < mobility.values.size(); ++row) {
+    const double primaries = primaries_of_diameter(DiameterType::mobility, mobility.values[row]);
+    column.values.push_back(std::isnan(primaries) ? kMissing
+                                                  : aerodynamic_diameter(primaries, scalings[row].diameter, scalings[row].material.density));
+  }
+  return column;
+}
+
+}  // namespace
+
 void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scalings) {
   std::vector<TableColumn> columns;
   for (auto& column : table.columns) {
@@ -129,6 +146,7 @@ void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scal
     for (std::size_t row = 0; row < column.values.size(); ++row)
       si.values.push_back(column.values[row] * (speed ? scalings[row].speed_unit() : scalings[row].diameter));
     columns.push_back(std::move(si));
+    if (column.name == "d_mob") columns.push_back(aerodynamic_column(column, scalings));
   }
   table.columns = std::move(columns);
 }

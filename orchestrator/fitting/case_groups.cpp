@@ -1,25 +1,33 @@
 #include "orchestrator/fitting/case_groups.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <map>
 
 namespace aerobreak {
 
-std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis, const std::string& pooled_axis) {
+std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis,
+                                   const std::vector<std::string>& pooled_axes, const std::string& prefix) {
   std::vector<CaseGroup> groups;
   std::map<std::string, std::size_t> index;
   std::vector<std::size_t> group_of_point(table.grid_points.size());
   for (std::size_t g = 0; g < table.grid_points.size(); ++g) {
     nlohmann::ordered_json axes = table.grid_points[g];
     axes.erase(speed_axis);
-    if (!pooled_axis.empty()) axes.erase(pooled_axis);
+    for (const auto& axis : pooled_axes) axes.erase(axis);
     const auto [it, inserted] = index.emplace(axes.dump(), groups.size());
-    if (inserted) groups.push_back({"g" + std::to_string(groups.size() + 1), axes, {}, {}});
+    if (inserted) groups.push_back({prefix + std::to_string(groups.size() + 1), axes, {}, {}});
     groups[it->second].grid_points.push_back(g);
     group_of_point[g] = it->second;
   }
   for (const CaseOutcome& c : table.cases) groups[group_of_point.at(c.grid_point)].cases.push_back(&c);
   return groups;
+}
+
+std::vector<CaseGroup> condition_groups(const CaseOutcomeTable& table, const CorrelationRequest& request) {
+  std::vector<std::string> modelled;
+  for (const auto& covariate : request.covariates) modelled.push_back(covariate.axis);
+  return group_cases(table, request.speed_axis, modelled, "c");
 }
 
 std::vector<std::vector<const CaseOutcome*>> cases_by_point(const CaseOutcomeTable& table) {

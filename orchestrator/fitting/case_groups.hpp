@@ -7,18 +7,25 @@
 
 namespace aerobreak {
 
-// The cases of one combination of the non-speed axes (e.g. one N and one gamma/k_n): the unit of the
-// per-group fits. Groups are numbered in grid order (g1, g2, ...). With `pooled_axis` (e.g. N) that
-// axis is left out of the combination too: the groups of the fits pooled over it.
+// The cases of one combination of the non-speed axes (e.g. one N, one gamma/k_n and one wall): the
+// unit of the per-group fits. Groups are numbered in grid order (g1, g2, ...). With `pooled_axes`
+// (e.g. N) those axes are left out of the combination too: the conditions of the fits pooled along
+// them (c1, c2, ...), every other axis of the study still splitting them.
 struct CaseGroup {
-  std::string label;                                             // "g1", "g2", ...
+  std::string label;                                             // "g1", "g2", ... or "c1", "c2", ...
   nlohmann::ordered_json axes = nlohmann::ordered_json::object();  // the non-speed axes' values
   std::vector<std::size_t> grid_points;
   std::vector<const CaseOutcome*> cases;
 };
 
 std::vector<CaseGroup> group_cases(const CaseOutcomeTable& table, const std::string& speed_axis,
-                                   const std::string& pooled_axis = {});
+                                   const std::vector<std::string>& pooled_axes = {}, const std::string& prefix = "g");
+
+// The conditions of the pooled models: the combinations of every non-speed axis but the request's
+// covariates (the axes the pooled models model), labelled c1, c2, ... in grid order. A fit pools
+// only along the axes it models: a study's walls, gamma/k_n values (unless a covariate), generators
+// or angles are never mixed into one curve.
+std::vector<CaseGroup> condition_groups(const CaseOutcomeTable& table, const CorrelationRequest& request);
 
 // The cases of each grid point, by grid-point index.
 std::vector<std::vector<const CaseOutcome*>> cases_by_point(const CaseOutcomeTable& table);

@@ -20,6 +20,7 @@ nlohmann::ordered_json request_json(const CorrelationRequest& request) {
     covariates.push_back({{"axis", covariate.axis}, {"transform", covariate.logarithmic ? "log" : "linear"}});
   return {{"speed_axis", request.speed_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.speed_axis)},
           {"covariates", covariates},
+          {"size_axis", request.size_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.size_axis)},
           {"levels", request.levels},
           {"confidence", 0.95}};
 }

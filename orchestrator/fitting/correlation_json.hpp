@@ -30,4 +30,10 @@ std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const 
 // The names of every document: "grid-points", then every fit in summary order.
 std::vector<std::string> fit_names(const CorrelationSet& set);
 
+// A logistic fit back from its full document (fit_json): what predicting from it and tabulating it
+// need (name, status, group, response, dose, covariates, coefficients, covariance, validity box,
+// critical values, the trials and successes of its rows; not its design). Every number as stored:
+// JSON keeps doubles exactly. std::runtime_error on a document that is not such a fit.
+LogisticFit logistic_fit_from_json(const nlohmann::ordered_json& document);
+
 }  // namespace aerobreak

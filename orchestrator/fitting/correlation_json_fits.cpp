@@ -22,6 +22,13 @@ nlohmann::ordered_json critical_json(const CriticalValue& value) {
           {"ci95", {number_or_null(value.lower), number_or_null(value.upper)}}};
 }
 
+// Where the measured proportions cross each level (a group's speed fit; [] otherwise).
+nlohmann::ordered_json observed_json(const LogisticFit& fit) {
+  nlohmann::ordered_json crossings = nlohmann::ordered_json::array();
+  for (const auto& value : fit.observed) crossings.push_back({{"level", value.level}, {"dose", number_or_null(value.estimate)}});
+  return crossings;
+}
+
 nlohmann::ordered_json band_json(double dose, const BandPoint& band) {
   return {{"dose", dose}, {"value", band.probability}, {"ci95", {band.lower, band.upper}}};
 }
@@ -84,11 +91,15 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit) {
   line["dose"] = fit.dose;
   line["method"] = fit.method;
   line["coefficients"] = std::vector<double>(fit.common.coefficients.data(), fit.common.coefficients.data() + fit.common.coefficients.size());
+  nlohmann::ordered_json pooled_over = nlohmann::ordered_json::array();
+  for (const auto& covariate : fit.covariates) pooled_over.push_back(covariate.axis);
+  line["pooled_over"] = pooled_over;
   // A pooled model's critical values (one set per group's covariates) are in its full document only.
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
   for (const auto& value : fit.critical)
     if (value.at.empty()) critical.push_back(critical_json(value));
   line["critical"] = critical;
+  line["observed_crossings"] = observed_json(fit);
   return line;
 }
 
@@ -111,6 +122,7 @@ nlohmann::ordered_json full_json(const LogisticFit& fit, int points) {
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
   for (const auto& value : fit.critical) critical.push_back(critical_json(value));
   json["critical"] = critical;
+  json["observed_crossings"] = observed_json(fit);
   json["data"] = logistic_data_json(fit);
   json["curves"] = logistic_curves_json(fit, points);
   return json;

@@ -43,6 +43,7 @@ nlohmann::ordered_json summary_line(const ScalingFit& fit) {
   auto line = summary_common(fit.common);
   line["response"] = std::string(to_string(fit.response));
   line["level"] = fit.level;
+  line["pooled_over"] = fit.axes;
   nlohmann::ordered_json exponents = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < fit.axes.size() && fit.common.coefficients.size() > 0; ++k) {
     const auto j = static_cast<Eigen::Index>(k + 1);

@@ -14,13 +14,15 @@ struct Covariate {
   bool logarithmic = true;
 };
 
+// Every member is part of what is fitted: request_key (the store's key of a set) covers them all.
 struct CorrelationRequest {
-  std::string speed_axis;             // the axis that sets the impact speed; empty: not swept
-  std::vector<Covariate> covariates;  // of the pooled models (none: groups pooled as they are)
+  std::string speed_axis;  // the axis that sets the impact speed; empty: not swept
+  // The axes the pooled models (and the scaling laws) model, as covariates: they pool along these
+  // only, one fit per condition of the other axes (none: no pooled model, no scaling law).
+  std::vector<Covariate> covariates;
   std::array<double, 3> levels{0.1, 0.5, 0.9};
-  // The axis of the cluster size N. When set, the logistic models in impact speed are also fitted
-  // pooled over the sizes, one per group of the other axes (CorrelationSet::size_pooled, which the
-  // lookup-table export evaluates at sizes the study did not run); empty: not fitted.
+  // The axis of the cluster size N (empty when the study has none): the covariate the lookup-table
+  // export evaluates at sizes the study did not run.
   std::string size_axis;
 };
 

@@ -1,6 +1,7 @@
 #include "orchestrator/fitting/correlation_set.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/fragment_sizes.hpp"
@@ -22,6 +23,18 @@ std::string_view to_string(FitStatus status) {
   return "not-converged";
 }
 
+std::optional<double> observed_crossing(const std::vector<std::pair<double, double>>& points, double level) {
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const auto [x0, y0] = points[i - 1];
+    const auto [x1, y1] = points[i];
+    if ((y0 - level) * (y1 - level) > 0.0 || y0 == y1) continue;
+    if (y0 == level) return x0;
+    const double t = (level - y0) / (y1 - y0);
+    return std::exp(std::log(x0) + t * (std::log(x1) - std::log(x0)));
+  }
+  return std::nullopt;
+}
+
 CorrelationSet compute_correlations(const CaseOutcomeTable& table, const CorrelationRequest& request,
                                     const Provenance& provenance) {
   const auto started = std::chrono::steady_clock::now();
@@ -31,9 +44,8 @@ CorrelationSet compute_correlations(const CaseOutcomeTable& table, const Correla
   set.grid_points = summarise_grid_points(table);
   const auto groups = group_cases(table, request.speed_axis);
   set.logistic = fit_logistic_models(table, groups, request);
-  set.size_pooled = fit_size_pooled_models(table, request);
   set.multinomial = fit_multinomial_models(table, groups, request);
-  set.scaling = fit_scaling_laws(set.logistic, request);
+  set.scaling = fit_scaling_laws(set.logistic, condition_groups(table, request), request);
   set.retained_fraction = fit_retained_fractions(table, groups, request);
   set.fragment_sizes = fit_fragment_distributions(table);
   set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -106,6 +106,9 @@ struct LogisticFit {
   std::size_t perfectly_predicted = 0;
   std::optional<std::array<double, 2>> separation_bracket;  // doses between which the outcome switches
   std::vector<CriticalValue> critical;
+  // Where the measured proportions cross each level (observed_crossing), for a group's fit to grouped
+  // rows (dose = speed); the model-free companion of `critical` (no interval).
+  std::vector<CriticalValue> observed;
   std::vector<nlohmann::ordered_json> covariate_points;  // the groups' covariate values (pooled)
   BinomialData data;  // the design the fit used: columns 1, log dose, covariates
   // P at a dose and covariate values (transformed as in the design), with the Wald band on the logit.
@@ -165,15 +168,18 @@ struct CorrelationSet {
   CorrelationRequest request;
   std::vector<GridPointSummary> grid_points;
   std::vector<LogisticFit> logistic;
-  // OUTCOME.speed.sizes.GROUP (only with request.size_axis; not served as documents): logit P =
-  // b0 + b1 log v + b2 log N over all sizes of one group of the axes other than speed and N.
-  std::vector<LogisticFit> size_pooled;
   std::vector<MultinomialFit> multinomial;
   std::vector<ScalingFit> scaling;
   std::vector<RetainedFractionFit> retained_fraction;
   std::vector<FragmentSizeFit> fragment_sizes;
   double seconds = 0.0;  // time taken by compute_correlations
 };
+
+// Where measured proportions, (dose, proportion) in ascending dose, first cross `level`, interpolated
+// linearly in log dose between the two points around it; nullopt when they never do. The one
+// definition of the measured crossing: the service serves it with each group's fit and the
+// dashboard and the analysis script read it there.
+std::optional<double> observed_crossing(const std::vector<std::pair<double, double>>& points, double level);
 
 // Everything, from a study's outcomes: pure, no I/O.
 CorrelationSet compute_correlations(const CaseOutcomeTable& table, const CorrelationRequest& request,

@@ -187,6 +187,18 @@ std::vector<std::string> parameter_names(const std::string& dose, const Correlat
   return names;
 }
 
+// The measured crossings of a group's fit to grouped rows (one row per dose), at the request's levels.
+std::vector<CriticalValue> observed_crossings(const DoseData& rows, const CorrelationRequest& request) {
+  std::vector<CriticalValue> crossings;
+  if (!request.covariates.empty() || distinct(rows.dose).size() != rows.dose.size()) return crossings;
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < rows.dose.size(); ++i) points.emplace_back(rows.dose[i], rows.successes[i] / rows.trials[i]);
+  std::sort(points.begin(), points.end());
+  for (const double level : request.levels)
+    crossings.push_back({level, nlohmann::ordered_json::object(), observed_crossing(points, level), std::nullopt, std::nullopt});
+  return crossings;
+}
+
 }  // namespace
 
 LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& dose, const DoseData& rows,
@@ -203,6 +215,7 @@ LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& 
   fit.common.small_strain_cases = rows.small_strain;
   fit.common.validity = validity_box(rows, dose, request);
   fit.common.parameters = parameter_names(dose, request);
+  if (dose == "impact_speed") fit.observed = observed_crossings(rows, request);
   std::tie(fit.common.status, fit.common.detail) = unfittable(rows, response, dose);
   if (fit.common.status != FitStatus::ok) return fit;
   GlmFit glm = fit_binomial(rows.binomial);

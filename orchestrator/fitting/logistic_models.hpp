@@ -37,16 +37,12 @@ DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const Case
 LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& dose, const DoseData& rows,
                          const CorrelationRequest& request, const std::vector<Eigen::VectorXd>& covariate_points);
 
-// All logistic models of a study: per group and pooled, P(stick), P(bounce), P(break-up) (those
-// that occur), in log impact speed and in log energy per contact.
+// All logistic models of a study: P(stick), P(bounce), P(break-up) (those that occur), in log impact
+// speed and in log energy per contact; per group (OUTCOME.DOSE.gK, no covariate) and, per condition
+// whose groups differ in a covariate (condition_groups), pooled along the covariates that vary in it
+// (OUTCOME.DOSE.pooled.cK: e.g. logit P = b0 + b1 log v + b2 log N for one wall and one gamma/k_n),
+// their critical doses at each of the condition's covariate values (delta method).
 std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
                                              const CorrelationRequest& request);
-
-// The same logistic models in impact speed pooled over the cluster sizes, one per group of the axes
-// other than speed and N (request.size_axis): logit P = b0 + b1 log v + b2 log N, the pooled model
-// of fit_logistic_models with log N its one covariate, fitted to one group of the other axes (e.g.
-// one wall and one gamma/k_n) at a time. Critical doses at each size of the group (delta method).
-// None without request.size_axis or a speed axis.
-std::vector<LogisticFit> fit_size_pooled_models(const CaseOutcomeTable& table, const CorrelationRequest& request);
 
 }  // namespace aerobreak

@@ -1,8 +1,8 @@
-// The logistic models of a whole study: which responses, which groups, pooled or not.
+// The logistic models of a whole study: which responses, which groups, pooled along which axes.
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numeric>
+#include <set>
 
 #include "orchestrator/fitting/logistic_models.hpp"
 #include "orchestrator/fitting/parallel_tasks.hpp"
@@ -29,20 +29,70 @@ FitCommon named(const std::string& name, const nlohmann::ordered_json& group) {
   return common;
 }
 
-// The distinct covariate values of the groups, for the pooled models' critical doses.
-std::vector<Eigen::VectorXd> group_covariate_points(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
-                                                    const CorrelationRequest& request) {
+// The distinct covariate values among the rows of a pooled model, for its critical doses.
+std::vector<Eigen::VectorXd> distinct_covariates(const DoseData& rows) {
   std::vector<Eigen::VectorXd> points;
-  if (request.covariates.empty()) return points;
-  for (const CaseGroup& group : groups) {
-    Eigen::VectorXd point(static_cast<Eigen::Index>(request.covariates.size()));
-    for (std::size_t k = 0; k < request.covariates.size(); ++k)
-      point[static_cast<Eigen::Index>(k)] = axis_number(table.grid_points[group.grid_points.front()], request.covariates[k].axis);
-    const bool seen = std::any_of(points.begin(), points.end(), [&](const Eigen::VectorXd& p) { return p == point; });
-    if (point.allFinite() && !seen) points.push_back(point);
-  }
+  for (const auto& values : rows.covariate_values)
+    if (std::none_of(points.begin(), points.end(), [&](const Eigen::VectorXd& seen) { return seen == values; }))
+      points.push_back(values);
   return points;
 }
+
+// The request's covariates that take more than one value among a condition's grid points: the
+// axes its pooled models pool along (a covariate constant in the condition adds nothing to pool).
+CorrelationRequest condition_request(const CaseOutcomeTable& table, const CaseGroup& condition,
+                                     const CorrelationRequest& request) {
+  CorrelationRequest pooled = request;
+  pooled.covariates.clear();
+  for (const auto& covariate : request.covariates) {
+    std::set<double> values;
+    for (const std::size_t g : condition.grid_points) values.insert(axis_number(table.grid_points[g], covariate.axis));
+    if (values.size() > 1) pooled.covariates.push_back(covariate);
+  }
+  return pooled;
+}
+
+// The fits of one response: per group (no covariate) and, per condition whose groups differ in a
+// covariate, pooled along the covariates (OUTCOME.DOSE.pooled.cK), in log speed and in log energy.
+struct ResponseFits {
+  const CaseOutcomeTable& table;
+  const std::vector<std::vector<const CaseOutcome*>>& by_point;
+  const std::vector<CaseGroup>& groups;
+  const std::vector<CaseGroup>& conditions;
+  const std::vector<CorrelationRequest>& condition_requests;
+  const CorrelationRequest& per_group;
+  std::vector<std::function<LogisticFit()>>& tasks;
+
+  void speed_fit(Outcome response, const std::string& label, const CaseGroup& group, const CorrelationRequest* ask) {
+    tasks.push_back([this, response, label, group = &group, ask] {
+      const auto rows = speed_rows(table, by_point, group->grid_points, response, *ask);
+      return fit_logistic(named(std::string(to_string(response)) + ".speed." + label, group->axes), response, "impact_speed",
+                          rows, *ask, ask->covariates.empty() ? std::vector<Eigen::VectorXd>{} : distinct_covariates(rows));
+    });
+  }
+
+  void energy_fit(Outcome response, const std::string& label, const CaseGroup& group, const CorrelationRequest* ask) {
+    tasks.push_back([this, response, label, group = &group, ask] {
+      const auto rows = energy_rows(table, group->cases, response, *ask);
+      return fit_logistic(named(std::string(to_string(response)) + ".energy." + label, group->axes), response,
+                          "energy_per_contact", rows, *ask,
+                          ask->covariates.empty() ? std::vector<Eigen::VectorXd>{} : distinct_covariates(rows));
+    });
+  }
+
+  void add(Outcome response) {
+    if (!per_group.speed_axis.empty()) {
+      for (const CaseGroup& group : groups) speed_fit(response, group.label, group, &per_group);
+      for (std::size_t c = 0; c < conditions.size(); ++c)
+        if (!condition_requests[c].covariates.empty())  // one group: nothing to pool along
+          speed_fit(response, "pooled." + conditions[c].label, conditions[c], &condition_requests[c]);
+    }
+    for (const CaseGroup& group : groups) energy_fit(response, group.label, group, &per_group);
+    for (std::size_t c = 0; c < conditions.size(); ++c)
+      if (!condition_requests[c].covariates.empty())
+        energy_fit(response, "pooled." + conditions[c].label, conditions[c], &condition_requests[c]);
+  }
+};
 
 }  // namespace
 
@@ -50,72 +100,14 @@ std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, cons
                                              const CorrelationRequest& request) {
   CorrelationRequest per_group = request;
   per_group.covariates.clear();
-  std::vector<std::size_t> all_points(table.grid_points.size());
-  std::iota(all_points.begin(), all_points.end(), 0);
-  std::vector<const CaseOutcome*> all_cases;
-  for (const CaseOutcome& c : table.cases) all_cases.push_back(&c);
   const auto by_point = cases_by_point(table);
-  const auto covariate_points = group_covariate_points(table, groups, request);
-  const bool pooled = groups.size() > 1;
+  const auto conditions = condition_groups(table, request);
+  std::vector<CorrelationRequest> condition_requests;
+  for (const CaseGroup& condition : conditions) condition_requests.push_back(condition_request(table, condition, request));
   // Each fit is a task; the tasks run on every core (run_in_parallel), results in this order.
   std::vector<std::function<LogisticFit()>> tasks;
-  for (const Outcome response : responses_present(table)) {
-    const std::string prefix(to_string(response));
-    const auto speed_fit = [&, response, prefix](const std::string& label, const nlohmann::ordered_json& axes,
-                                                 const std::vector<std::size_t>& points, bool all) {
-      const CorrelationRequest* ask = all ? &request : &per_group;
-      tasks.push_back([&, response, prefix, label, axes, points = &points, all, ask] {
-        return fit_logistic(named(prefix + ".speed." + label, axes), response, "impact_speed",
-                            speed_rows(table, by_point, *points, response, *ask), *ask,
-                            all ? covariate_points : std::vector<Eigen::VectorXd>{});
-      });
-    };
-    const auto energy_fit = [&, response, prefix](const std::string& label, const nlohmann::ordered_json& axes,
-                                                  const std::vector<const CaseOutcome*>& cases, bool all) {
-      const CorrelationRequest* ask = all ? &request : &per_group;
-      tasks.push_back([&, response, prefix, label, axes, cases = &cases, all, ask] {
-        return fit_logistic(named(prefix + ".energy." + label, axes), response, "energy_per_contact",
-                            energy_rows(table, *cases, response, *ask), *ask,
-                            all ? covariate_points : std::vector<Eigen::VectorXd>{});
-      });
-    };
-    if (!request.speed_axis.empty()) {
-      for (const CaseGroup& group : groups) speed_fit(group.label, group.axes, group.grid_points, false);
-      if (pooled) speed_fit("pooled", nlohmann::ordered_json::object(), all_points, true);
-    }
-    for (const CaseGroup& group : groups) energy_fit(group.label, group.axes, group.cases, false);
-    if (pooled) energy_fit("pooled", nlohmann::ordered_json::object(), all_cases, true);
-  }
-  return run_in_parallel(tasks);
-}
-
-namespace {
-
-// The distinct sizes among the rows of a size-pooled model (its one covariate), for its critical doses.
-std::vector<Eigen::VectorXd> row_sizes(const DoseData& rows) {
-  std::vector<Eigen::VectorXd> sizes;
-  for (const auto& values : rows.covariate_values)
-    if (std::none_of(sizes.begin(), sizes.end(), [&](const Eigen::VectorXd& seen) { return seen == values; }))
-      sizes.push_back(values);
-  return sizes;
-}
-
-}  // namespace
-
-std::vector<LogisticFit> fit_size_pooled_models(const CaseOutcomeTable& table, const CorrelationRequest& request) {
-  if (request.speed_axis.empty() || request.size_axis.empty()) return {};
-  CorrelationRequest over_sizes = request;
-  over_sizes.covariates = {{request.size_axis, true}};
-  const auto by_point = cases_by_point(table);
-  const auto groups = group_cases(table, request.speed_axis, request.size_axis);
-  std::vector<std::function<LogisticFit()>> tasks;
-  for (const Outcome response : responses_present(table))
-    for (const CaseGroup& group : groups)
-      tasks.push_back([&, response, group = &group] {
-        const auto rows = speed_rows(table, by_point, group->grid_points, response, over_sizes);
-        return fit_logistic(named(std::string(to_string(response)) + ".speed.sizes." + group->label, group->axes), response,
-                            "impact_speed", rows, over_sizes, row_sizes(rows));
-      });
+  ResponseFits fits{table, by_point, groups, conditions, condition_requests, per_group, tasks};
+  for (const Outcome response : responses_present(table)) fits.add(response);
   return run_in_parallel(tasks);
 }
 

@@ -8,11 +8,21 @@
 namespace aerobreak {
 namespace {
 
-// The groups' v_p with a bounded interval, from the per-group speed fits of one response.
-std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logistic, Outcome response, double level) {
+// Whether a per-group fit belongs to a condition: every axis of the condition has its value there.
+bool in_condition(const LogisticFit& fit, const CaseGroup& condition) {
+  for (const auto& [axis, value] : condition.axes.items())
+    if (!fit.common.group.contains(axis) || fit.common.group.at(axis) != value) return false;
+  return true;
+}
+
+// The groups' v_p with a bounded interval, from the per-group speed fits of one response in one
+// condition (the groups whose axes other than the modelled ones are the condition's).
+std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logistic, Outcome response, double level,
+                                         const CaseGroup& condition) {
   std::vector<ScalingPoint> points;
   for (const LogisticFit& fit : logistic) {
-    if (fit.response != response || fit.dose != "impact_speed" || fit.common.group.empty()) continue;
+    if (fit.response != response || fit.dose != "impact_speed" || !fit.covariates.empty() || !in_condition(fit, condition))
+      continue;
     for (const CriticalValue& value : fit.critical)
       if (value.level == level && value.estimate && value.lower && value.upper && *value.upper > *value.lower)
         points.push_back({fit.common.group, *value.estimate, *value.lower, *value.upper});
@@ -20,11 +30,13 @@ std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logisti
   return points;
 }
 
-// Non-speed axes that are numbers > 0 at every point and take more than one value.
-std::vector<std::string> varying_axes(const std::vector<ScalingPoint>& points) {
+// The modelled axes (the request's covariates) that are numbers > 0 at every point and take more
+// than one value.
+std::vector<std::string> varying_axes(const std::vector<ScalingPoint>& points, const CorrelationRequest& request) {
   std::vector<std::string> axes;
   if (points.empty()) return axes;
-  for (const auto& [axis, first] : points.front().group.items()) {
+  for (const auto& covariate : request.covariates) {
+    const std::string& axis = covariate.axis;
     std::set<double> values;
     bool usable = true;
     for (const ScalingPoint& point : points) {
@@ -61,15 +73,17 @@ void solve_weighted(ScalingFit& fit) {
   fit.common.goodness_of_fit = {{"chi-square", chi2, df, chi_square_upper_tail(chi2, df)}};
 }
 
-ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, double level) {
+ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, double level, const CaseGroup& condition,
+                   const CorrelationRequest& request) {
   ScalingFit fit;
   fit.response = response;
   fit.level = level;
   const int percent = static_cast<int>(std::lround(level * 100.0));
-  fit.common.name = "scaling." + std::string(to_string(response)) + ".v" + std::to_string(percent);
+  fit.common.name = "scaling." + std::string(to_string(response)) + ".v" + std::to_string(percent) + "." + condition.label;
   fit.common.kind = "scaling";
-  fit.points = scaling_points(logistic, response, level);
-  fit.axes = varying_axes(fit.points);
+  fit.common.group = condition.axes;
+  fit.points = scaling_points(logistic, response, level, condition);
+  fit.axes = varying_axes(fit.points, request);
   fit.common.groups = fit.points.size();
   fit.common.parameters = {"log(prefactor)"};
   for (const auto& axis : fit.axes) fit.common.parameters.push_back("exponent of " + axis);
@@ -84,29 +98,36 @@ ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, d
   if (fit.axes.empty() || fit.points.size() < fit.axes.size() + 1) {
     fit.common.status = FitStatus::insufficient_data;
     fit.common.detail = "too few points: " + std::to_string(fit.points.size()) + " group(s) with a bounded v" +
-                        std::to_string(percent) + " interval over " + std::to_string(fit.axes.size()) + " varying axis/axes";
+                        std::to_string(percent) + " interval over " + std::to_string(fit.axes.size()) +
+                        " varying modelled axis/axes in this condition";
     return fit;
   }
   solve_weighted(fit);
+  if (fit.points.size() == fit.axes.size() + 1)
+    fit.common.detail = "as many groups as parameters: the power law passes through every v" + std::to_string(percent) +
+                        " and nothing tests it; its intervals come from the groups' intervals alone";
   return fit;
 }
 
 }  // namespace
 
-std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic, const CorrelationRequest& request) {
+std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic, const std::vector<CaseGroup>& conditions,
+                                         const CorrelationRequest& request) {
   std::vector<ScalingFit> fits;
-  if (request.speed_axis.empty()) return fits;
+  if (request.speed_axis.empty() || request.covariates.empty()) return fits;
   std::set<Outcome> responses;
   for (const LogisticFit& fit : logistic) responses.insert(fit.response);
-  for (const Outcome response : responses) {
-    ScalingFit fit = fit_one(logistic, response, 0.5);
-    for (const LogisticFit& source : logistic)
-      if (source.response == response && source.dose == "impact_speed" && !source.common.group.empty()) {
-        fit.common.cases += source.common.cases;
-        fit.common.small_strain_cases += source.common.small_strain_cases;
-      }
-    fits.push_back(std::move(fit));
-  }
+  for (const Outcome response : responses)
+    for (const CaseGroup& condition : conditions) {
+      ScalingFit fit = fit_one(logistic, response, 0.5, condition, request);
+      for (const LogisticFit& source : logistic)
+        if (source.response == response && source.dose == "impact_speed" && source.covariates.empty() &&
+            in_condition(source, condition)) {
+          fit.common.cases += source.common.cases;
+          fit.common.small_strain_cases += source.common.small_strain_cases;
+        }
+      fits.push_back(std::move(fit));
+    }
   return fits;
 }
 

@@ -16,7 +16,10 @@ std::vector<RetainedFractionFit> fit_retained_fractions(const CaseOutcomeTable& 
 // log v_p = a + sum_k b_k log(axis_k) over the groups whose speed fit gave v_p with a bounded
 // interval, by weighted least squares with weights 1 / s_i^2, s_i = (ln hi - ln lo) / (2 x 1.96);
 // standard errors scaled by sqrt(max(1, chi^2/df)) (the Birge ratio) when the scatter exceeds the
-// intervals. The axes: every numeric, positive non-speed axis that varies among those groups.
-std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic, const CorrelationRequest& request);
+// intervals. One fit per response and condition (condition_groups: scaling.OUTCOME.v50.cK): the
+// axes are the modelled ones (the request's covariates) that are numeric, positive and vary among
+// the condition's groups; every other axis splits the conditions. None without covariates.
+std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic, const std::vector<CaseGroup>& conditions,
+                                         const CorrelationRequest& request);
 
 }  // namespace aerobreak

@@ -145,7 +145,8 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
           {"new_cases", receipt.new_cases},
           {"already_done", receipt.already_done},
           {"requeued", receipt.requeued},
-          {"recomputed", receipt.recomputed}};
+          {"recomputed", receipt.recomputed},
+          {"data_files_lost", receipt.data_files_lost}};
 }
 
 nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {

@@ -38,6 +38,15 @@ void address_of(const sockaddr_storage& address, std::string& ip, int& port) {
 
 }  // namespace
 
+ConnectionLimits health_connection_limits(const ConnectionLimits& limits) {
+  ConnectionLimits health = limits;
+  health.idle_timeout = std::chrono::seconds(1);
+  health.header_timeout = std::chrono::seconds(1);
+  health.request_timeout = std::chrono::seconds(5);
+  health.requests_per_connection = 1;
+  return health;
+}
+
 ConnectionStream::ConnectionStream(socket_t socket, const ConnectionLimits& limits,
                                    const std::atomic<socket_t>& listening_socket)
     : socket_(socket), limits_(limits), listening_socket_(listening_socket) {}
@@ -56,13 +65,21 @@ bool ConnectionStream::wait_for(short events, Clock::time_point deadline) const 
   }
 }
 
+void ConnectionStream::start_awaiting() {
+  awaiting_since_ = Clock::now().time_since_epoch().count();
+  awaiting_ = true;
+}
+
 bool ConnectionStream::await_request() {
   fault_.reset();
   in_headers_ = true;
   header_bytes_ = 0;
   header_lines_ = 0;
+  header_line_bytes_ = 0;
   header_tail_ = 0;
+  request_bytes_ = 0;
   bytes_written_ = 0;
+  start_awaiting();
   if (buffered_begin_ == buffered_end_) {
     if (!wait_for(POLLIN, Clock::now() + limits_.idle_timeout) || !fill_buffer()) return false;
   }
@@ -81,8 +98,25 @@ bool ConnectionStream::fill_buffer() {
   }
 }
 
-ConnectionStream::Clock::time_point ConnectionStream::read_deadline() const {
-  return request_started_ + (in_headers_ ? limits_.header_timeout : limits_.request_timeout);
+ConnectionStream::Clock::time_point ConnectionStream::read_deadline(bool* by_rate) const {
+  const auto timeout = request_started_ + (in_headers_ ? limits_.header_timeout : limits_.request_timeout);
+  if (by_rate) *by_rate = false;
+  if (limits_.min_bytes_per_second == 0) return timeout;
+  const double seconds_earned = static_cast<double>(request_bytes_) / static_cast<double>(limits_.min_bytes_per_second);
+  const auto earned = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_earned));
+  const auto by_minimum_rate = request_started_ + limits_.rate_grace + earned;
+  if (by_minimum_rate >= timeout) return timeout;
+  if (by_rate) *by_rate = true;
+  return by_minimum_rate;
+}
+
+std::string ConnectionStream::too_slow_message(bool by_rate) const {
+  if (by_rate)
+    return "the request arrived slower than " + std::to_string(limits_.min_bytes_per_second) + " bytes/s (" +
+           std::to_string(request_bytes_) + " bytes in its first " +
+           seconds_text(std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - request_started_)) + ")";
+  return in_headers_ ? "the request line and headers did not arrive within " + seconds_text(limits_.header_timeout)
+                     : "the request did not arrive within " + seconds_text(limits_.request_timeout);
 }
 
 void ConnectionStream::fail(int status, std::string message) {
@@ -93,7 +127,17 @@ bool ConnectionStream::account_header_bytes(const char* bytes, std::size_t count
   for (std::size_t i = 0; i < count && in_headers_; ++i) {
     const auto byte = static_cast<unsigned char>(bytes[i]);
     header_tail_ = (header_tail_ << 8) | byte;
-    if (byte == '\n') ++header_lines_;
+    if (++header_line_bytes_ > limits_.max_header_line_bytes) {
+      const bool request_line = header_lines_ == 0;
+      fail(request_line ? 414 : 431, std::string(request_line ? "the request line" : "a header line") +
+                                         " is longer than " + std::to_string(limits_.max_header_line_bytes) +
+                                         " bytes");
+      return false;
+    }
+    if (byte == '\n') {
+      ++header_lines_;
+      header_line_bytes_ = 0;
+    }
     if (++header_bytes_ > limits_.max_header_bytes) {
       fail(431, "the request line and headers are longer than " + std::to_string(limits_.max_header_bytes) + " bytes");
       return false;
@@ -102,7 +146,10 @@ bool ConnectionStream::account_header_bytes(const char* bytes, std::size_t count
       fail(431, "the request has more than " + std::to_string(limits_.max_header_lines - 1) + " header lines");
       return false;
     }
-    if (header_tail_ == kHeaderEnd) in_headers_ = false;
+    if (header_tail_ == kHeaderEnd) {
+      in_headers_ = false;
+      awaiting_ = false;
+    }
   }
   return true;
 }
@@ -114,11 +161,10 @@ bool ConnectionStream::is_readable() const {
 ssize_t ConnectionStream::read(char* ptr, size_t size) {
   if (fault_) return -1;
   if (buffered_begin_ == buffered_end_) {
-    const auto deadline = read_deadline();
+    bool by_rate = false;
+    const auto deadline = read_deadline(&by_rate);
     if (!wait_for(POLLIN, deadline)) {
-      if (Clock::now() >= deadline)
-        fail(408, in_headers_ ? "the request line and headers did not arrive within " + seconds_text(limits_.header_timeout)
-                              : "the request did not arrive within " + seconds_text(limits_.request_timeout));
+      if (Clock::now() >= deadline) fail(408, too_slow_message(by_rate));
       return -1;
     }
     if (!fill_buffer()) return -1;
@@ -126,6 +172,7 @@ ssize_t ConnectionStream::read(char* ptr, size_t size) {
   const std::size_t count = std::min(size, buffered_end_ - buffered_begin_);
   const char* bytes = buffer_.data() + buffered_begin_;
   if (in_headers_ && !account_header_bytes(bytes, count)) return -1;
+  request_bytes_ += count;
   std::memcpy(ptr, bytes, count);
   buffered_begin_ += count;
   return static_cast<ssize_t>(count);

@@ -15,8 +15,9 @@ constexpr std::size_t kMaxCovariates = 8;
 
 // ?covariates=a,b (empty: none); absent: the study's default.
 std::optional<std::vector<std::string>> covariates_parameter(const httplib::Request& request) {
-  if (!request.has_param("covariates")) return std::nullopt;
-  const std::string text = request.get_param_value("covariates");
+  const auto given = single_parameter(request, "covariates");
+  if (!given) return std::nullopt;
+  const std::string& text = *given;
   if (text.size() > kMaxCovariateText)
     throw RequestError{400, "query parameter 'covariates' is longer than " + std::to_string(kMaxCovariateText) + " characters"};
   std::vector<std::string> names;

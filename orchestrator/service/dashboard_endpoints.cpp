@@ -59,16 +59,8 @@ nlohmann::ordered_json grid_json(std::int64_t study, const std::vector<GridPoint
 
 CaseFilter case_filter(const httplib::Request& request, Store& store, GridPointCache& grid, std::int64_t study_id) {
   CaseFilter filter;
-  if (request.has_param("status")) {
-    filter.status = parse_case_status(request.get_param_value("status"));
-    if (!filter.status) throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
-  }
-  if (request.has_param("outcome")) {
-    filter.outcome = request.get_param_value("outcome");
-    if (*filter.outcome != "stick" && *filter.outcome != "bounce" && *filter.outcome != "break-up" &&
-        *filter.outcome != "undetermined")
-      throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
-  }
+  filter.status = status_parameter(request);
+  filter.outcome = outcome_parameter(request);
   const AxisFilter axes(request);
   if (!axes.empty()) filter.grid_keys = axes.matching_keys(*grid.points(store, study_id));
   return filter;

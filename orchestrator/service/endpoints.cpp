@@ -11,6 +11,7 @@ Endpoints::Endpoints(Store& store_, Scheduler* scheduler_, const ServiceOptions&
       scheduler(scheduler_),
       options(options_),
       correlations(store_),
+      tables(store_, correlations),
       grids([&store_](std::int64_t study) { return grid_document(store_, study); }),
       outcome_tables([&store_](std::int64_t study) { return outcome_table_document(store_, study); }),
       web_assets(load_web_assets(options_.web_directory)) {}

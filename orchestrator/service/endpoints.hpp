@@ -3,7 +3,8 @@
 
 #include <memory>
 
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/app/study_tables.hpp"
 #include "orchestrator/service/grid_point_cache.hpp"
 #include "orchestrator/service/service.hpp"
 #include "orchestrator/service/versioned_documents.hpp"
@@ -23,7 +24,8 @@ struct Endpoints {
   const ServiceOptions& options;
   DataFileChecker data_files;        // a case's HDF5 file against the size and SHA-256 recorded
   GridPointCache grid_points;        // a study's grid points, for the axis filters
-  CorrelationCache correlations;     // fitted once per result set (docs/CORRELATIONS.md)
+  StudyFits correlations;            // fitted once per result set, stored (docs/CORRELATIONS.md)
+  StudyTables tables;                // lookup tables built once per result-set version and request
   VersionedDocuments grids;          // GET .../grid, serialised per study version
   VersionedDocuments outcome_tables; // GET .../outcomes, likewise
   std::shared_ptr<const WebAssets> web_assets;  // the dashboard's files; null: the API only

@@ -8,6 +8,7 @@
 #include "engine/core/version.hpp"
 #include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
+#include "orchestrator/service/byte_ranges.hpp"
 #include "orchestrator/service/error_answers.hpp"
 #include "orchestrator/service/http_support.hpp"
 #include "orchestrator/service/json_body.hpp"
@@ -84,8 +85,10 @@ void submit_study(Endpoints& e, const httplib::Request& request, httplib::Respon
   try {
     const Study study = parse_study(std::move(document), e.options.study_limits);
     StudySubmission submission = make_submission(study);
-    recompute_lost_data_files(submission, e.store, e.data_files);
-    const auto receipt = e.store.submit_study(submission);
+    const auto lost = lost_data_files(submission, e.store, e.data_files);
+    if (flag_parameter(request, "recompute_data_files")) submission.recompute = lost;
+    auto receipt = e.store.submit_study(submission);
+    receipt.data_files_lost = lost.size();
     if (e.scheduler) e.scheduler->wake();
     response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
     send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));
@@ -103,23 +106,14 @@ void get_study(Endpoints& e, const httplib::Request& request, httplib::Response&
 
 void list_study_cases(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
   const auto study = existing_study(e.store, path_id(request));
-  std::optional<CaseStatus> status;
-  if (request.has_param("status")) {
-    status = parse_case_status(request.get_param_value("status"));
-    if (!status) throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
-  }
+  const auto status = status_parameter(request);
   const auto page = page_request(request, e.options);
   send_json(response, 200, page_json(e.store.cases(study.id, status, page), page));
 }
 
 void list_study_results(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
   const auto study = existing_study(e.store, path_id(request));
-  std::optional<std::string> outcome;
-  if (request.has_param("outcome")) {
-    outcome = request.get_param_value("outcome");
-    if (*outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
-      throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
-  }
+  const auto outcome = outcome_parameter(request);
   const auto page = page_request(request, e.options);
   send_json(response, 200, page_json(e.store.results(study.id, outcome, page), page));
 }
@@ -153,6 +147,7 @@ void register_http_api(httplib::Server& server, Endpoints& endpoints) {
   server.set_pre_routing_handler([&options](const httplib::Request& request, httplib::Response& response) {
     return check_request(request, response, options);
   });
+  server.set_post_routing_handler(apply_byte_ranges);
   server.set_error_handler(answer_error);
   server.set_exception_handler(answer_exception);
   if (options.access_log) server.set_logger(access_logger(options.access_log));

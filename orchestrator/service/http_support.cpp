@@ -4,7 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include <zlib.h>
+#include "orchestrator/app/compression.hpp"
 
 namespace aerobreak {
 namespace {
@@ -22,33 +22,18 @@ bool compressible(const std::string& content_type) {
 
 }  // namespace
 
-std::string gzip(const std::string& text) {
-  z_stream stream{};
-  if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-    throw std::runtime_error("zlib: deflateInit2 failed");
-  std::string out(deflateBound(&stream, static_cast<uLong>(text.size())), '\0');
-  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-  stream.avail_in = static_cast<uInt>(text.size());
-  stream.next_out = reinterpret_cast<Bytef*>(out.data());
-  stream.avail_out = static_cast<uInt>(out.size());
-  const int status = deflate(&stream, Z_FINISH);
-  out.resize(stream.total_out);
-  deflateEnd(&stream);
-  if (status != Z_STREAM_END) throw std::runtime_error("zlib: deflate did not finish");
-  return out;
-}
-
 bool accepts_gzip(const httplib::Request& request) {
   return request.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
 }
 
 void compress_answer(const httplib::Request& request, httplib::Response& response) {
   // Error answers keep their body, where the service's error handler looks for it (error_answers.cpp).
-  if (response.status >= 400 || response.body.empty() || !request.ranges.empty() || response.has_header("Content-Encoding"))
-    return;
+  if (response.status >= 400 || response.body.empty() || response.has_header("Content-Encoding")) return;
   const std::string content_type = response.get_header_value("Content-Type");
   if (!compressible(content_type)) return;
-  const bool gzipped = response.body.size() >= kCompressFromBytes && accepts_gzip(request);
+  // A Range counts the bytes of the answer as it is (byte_ranges.hpp): one asked for is not gzipped.
+  const bool gzipped =
+      response.body.size() >= kCompressFromBytes && accepts_gzip(request) && !request.has_header("Range");
   auto body = std::make_shared<const std::string>(gzipped ? gzip(response.body) : std::move(response.body));
   response.body.clear();
   response.headers.erase("Content-Type");
@@ -77,10 +62,45 @@ nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& viola
   return list;
 }
 
+std::optional<std::string> single_parameter(const httplib::Request& request, const std::string& name) {
+  const std::size_t given = request.get_param_value_count(name);
+  if (given == 0) return std::nullopt;
+  if (given > 1) {
+    const std::string message = "query parameter '" + name + "' is given " + std::to_string(given) +
+                                " times; it takes one value";
+    throw RequestError{400, message, nlohmann::ordered_json::array({{{"parameter", name}, {"message", message}}})};
+  }
+  return request.get_param_value(name);
+}
+
+bool flag_parameter(const httplib::Request& request, const std::string& name) {
+  const auto text = single_parameter(request, name);
+  if (!text || *text == "false") return false;
+  if (*text != "true")
+    throw RequestError{400, "query parameter '" + name + "' must be true or false (got '" + *text + "')"};
+  return true;
+}
+
+std::optional<CaseStatus> status_parameter(const httplib::Request& request) {
+  const auto text = single_parameter(request, "status");
+  if (!text) return std::nullopt;
+  const auto status = parse_case_status(*text);
+  if (!status) throw RequestError{400, "query parameter 'status' must be queued, running, done, failed or cancelled"};
+  return status;
+}
+
+std::optional<std::string> outcome_parameter(const httplib::Request& request) {
+  auto outcome = single_parameter(request, "outcome");
+  if (outcome && *outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
+    throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
+  return outcome;
+}
+
 std::size_t unsigned_parameter(const httplib::Request& request, const std::string& name, std::size_t fallback,
                                std::size_t maximum) {
-  if (!request.has_param(name)) return fallback;
-  const std::string text = request.get_param_value(name);
+  const auto given = single_parameter(request, name);
+  if (!given) return fallback;
+  const std::string& text = *given;
   std::size_t value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || value > maximum)
@@ -128,6 +148,12 @@ bool names_current_tag(const httplib::Request& request, const std::string& etag)
 
 void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
                     std::shared_ptr<const void> owner, const std::string& body, const std::string& content_encoding) {
+  send_kept(request, response, etag, std::move(owner), body, "application/json", content_encoding);
+}
+
+void send_kept(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+               std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
+               const std::string& content_encoding) {
   response.set_header("ETag", etag);
   response.set_header("Cache-Control", "no-cache");
   if (names_current_tag(request, etag)) {
@@ -136,7 +162,7 @@ void send_kept_json(const httplib::Request& request, httplib::Response& response
   }
   response.status = 200;
   if (!content_encoding.empty()) response.set_header("Content-Encoding", content_encoding);
-  response.set_content_provider(body.size(), "application/json",
+  response.set_content_provider(body.size(), content_type.c_str(),
                                 [owner = std::move(owner), &body](std::size_t offset, std::size_t length,
                                                                   httplib::DataSink& sink) {
                                   return sink.write(body.data() + offset, length);

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,16 @@ void send_json(httplib::Response& response, int status, const nlohmann::ordered_
 void send_error(httplib::Response& response, const RequestError& error);
 nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& violations);
 
+// Every query parameter that takes one value is read here. Query parameter `name`: its value,
+// nullopt when absent; RequestError 400 naming it when it is given more than once (a second value
+// is refused, never silently dropped). Only axis.NAME filters (grid_filter.hpp) take several.
+std::optional<std::string> single_parameter(const httplib::Request& request, const std::string& name);
+// ?NAME=true or ?NAME=false (absent: false); RequestError 400 otherwise.
+bool flag_parameter(const httplib::Request& request, const std::string& name);
+// ?status= as a case status (queued, running, done, failed, cancelled); RequestError 400 otherwise.
+std::optional<CaseStatus> status_parameter(const httplib::Request& request);
+// ?outcome= as an outcome class (stick, bounce, break-up, undetermined); RequestError 400 otherwise.
+std::optional<std::string> outcome_parameter(const httplib::Request& request);
 // Query parameter `name` as an integer in [0, maximum], `fallback` when absent; RequestError 400
 // naming the parameter otherwise.
 std::size_t unsigned_parameter(const httplib::Request& request, const std::string& name, std::size_t fallback,
@@ -50,9 +61,12 @@ bool names_current_tag(const httplib::Request& request, const std::string& etag)
 void send_kept_json(const httplib::Request& request, httplib::Response& response, const std::string& etag,
                     std::shared_ptr<const void> owner, const std::string& body,
                     const std::string& content_encoding = "");
+// The same for a kept body of any content type.
+void send_kept(const httplib::Request& request, httplib::Response& response, const std::string& etag,
+               std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
+               const std::string& content_encoding = "");
 
-// RFC 1952 gzip of `text` (zlib's deflate at its default level with a gzip wrapper).
-std::string gzip(const std::string& text);
+
 // Whether the request's Accept-Encoding names gzip.
 bool accepts_gzip(const httplib::Request& request);
 

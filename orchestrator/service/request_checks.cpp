@@ -57,6 +57,14 @@ std::optional<std::size_t> content_length(const httplib::Request& request) {
   return length;
 }
 
+// A connection on a slot kept for /api/health (ConnectionSlots) may ask for nothing else.
+void check_health_only(const httplib::Request& request, const ServiceOptions& options) {
+  if (!current_connection_health_only()) return;
+  if ((request.method == "GET" || request.method == "HEAD") && request.path == "/api/health") return;
+  throw RequestError{503, "the service is serving its limit of " + std::to_string(options.connections.max_connections) +
+                              " connections; beyond it only GET /api/health is answered: try again shortly"};
+}
+
 void check_framing(const httplib::Request& request, const ServiceOptions& options) {
   if (request.has_header("Transfer-Encoding"))
     throw RequestError{411, "a request body needs a Content-Length (Transfer-Encoding is not accepted)"};
@@ -105,6 +113,7 @@ std::string host_of(const std::string& host_header) {
 httplib::Server::HandlerResponse check_request(const httplib::Request& request, httplib::Response& response,
                                                const ServiceOptions& options) {
   try {
+    check_health_only(request, options);
     check_framing(request, options);
     if (!options.token) check_origin(request);
     const bool reads_only = request.method == "GET" || request.method == "HEAD";

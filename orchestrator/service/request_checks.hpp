@@ -6,6 +6,7 @@
 namespace aerobreak {
 
 // Checks every request after its headers and before it is routed or its body is read, in order:
+//   health only  on a slot kept for /api/health (connection_slots.hpp): GET or HEAD of it  503
 //   framing      one Content-Length value, a number, no Transfer-Encoding; a method with a body
 //                (POST, PUT, PATCH, DELETE) has a Content-Length within the body limit   400 411 413
 //   origin       without a token: the Host header names a loopback address, so that a web

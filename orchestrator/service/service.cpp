@@ -38,7 +38,9 @@ void Service::start() {
   if (!is_loopback_host(options_.host) && !options_.token)
     throw std::runtime_error("refusing to listen on " + options_.host +
                              " without a bearer token: give --token-file (or listen on 127.0.0.1)");
-  server_ = std::make_unique<BoundedServer>(options_.connections, options_.access_log);
+  auto server = std::make_unique<BoundedServer>(options_.connections, options_.access_log);
+  BoundedServer& bounded = *server;
+  server_ = std::move(server);
   server_->set_payload_max_length(options_.max_body_bytes);
   // Small JSON answers: without TCP_NODELAY, Nagle's algorithm and delayed ACKs add ~40 ms to each.
   server_->set_tcp_nodelay(true);
@@ -52,6 +54,7 @@ void Service::start() {
     throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) + ": " + reason +
                              " (another service on that port? choose another with --port)");
   }
+  bounded.widen_accept_queue();
   listening_ended_ = false;
   thread_ = std::thread([this] {
     server_->listen_after_bind();

@@ -46,16 +46,18 @@ StudySubmission make_submission(const Study& study) {
   return submission;
 }
 
-void recompute_lost_data_files(StudySubmission& submission, Store& store, DataFileChecker& checker) {
+std::vector<std::string> lost_data_files(const StudySubmission& submission, Store& store, DataFileChecker& checker) {
   // The cases the study expands to, and those a stored copy of it holds besides: the later rounds
   // of a search, which its document does not name.
   std::set<std::string> hashes;
   for (const auto& study_case : submission.cases) hashes.insert(study_case.hash);
   for (auto& hash : store.study_case_hashes(submission.hash)) hashes.insert(std::move(hash));
+  std::vector<std::string> lost;
   for (const auto& file : store.data_files({hashes.begin(), hashes.end()})) {
     const auto state = checker.check(file.path, file.digest).state;
-    if (state == DataFileState::missing || state == DataFileState::damaged) submission.recompute.push_back(file.hash);
+    if (state == DataFileState::missing || state == DataFileState::damaged) lost.push_back(file.hash);
   }
+  return lost;
 }
 
 }  // namespace aerobreak

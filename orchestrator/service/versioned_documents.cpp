@@ -3,10 +3,10 @@
 #include <random>
 #include <utility>
 
+#include "orchestrator/app/compression.hpp"
 #include "orchestrator/service/http_support.hpp"
 
 namespace aerobreak {
-
 
 VersionedDocuments::VersionedDocuments(Build build)
     : build_(std::move(build)), instance_(std::to_string(std::random_device{}())) {}

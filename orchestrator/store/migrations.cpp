@@ -231,6 +231,17 @@ CREATE TABLE search_rounds (
 ) WITHOUT ROWID;
 )sql";
 
+// Data-file paths relative to the data folder (data_paths.hpp), so that a store moved or copied
+// with its data folder finds its files: every file the scheduler asked for is DATA/cases/HASH.h5,
+// so a recorded absolute path that ends in /cases/HASH.h5 (HASH its case's) becomes cases/HASH.h5;
+// any other path is kept as it is.
+constexpr std::string_view kVersion8 = R"sql(
+UPDATE results SET data_file = (SELECT 'cases/' || c.hash || '.h5' FROM cases c WHERE c.id = results.case_id)
+WHERE data_file LIKE '/%'
+  AND EXISTS (SELECT 1 FROM cases c
+              WHERE c.id = results.case_id AND results.data_file LIKE '%/cases/' || c.hash || '.h5');
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -240,6 +251,7 @@ constexpr std::array kMigrations{
     Migration{5, "stored correlation sets and fits", kVersion5},
     Migration{6, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion6},
     Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
+    Migration{8, "data-file paths relative to the data folder", kVersion8},
 };
 
 int user_version(SqliteDatabase& db) {

@@ -3,7 +3,9 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "orchestrator/store/data_paths.hpp"
 #include "orchestrator/store/migrations.hpp"
+#include "orchestrator/store/store_file.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
 #include "orchestrator/store/store_search_rows.hpp"
 #include "orchestrator/store/store_summaries.hpp"
@@ -14,11 +16,19 @@ double unix_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-Store::Store(const std::filesystem::path& file, Access access) : file_(file) {
+Store::Store(const std::filesystem::path& file, Access access, const std::filesystem::path& data_directory)
+    : file_(file),
+      data_directory_(
+          std::filesystem::absolute(data_directory.empty() ? default_data_directory(file) : data_directory)) {
   if (access == Access::reader) {
     open_for_reading();
     return;
   }
+  // Examined read-only before it is locked, migrated or switched to WAL: a file that is not empty
+  // and not an aerobreak store this aerobreak can upgrade is refused unchanged.
+  const StoreFileState state = inspect_store_file(file);
+  if (state.kind == StoreFileState::Kind::foreign || state.kind == StoreFileState::Kind::newer)
+    throw StoreFileRefused(state.problem + "; a store is a new or empty file, or an aerobreak store");
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   lock_.emplace(file);
   writer_ = std::make_unique<SqliteDatabase>(file);
@@ -31,14 +41,20 @@ Store::Store(const std::filesystem::path& file, Access access) : file_(file) {
 }
 
 void Store::open_for_reading() {
-  if (!std::filesystem::exists(file_)) throw std::runtime_error("no store file " + file_.string());
-  writer_ = std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only);
-  opened_at_version_ = schema_version();
-  if (opened_at_version_ != latest_store_version())
-    throw std::runtime_error("the store " + file_.string() + " has schema version " +
-                             std::to_string(opened_at_version_) + ", this aerobreak reads version " +
-                             std::to_string(latest_store_version()) +
+  const StoreFileState state = inspect_store_file(file_);
+  switch (state.kind) {
+    case StoreFileState::Kind::absent: throw std::runtime_error("no store file " + file_.string());
+    case StoreFileState::Kind::empty: throw StoreFileRefused("the file " + file_.string() + " is empty: no store yet");
+    case StoreFileState::Kind::foreign:
+    case StoreFileState::Kind::newer: throw StoreFileRefused(state.problem);
+    case StoreFileState::Kind::store: break;
+  }
+  if (state.version != latest_store_version())
+    throw std::runtime_error("the store " + file_.string() + " has schema version " + std::to_string(state.version) +
+                             ", this aerobreak reads version " + std::to_string(latest_store_version()) +
                              ": open it once with `aerobreak serve` or `aerobreak run` of this version to upgrade it");
+  writer_ = std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only);
+  opened_at_version_ = state.version;
 }
 
 Store::~Store() = default;
@@ -64,31 +80,28 @@ int Store::schema_version() {
 
 namespace {
 
-// Done cases whose data file was lost or damaged go back to the queue: their results and fragments
-// are dropped, to be computed again. Returns how many.
+// Done cases whose data file was lost or damaged, and whose recomputation was asked for, go back
+// to the queue. Their results and fragments stay (served as before) until commit_result replaces
+// them. Returns how many.
 std::size_t requeue_for_recompute(SqliteDatabase& db, const std::vector<std::string>& hashes, double now) {
-  auto find = db.prepare("SELECT id FROM cases WHERE hash = ? AND status = 'done'");
-  auto drop_fragments = db.prepare("DELETE FROM fragments WHERE case_id = ?");
-  auto drop_result = db.prepare("DELETE FROM results WHERE case_id = ?");
   auto requeue = db.prepare(
       "UPDATE cases SET status = 'queued', queued_at = ?, finished_at = NULL, "
-      "error = 'its data file was lost or damaged: computed again' WHERE id = ?");
+      "error = 'its data file was lost or damaged: computed again (its result is kept until then)' "
+      "WHERE hash = ? AND status = 'done'");
   std::size_t requeued = 0;
   for (const auto& hash : hashes) {
-    find.reset();
-    find.bind_all(hash);
-    if (!find.step()) continue;
-    const std::int64_t case_id = find.integer(0);
-    for (auto* statement : {&drop_fragments, &drop_result}) {
-      statement->reset();
-      statement->bind_all(case_id);
-      statement->run();
-    }
     requeue.reset();
-    requeue.bind_all(now, case_id).run();
-    ++requeued;
+    requeue.bind_all(now, hash).run();
+    requeued += static_cast<std::size_t>(db.changes());
   }
   return requeued;
+}
+
+// The result a case had before (one queued again to recompute its data file), dropped in the
+// transaction that stores its replacement.
+void drop_result(SqliteDatabase& db, std::int64_t case_id) {
+  for (const char* sql : {"DELETE FROM fragments WHERE case_id = ?", "DELETE FROM results WHERE case_id = ?"})
+    db.prepare(sql).bind_all(case_id).run();
 }
 
 // A study submitted again: wanted again if it was cancelled, and so are its cancelled cases.
@@ -269,7 +282,9 @@ bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ord
       .bind_all(now, case_id, attempt)
       .run();
   if (writer_->changes() != 1) return false;
-  insert_result(*writer_, case_id, attempt, result, data_file, wall_clock_seconds, digest, now);
+  drop_result(*writer_, case_id);
+  insert_result(*writer_, case_id, attempt, result, stored_data_path(data_directory_, data_file), wall_clock_seconds,
+                digest, now);
   writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = 'done' WHERE case_id = ? AND attempt = ?")
       .bind_all(now, case_id, attempt)
       .run();

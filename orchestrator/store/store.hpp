@@ -24,15 +24,22 @@ namespace aerobreak {
 class Store {
  public:
   enum class Access { orchestrator, reader };
-  // As orchestrator: throws StoreInUse when another orchestrator Store, in this process or
-  // another, has the file open. As reader: opens an existing store of the current schema version
-  // read-only (std::runtime_error otherwise); any writer method then fails with an SQLite error.
-  explicit Store(const std::filesystem::path& file, Access access = Access::orchestrator);
+  // The file is examined read-only first (store_file.hpp): one that is not absent, empty or an
+  // aerobreak store this aerobreak can open is refused unchanged (StoreFileRefused, naming what
+  // it is: another program's database, a newer aerobreak's store, not SQLite). As orchestrator:
+  // throws StoreInUse when another orchestrator Store, in this process or another, has the file
+  // open. As reader: opens an existing store of the current schema version read-only
+  // (std::runtime_error otherwise); any writer method then fails with an SQLite error.
+  // Data-file paths are kept relative to `data_directory` (data_paths.hpp; empty: the store's
+  // default, STORE.data) and read back as where they lie under it now.
+  explicit Store(const std::filesystem::path& file, Access access = Access::orchestrator,
+                 const std::filesystem::path& data_directory = {});
   ~Store();
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;
 
   const std::filesystem::path& file() const { return file_; }
+  const std::filesystem::path& data_directory() const { return data_directory_; }
   int schema_version();
   // The version the file had when this Store opened it (0: created now).
   int opened_at_version() const { return opened_at_version_; }
@@ -41,7 +48,8 @@ class Store {
 
   // Stores a study and links its cases. A case is stored once, by its content hash, whatever the
   // number of studies that name it: a finished case is never rerun, a cancelled one is queued
-  // again, and so is a done one named in submission.recompute (its data file was lost or damaged).
+  // again, and so is a done one named in submission.recompute (its data file was lost or damaged,
+  // and its recomputation was asked for): its result stays, served, until the new one replaces it.
   // Submitting the same study (same hash) again changes nothing else and returns its id.
   SubmissionReceipt submit_study(const StudySubmission& submission);
 
@@ -53,7 +61,8 @@ class Store {
 
   // Commits a result exactly once: only while the case is running the same attempt. Returns false
   // (and changes nothing) for a late, duplicate or unknown result. The data file's size and
-  // checksum are kept with it.
+  // checksum are kept with it, its path relative to the data folder. A result the case had (it was
+  // queued again to recompute its data file) is replaced in the same transaction.
   bool commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
                      const std::string& data_file, double wall_clock_seconds, const DataFileDigest& digest = {});
   // An attempt that ended without a result: the case goes back to the queue, or is marked failed
@@ -161,6 +170,7 @@ class Store {
   std::size_t requeue_running(const std::string& condition, const std::string& reason);
 
   std::filesystem::path file_;
+  std::filesystem::path data_directory_;
   std::optional<StoreLock> lock_;
   void open_for_reading();
   int opened_at_version_ = 0;

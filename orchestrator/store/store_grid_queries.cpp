@@ -14,14 +14,16 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kOutcomes{"stick", "bounce", "break-up", "undetermined"};
 
-// Each result quantity with moments: its column and where it goes.
+// Each result quantity with moments: its column (an SQL expression) and where it goes. The
+// restitution is the bounces' only (docs/CORRELATIONS.md): that of a stick or a break-up (the
+// largest fragment's, often negative on the wall) is not a coefficient of restitution of the cluster.
 struct MomentColumn {
   std::string_view column;
   Moments GridPointStatistics::*moments;
 };
 constexpr std::array<MomentColumn, 6> kMomentColumns{{
     {"r.retained_mass_fraction", &GridPointStatistics::retained_mass_fraction},
-    {"r.restitution", &GridPointStatistics::restitution},
+    {"(CASE WHEN r.outcome = 'bounce' THEN r.restitution END)", &GridPointStatistics::restitution},
     {"r.fragment_count", &GridPointStatistics::fragment_count},
     {"r.largest_fragment_share", &GridPointStatistics::largest_fragment_share},
     {"r.damage_ratio", &GridPointStatistics::damage_ratio},

@@ -3,6 +3,7 @@
 #include <array>
 #include <map>
 
+#include "orchestrator/store/data_paths.hpp"
 #include "orchestrator/store/store.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
 
@@ -73,7 +74,8 @@ CaseRecord case_from(const SqliteStatement& row) {
   return record;
 }
 
-ResultRecord result_from(const SqliteStatement& row) {
+// A result row; its data file where it lies under `data_directory` now.
+ResultRecord result_from(const SqliteStatement& row, const std::filesystem::path& data_directory) {
   ResultRecord record;
   record.case_id = row.integer(0);
   record.hash = row.text(1);
@@ -94,7 +96,7 @@ ResultRecord result_from(const SqliteStatement& row) {
   record.initial_contacts = row.optional_integer(16);
   record.impact_energy = row.optional_real(17);
   record.wall_clock_seconds = row.optional_real(18);
-  record.data_file = row.optional_text(19);
+  if (const auto stored = row.optional_text(19)) record.data_file = data_path_on_disk(data_directory, *stored);
   record.committed_at = row.real(20);
   return record;
 }
@@ -249,7 +251,7 @@ Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::stri
   if (outcome) statement.bind(index++, *outcome);
   statement.bind(index++, page.limit);
   statement.bind(index, page.offset);
-  while (statement.step()) result.items.push_back(result_from(statement));
+  while (statement.step()) result.items.push_back(result_from(statement, data_directory_));
   return result;
 }
 
@@ -280,7 +282,7 @@ std::optional<CaseDetail> Store::case_detail(std::int64_t case_id) {
   result.bind_all(case_id);
   if (result.step()) {
     detail.result = nlohmann::ordered_json::parse(result.text(0));
-    detail.data_file = result.optional_text(1);
+    if (const auto stored = result.optional_text(1)) detail.data_file = data_path_on_disk(data_directory_, *stored);
     detail.data_file_digest = {result.optional_integer(2).value_or(-1), result.optional_text(3).value_or("")};
   }
 
@@ -319,7 +321,7 @@ std::vector<StoredDataFile> Store::data_files(const std::vector<std::string>& ha
     statement.reset();
     statement.bind_all(hash);
     if (statement.step())
-      files.push_back({hash, statement.text(0),
+      files.push_back({hash, data_path_on_disk(data_directory_, statement.text(0)),
                        {statement.optional_integer(1).value_or(-1), statement.optional_text(2).value_or("")}});
   }
   return files;

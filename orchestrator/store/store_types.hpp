@@ -48,7 +48,8 @@ struct StudySubmission {
     int cases = 0;
   };
   std::vector<SearchGroup> search_groups;
-  // Hashes of done cases to compute again (their data files were lost or damaged).
+  // Hashes of done cases to compute again (their data files were lost or damaged, and the
+  // submitter asked for it); their results stay until the new ones replace them.
   std::vector<std::string> recompute;
 };
 
@@ -107,7 +108,8 @@ struct SubmissionReceipt {
   std::size_t new_cases = 0;     // queued now for the first time
   std::size_t already_done = 0;  // finished for another study: not rerun
   std::size_t requeued = 0;      // cancelled before, queued again
-  std::size_t recomputed = 0;    // done, but queued again: the data file was lost or damaged
+  std::size_t recomputed = 0;    // done, but queued again: the data file was lost or damaged (asked for)
+  std::size_t data_files_lost = 0;  // done cases whose data file is missing or damaged (results kept)
 };
 
 // A case's bulk data file as its worker wrote it, so that a damaged or lost file is noticed later.
@@ -280,7 +282,7 @@ struct Moments {
 struct GridPointStatistics {
   GridPointOutcomes outcomes;
   Moments retained_mass_fraction;
-  Moments restitution;
+  Moments restitution;  // of the bounces only (count: how many)
   Moments fragment_count;
   Moments largest_fragment_share;
   Moments damage_ratio;

@@ -1,8 +1,9 @@
 #include "orchestrator/study/study.hpp"
 
-#include <fstream>
+#include <algorithm>
 #include <limits>
 
+#include "engine/io/json_text.hpp"
 #include "orchestrator/study/canonical_json.hpp"
 #include "orchestrator/study/sha256.hpp"
 #include "orchestrator/study/study_axes.hpp"
@@ -42,30 +43,31 @@ void make_cluster_paths_absolute(Json& document, const std::filesystem::path& di
       for (auto& value : spec["values"]) absolute(value);
 }
 
-// The rules on the base: it sets no swept field and no seed the replicates derive, names no cluster
-// file where files are refused, and asks for no more primaries than allowed.
-void check_base(const Json& base, const std::vector<StudyAxis>& axes, const StudyLimits& limits,
-                std::vector<SchemaViolation>& violations) {
-  for (const auto& axis : axes) {
-    if (has_field(base, axis.pointer))
-      violations.push_back({"/base" + axis.pointer, "is set by axis \"" + axis.name + "\": leave it out of the base"});
-    if (const std::string growth = array_growth(base, axis.pointer); !growth.empty())
-      violations.push_back({pointer_child("/axes", axis.name), growth});
-  }
-  for (const char* seed : {"/cluster/generator/seed", "/impact/orientation_seed"})
-    if (!axis_setting(axes, seed) && has_field(base, seed))
-      violations.push_back({"/base" + std::string(seed), "is derived for each replicate from /replicates/seed: leave it out of the "
-                                            "base (or sweep it as an axis to choose it)"});
+// A case field the study sweeps, by an axis or by the search, and where the study names it.
+struct SweptField {
+  std::string pointer;
+  std::string where;  // "/axes/NAME" or "/search/axis"
+  std::string label;  // "axis \"NAME\"" or "the search"
+};
 
-  if (!limits.allow_cluster_files) {
-    const std::string refused = "cluster files are not accepted here (the service reads no file a client names): use "
-                                "/cluster/generator";
-    if (has_field(base, kClusterFile)) violations.push_back({"/base" + std::string(kClusterFile), refused});
-    for (const auto& axis : axes)
-      if (covers(axis.pointer, kClusterFile) || covers(kClusterFile, axis.pointer))
-        violations.push_back({pointer_child("/axes", axis.name), refused});
-  }
+std::vector<SweptField> swept_fields(const std::vector<StudyAxis>& axes,
+                                     const std::optional<BoundarySearchSpec>& search) {
+  std::vector<SweptField> fields;
+  for (const auto& axis : axes)
+    fields.push_back({axis.pointer, pointer_child("/axes", axis.name), "axis \"" + axis.name + "\""});
+  if (search && !search->pointer.empty())
+    fields.push_back({search->pointer, "/search/axis", "the search (/search/axis)"});
+  return fields;
+}
 
+bool sets_field(const std::vector<SweptField>& fields, const std::string& pointer) {
+  return std::any_of(fields.begin(), fields.end(), [&](const SweptField& f) { return covers(f.pointer, pointer); });
+}
+
+// The primaries a study may ask for at most: an axis's values, the search's range, or the base's.
+void check_primaries(const Json& base, const std::vector<StudyAxis>& axes,
+                     const std::optional<BoundarySearchSpec>& search, const StudyLimits& limits,
+                     std::vector<SchemaViolation>& violations) {
   auto too_many = [&](const Json& primaries) {
     return primaries.is_number() && primaries.get<double>() > static_cast<double>(limits.max_primaries);
   };
@@ -76,10 +78,44 @@ void check_base(const Json& base, const std::vector<StudyAxis>& axes, const Stud
         violations.push_back({pointer_child("/axes", axis->name), "asks for " + primaries.dump() + " primaries" + limit_text});
         break;
       }
+  } else if (search && search->pointer == kPrimaries) {
+    if (too_many(search->to))
+      violations.push_back({"/search/range/to", "asks for " + Json(search->to).dump() + " primaries" + limit_text});
   } else if (has_field(base, kPrimaries) && too_many(base[Json::json_pointer(kPrimaries)])) {
     violations.push_back({"/base" + std::string(kPrimaries),
                           "asks for " + base[Json::json_pointer(kPrimaries)].dump() + " primaries" + limit_text});
   }
+}
+
+// The rules on the base: it sets no swept field (an axis's or the search's) and no seed the
+// replicates derive, no swept field would create or grow an array (array_growth), it names
+// no cluster file where files are refused, and asks for no more primaries than allowed.
+void check_base(const Json& base, const std::vector<StudyAxis>& axes, const std::optional<BoundarySearchSpec>& search,
+                const StudyLimits& limits, std::vector<SchemaViolation>& violations) {
+  const std::vector<SweptField> swept = swept_fields(axes, search);
+  for (const auto& field : swept) {
+    if (const std::string problem = array_growth(base, field.pointer); !problem.empty()) {
+      violations.push_back({field.where, problem});
+      continue;
+    }
+    if (has_field(base, field.pointer))
+      violations.push_back({"/base" + field.pointer, "is set by " + field.label + ": leave it out of the base"});
+  }
+  for (const char* seed : {"/cluster/generator/seed", "/impact/orientation_seed"})
+    if (!sets_field(swept, seed) && has_field(base, seed))
+      violations.push_back({"/base" + std::string(seed),
+                            "is derived for each replicate from /replicates/seed: leave it out of the base (or sweep "
+                            "it as an axis to choose it)"});
+
+  if (!limits.allow_cluster_files) {
+    const std::string refused = "cluster files are not accepted here (the service reads no file a client names): use "
+                                "/cluster/generator";
+    if (has_field(base, kClusterFile)) violations.push_back({"/base" + std::string(kClusterFile), refused});
+    for (const auto& field : swept)
+      if (covers(field.pointer, kClusterFile) || covers(kClusterFile, field.pointer))
+        violations.push_back({field.where, refused});
+  }
+  check_primaries(base, axes, search, limits, violations);
 }
 
 // "16 x 3 x 2 replicates = 96", or "16 x 3 x a budget of 200 = 9600".
@@ -142,13 +178,39 @@ std::size_t Study::case_limit() const {
   return search ? saturating_product(group_count(), static_cast<std::size_t>(search->budget)) : case_count();
 }
 
+namespace {
+
+// The schema's violations and those of the axis names.
+std::vector<SchemaViolation> schema_violations(Json& document) {
+  std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
+  if (document.is_object() && document.contains("axes") && document["axes"].is_object())
+    check_axis_names(document["axes"], violations, document.contains("search"));
+  return violations;
+}
+
+// Whether the study can be expanded without the field a violation names: a name, the replicates or
+// the execution limits say nothing about the cases' physics, the base, the axes and the search do.
+bool outside_the_cases(const SchemaViolation& violation) {
+  for (const char* part : {"/base", "/axes", "/search"})
+    if (covers(part, violation.pointer)) return false;
+  return !violation.pointer.empty();
+}
+
+}  // namespace
+
 Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
                   const std::filesystem::path& base_directory) {
-  std::vector<SchemaViolation> violations = study_schema().validate_and_complete(document);
-  const bool searching = document.is_object() && document.contains("search");
-  if (document.is_object() && document.contains("axes") && document["axes"].is_object())
-    check_axis_names(document["axes"], violations, searching);
-  if (!violations.empty()) throw StudyError(std::move(violations));
+  std::vector<SchemaViolation> violations = schema_violations(document);
+  if (!violations.empty()) {
+    // A wrong name or replicate count hides nothing else: the cases are checked as if it were left
+    // out, so that one answer lists every problem of the document.
+    const bool cases_checkable = std::all_of(violations.begin(), violations.end(), outside_the_cases);
+    auto rest = cases_checkable ? without_violating_members(study_schema(), document, violations) : std::nullopt;
+    if (!rest || !schema_violations(*rest).empty()) throw StudyError(std::move(violations));
+    document = std::move(*rest);
+  }
+  const std::size_t schema_problems = violations.size();
+  const bool searching = document.contains("search");
 
   if (!base_directory.empty()) make_cluster_paths_absolute(document, base_directory);
   Study study;
@@ -160,17 +222,18 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
   study.case_wall_time = document["execution"]["case_wall_time"].get<double>();
   study.axes = read_axes(document["axes"], violations);
   if (searching) read_search(study, document["search"], violations);
-  check_base(document["base"], study.axes, limits, violations);
+  check_base(document["base"], study.axes, study.search, limits, violations);
   // Counted before anything is expanded: a study of 10^20 cases is refused in microseconds.
   if (study.case_limit() > limits.max_cases)
     violations.push_back({"/axes", "expands to " + count_text(study) + " cases (axis sizes x " +
                                        (searching ? "the search's budget" : "replicates") + "); the limit here is " +
                                        std::to_string(limits.max_cases) + " cases"});
-  if (!violations.empty()) throw StudyError(std::move(violations));
+  if (violations.size() > schema_problems) throw StudyError(std::move(violations));
 
   study.document = std::move(document);
   StudyExpansion expansion = expand_with_violations(study);
-  if (!expansion.violations.empty()) throw StudyError(std::move(expansion.violations));
+  violations.insert(violations.end(), expansion.violations.begin(), expansion.violations.end());
+  if (!violations.empty()) throw StudyError(std::move(violations));
   study.cases = std::move(expansion.cases);
 
   // The name is part of what was submitted; only the reference to the schema file is not.
@@ -181,13 +244,11 @@ Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits,
 }
 
 Study load_study(const std::filesystem::path& path, const StudyLimits& limits) {
-  std::ifstream in(path);
-  if (!in) throw StudyError({{"", "cannot open study file " + path.string()}});
   Json document;
   try {
-    document = Json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw StudyError({{"", path.string() + " is not valid JSON: " + e.what()}});
+    document = read_json_file(path, "study file");
+  } catch (const InputFileError& e) {
+    throw StudyError({{"", std::string(e.what())}});
   }
   return parse_study(std::move(document), limits, std::filesystem::absolute(path).parent_path());
 }

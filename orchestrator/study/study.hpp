@@ -83,8 +83,9 @@ const JsonSchema& study_schema();
 // Throws StudyError.
 Study parse_study(nlohmann::ordered_json document, const StudyLimits& limits = {},
                   const std::filesystem::path& base_directory = {});
-// Reads and parses a study file (cluster files relative to its directory); a file that cannot be
-// read or is not JSON throws StudyError naming why.
+// Reads and parses a study file (cluster files relative to its directory), bounded as a request
+// body (engine/io/json_text.hpp); a file that cannot be read that way or is not JSON throws
+// StudyError naming the file and the problem.
 Study load_study(const std::filesystem::path& path, const StudyLimits& limits = {});
 
 // The content hash of a completed case document: sha256 over its physics, i.e. the canonical form

@@ -190,6 +190,23 @@ std::string axis_pointer(const std::string& name) {
   return name;
 }
 
+std::string axis_name_problem(const std::string& name) {
+  if (name.size() > kMaxPointerLength)
+    return "is " + std::to_string(name.size()) + " characters long; a case field is named in at most " +
+           std::to_string(kMaxPointerLength);
+  const std::string pointer = axis_pointer(name);
+  if (pointer.empty())
+    return name.empty() || name.front() != '/'
+               ? "is neither an axis alias (" + alias_names() +
+                     ") nor a JSON pointer into the case (starting with \"/\")"
+               : "is not a valid JSON pointer (RFC 6901: \"~\" must be written \"~0\" or \"~1\")";
+  const std::size_t tokens = static_cast<std::size_t>(std::count(pointer.begin(), pointer.end(), '/'));
+  if (tokens > kMaxPointerTokens)
+    return "has " + std::to_string(tokens) + " reference tokens; a case field is at most " +
+           std::to_string(kMaxPointerTokens) + " deep";
+  return {};
+}
+
 bool covers(const std::string& outer, const std::string& inner) {
   return inner == outer || inner.rfind(outer + "/", 0) == 0;
 }
@@ -205,14 +222,11 @@ void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViol
   std::vector<std::pair<std::string, std::string>> named;  // (axis name, pointer)
   for (const auto& [name, unused] : axes.items()) {
     const std::string where = pointer_child("/axes", name);
-    const std::string pointer = axis_pointer(name);
-    if (pointer.empty()) {
-      violations.push_back({where, name.empty() || name.front() != '/'
-                                       ? "is neither an axis alias (" + alias_names() +
-                                             ") nor a JSON pointer into the case (starting with \"/\")"
-                                       : "is not a valid JSON pointer (RFC 6901: \"~\" must be written \"~0\" or \"~1\")"});
+    if (const std::string problem = axis_name_problem(name); !problem.empty()) {
+      violations.push_back({where, problem});
       continue;
     }
+    const std::string pointer = axis_pointer(name);
     if (pointer == "/name" || pointer == "/description" || pointer == "/$schema") {
       violations.push_back({where, "is a label, not physics: the study names each case itself"});
       continue;

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -15,6 +16,17 @@ namespace aerobreak {
 // JSON pointer; empty otherwise.
 std::string axis_pointer(const std::string& name);
 
+// The bounds on a JSON pointer a client sends to name a case field (an axis, the search axis):
+// at most kMaxPointerLength characters, checked before it is parsed (unescaping "~0" is quadratic
+// in the length), and at most kMaxPointerTokens reference tokens (a case is 4 levels deep,
+// /model/damping/restitution, and every token past the base's fields creates an object level).
+constexpr std::size_t kMaxPointerLength = 256;
+constexpr std::size_t kMaxPointerTokens = 8;
+
+// Why `name` names no case field (empty when it names one): neither an alias nor a valid JSON
+// pointer into the case, or a pointer past the bounds above. The one check of every axis name.
+std::string axis_name_problem(const std::string& name);
+
 // Whether setting the case field `outer` also sets `inner` (the same field, or one inside it).
 bool covers(const std::string& outer, const std::string& inner);
 
@@ -27,7 +39,8 @@ void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViol
 
 // Why setting `pointer` in `base` would create or grow an array (empty when it would not):
 // nlohmann turns a missing "/x/5000000" into an array of 5,000,001 nulls. A case has no arrays
-// (schemas/case.schema.json), so an axis may index only an element the base already has.
+// (schemas/case.schema.json), so a swept field (an axis's, the search's) may index only an
+// element the base already has.
 std::string array_growth(const nlohmann::ordered_json& base, const std::string& pointer);
 
 // The axes of a schema-valid "axes" object whose names passed check_axis_names, in key order.

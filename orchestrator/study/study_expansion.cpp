@@ -32,12 +32,14 @@ class CaseViolations {
       ++entries_[at->second].others;
   }
 
-  std::vector<SchemaViolation> list() const {
+  // `cases`: how many were checked, so that a violation of all of them says so.
+  std::vector<SchemaViolation> list(std::size_t cases = 0) const {
     std::vector<SchemaViolation> out;
     for (std::size_t k = 0; k < entries_.size() && k < kMaxListed; ++k) {
       const Entry& e = entries_[k];
       std::string context = "in " + e.where;
       if (e.others > 0) context += " and " + std::to_string(e.others) + " other case" + (e.others > 1 ? "s" : "");
+      if (cases > 1 && e.others + 1 == cases) context = "in every case";
       out.push_back({e.pointer, e.message + " (" + context + ")"});
     }
     if (entries_.size() > kMaxListed)
@@ -231,8 +233,10 @@ StudyExpansion expand_with_violations(const Study& study) {
   std::map<std::string, std::string> first_with_hash;
 
   out.cases.reserve(study.case_count());
+  std::size_t checked = 0;
   for (std::size_t point = 0; point < study.group_count(); ++point) {
     for (const auto& [grid_point, replicate] : group_cases(study, group_point(study, point))) {
+      ++checked;
       auto c = expand_case(study, grid_point, replicate, violations, digests);
       if (!c) continue;
       const std::string where = "case " + grid_label(grid_point) + ", replicate " + std::to_string(replicate);
@@ -245,7 +249,7 @@ StudyExpansion expand_with_violations(const Study& study) {
       out.cases.push_back(std::move(*c));
     }
   }
-  out.violations = violations.list();
+  out.violations = violations.list(checked);
   return out;
 }
 

@@ -29,8 +29,8 @@ std::vector<SearchTarget> read_targets(const Json& targets) {
 
 void check_spec(const BoundarySearchSpec& spec, const std::vector<std::string>& axis_pointers,
                 std::vector<SchemaViolation>& violations) {
-  if (spec.pointer.empty())
-    violations.push_back({"/search/axis", "is neither an axis alias nor a JSON pointer into the case"});
+  if (const std::string problem = axis_name_problem(spec.axis); !problem.empty())
+    violations.push_back({"/search/axis", problem});
   for (const auto& pointer : axis_pointers)
     if (!spec.pointer.empty() && (covers(pointer, spec.pointer) || covers(spec.pointer, pointer)))
       violations.push_back({"/search/axis", "sets a case field that an axis of /axes sets too (" + pointer + ")"});
@@ -54,7 +54,7 @@ BoundarySearchSpec read_search_spec(const Json& search, const std::vector<std::s
                                     std::vector<SchemaViolation>& violations) {
   BoundarySearchSpec spec;
   spec.axis = search["axis"].get<std::string>();
-  spec.pointer = axis_pointer(spec.axis);
+  if (axis_name_problem(spec.axis).empty()) spec.pointer = axis_pointer(spec.axis);
   spec.from = search["range"]["from"].get<double>();
   spec.to = search["range"]["to"].get<double>();
   spec.logarithmic = search.value("scale", std::string("log")) == "log";

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "orchestrator/fitting/correlation_set.hpp"
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/app/study_fits.hpp"
 #include "tests/fitting/synthetic_study.hpp"
 
 namespace aerobreak {
@@ -136,7 +136,7 @@ int bench_store(const CaseOutcomeTable& table, const std::filesystem::path& file
   write_results(file, table);
   Store store(file);
   const StudyRecord study = *store.study(1);
-  CorrelationCache cache(store);
+  StudyFits cache(store);
   const CorrelationRequest ask = correlation_request(study, std::nullopt);
   auto start = std::chrono::steady_clock::now();
   const auto first = cache.current(study, ask);

@@ -3,7 +3,8 @@
 # Fills a store with one study of 100,000 finished cases (100 grid points x 1,000 replicates, results
 # of about 1 KB each), written by direct SQL in one transaction, then serves it with
 # `aerobreak serve` and measures each read endpoint with wrk on loopback (2 threads, 16
-# connections): requests per second and the 99th percentile latency.
+# connections): requests per second and the 99th percentile latency; for the lookup tables also
+# the time of the first request (which builds the table) and the bytes sent, plain and gzip.
 # Usage: tests/bench/read_endpoints_bench.sh [BUILD_DIR]   (installs wrk and sqlite3 if missing)
 #   CASES=N (default 100000), GRID_POINTS=N (100), DURATION=seconds per endpoint (10), ROUNDS=N (1),
 #   KEEP=1 keeps the filled store (its path is printed)
@@ -73,4 +74,20 @@ for round in $(seq "$rounds"); do
   if [ -n "$etag" ]; then
     wrk_figures "/api/studies/1/outcomes (If-None-Match)" "$url/api/studies/1/outcomes" -H "If-None-Match: $etag"
   fi
+done
+
+# The lookup tables (docs/EXPORT.md): the first request builds the table, later ones are served as
+# kept (the service keeps a table per result-set version and request), gzip to a client that asks.
+tables=("/api/studies/1/tables?format=csv" "/api/studies/1/tables?format=json" "/api/studies/1/tables?kind=sections&format=csv")
+echo "== lookup tables: first request (builds the table) and bytes sent, plain and gzip"
+for path in "${tables[@]}"; do
+  first=$(curl -s -o /dev/null -w '%{time_total}' "$url$path")
+  plain=$(curl -s -o /dev/null -w '%{size_download}' "$url$path")
+  packed=$(curl -s -o /dev/null -w '%{size_download}' -H 'Accept-Encoding: gzip' "$url$path")
+  printf "%-44s first %6.3f s   %9s bytes   gzip %9s bytes\n" "$path" "$first" "$plain" "$packed"
+done
+echo "== lookup tables under wrk (2 threads, 16 connections, ${DURATION:-10} s each)"
+for path in "${tables[@]}"; do
+  wrk_figures "$path" "$url$path"
+  wrk_figures "$path (gzip)" "$url$path" -H "Accept-Encoding: gzip"
 done

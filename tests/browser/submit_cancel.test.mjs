@@ -77,10 +77,13 @@ test('the form: the default study offered, fields checked as typed, the JSON vie
     await page.locator('#form-poisson_ratio').pressSequentially('0.25');
     assert.equal(await message(page, 'poisson_ratio'), '');
     assert.equal((await jsonView(page)).base.material.poisson_ratio, 0.25);
-    // Allowed but unlikely: said, not refused.
-    await page.fill('#form-diameter', '20');
+    // Allowed but unlikely: said, not refused; outside the schema's range (a diameter in nm typed as m): refused.
+    await page.fill('#form-diameter', '1e-4');
     assert.match(await message(page, 'diameter'), /unusual/);
     assert.equal(await page.getAttribute('#form-diameter', 'aria-invalid'), 'false');
+    await page.fill('#form-diameter', '20');
+    assert.match(await message(page, 'diameter'), /must be at most 0.001/);
+    assert.equal(await page.getAttribute('#form-diameter', 'aria-invalid'), 'true');
     await page.fill('#form-diameter', '2e-8');
     await page.fill('#form-speeds', '5, fast');
     assert.match(await message(page, 'speeds'), /“fast” is not a number/);

@@ -62,7 +62,9 @@ inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, 
             {"damage_ratio", 1.0 - retained},
             {"largest_fragment_share", 1.0},
             {"fragment_count", fragments.size()},
-            {"restitution", {{"normal", 0.1}}}}},
+            // the largest fragment's restitution: of a bounce, and of a stick or break-up (negative on
+            // the wall), which the tables must not average in
+            {"restitution", {{"normal", outcome_of(fragments, size) == "bounce" ? 0.2 : -0.3}}}}},
           {"validity", {{"small_strain", true}}},
           {"fragments", {{"list", list}}}};
 }
@@ -146,6 +148,9 @@ inline std::vector<Fragment> wall_fragments_of(bool adhesive, int size, std::siz
 
 inline std::int64_t fill_wall_study(Store& store) {
   auto study = named_study("walls", 'w');
+  study.document["axes"] = {{"impact_speed", {{"values", kSpeeds}}},
+                            {"primaries", {{"values", kSizes}}},
+                            {"/wall/adhesive", {{"values", {true, false}}}}};
   for (const double speed : kSpeeds)
     for (const int size : kSizes)
       for (const bool adhesive : {true, false})

@@ -48,6 +48,7 @@ TEST_CASE("The fit table's 95 % band at a size not run covers the true P in 93.6
   CorrelationRequest request;
   request.speed_axis = "impact_speed";
   request.size_axis = "primaries";
+  request.covariates = {{"primaries", true}};
   ExportRequest ask;
   ask.kind = TableKind::fit;
   ask.sizes = {64};
@@ -59,7 +60,6 @@ TEST_CASE("The fit table's 95 % band at a size not run covers the true P in 93.6
     CorrelationSet set;
     set.request = request;
     set.logistic = fit_logistic_models(table, group_cases(table, request.speed_axis), request);
-    set.size_pooled = fit_size_pooled_models(table, request);
     const LookupTable fits = fit_table(set, ask, 1.0);
     REQUIRE(fits.rows() == ask.speeds.size());
     for (std::size_t row = 0; row < fits.rows(); ++row) {

@@ -6,11 +6,13 @@
 
 #include <cmath>
 
+#include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/fitting/case_groups.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/logistic_models.hpp"
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/fitting/proportion.hpp"
+#include "orchestrator/app/study_fits.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/fitting/synthetic_study.hpp"
 #include "tests/support/run_command.hpp"
@@ -25,7 +27,7 @@ struct PooledFixture {
   ScratchDirectory directory{"fit_table"};
   Store store{directory.path() / "store.sqlite"};
   std::int64_t study = fill_pooled_study(store);
-  CorrelationSet fits = study_correlations(store, *store.study(study), export_correlation_request(*store.study(study)));
+  CorrelationSet fits = study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
 
   LookupTable table(ExportRequest request) {
     request.kind = TableKind::fit;
@@ -64,6 +66,7 @@ Band band_by_hand(const FitCommon& fit, double speed, double size) {
 
 void check_row(const LookupTable& table, std::size_t row, const char* outcome, const Band& expected) {
   const std::string name = std::string("p_") + outcome;
+  CHECK(at(table, (name + "_status").c_str(), row) == 0.0);  // fitted by maximum likelihood
   CHECK(at(table, name.c_str(), row) == Approx(expected.p).epsilon(1e-9));
   CHECK(at(table, (name + "_lo").c_str(), row) == Approx(expected.lower).epsilon(1e-9));
   CHECK(at(table, (name + "_hi").c_str(), row) == Approx(expected.upper).epsilon(1e-9));
@@ -73,8 +76,8 @@ void check_row(const LookupTable& table, std::size_t row, const char* outcome, c
 
 TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computation from the pooled fit", "[export][fit]") {
   PooledFixture fixture;
-  const auto& stick = fit_named(fixture.fits.size_pooled, "stick.speed.sizes.g1").common;
-  const auto& break_up = fit_named(fixture.fits.size_pooled, "break-up.speed.sizes.g1").common;
+  const auto& stick = fit_named(fixture.fits.logistic, "stick.speed.pooled.c1").common;
+  const auto& break_up = fit_named(fixture.fits.logistic, "break-up.speed.pooled.c1").common;
   REQUIRE(stick.status == FitStatus::ok);
   REQUIRE(break_up.status == FitStatus::ok);
   ExportRequest request;
@@ -91,6 +94,7 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     CHECK(at(table, "d_ve", row) == Approx(std::cbrt(size)).epsilon(1e-12));
     if (size == 32) {  // run: the size's own fit (group g1 is N = 32)
       CHECK(at(table, "model", row) == 0.0);
+      check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.g1").common, speed, size));
       check_row(table, row, "stick", band_by_hand(fit_named(fixture.fits.logistic, "stick.speed.g1").common, speed, size));
       check_row(table, row, "break_up", band_by_hand(fit_named(fixture.fits.logistic, "break-up.speed.g1").common, speed, size));
       CHECK(at(table, "inside_validity", row) == 1.0);
@@ -98,6 +102,7 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     }
     CHECK(at(table, "model", row) == 1.0);
     check_row(table, row, "stick", band_by_hand(stick, speed, size));
+    check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.pooled.c1").common, speed, size));
     check_row(table, row, "break_up", band_by_hand(break_up, speed, size));
     // Between the sizes run (32 and 128): interpolation in ln N, inside the box; 16 and 512 outside.
     CHECK(at(table, "inside_validity", row) == (size == 64 ? 1.0 : 0.0));
@@ -112,15 +117,14 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
 //   (Intercept) 6.231419790302835 SE 1.144144841333684; rep(x, 2) 1.974162739163768 SE 0.210954716603717;
 //   log(N) -0.350161297993368 SE 0.226739531429917
 // That test checks the pooled model against these numbers; this one checks that the exported rows
-// are that model, fitted from the store: the same fit as the correlations' break-up.speed.pooled
-// (the study has no axis besides speed and N) and, at N = 64, P = logistic(R's linear predictor).
+// are that model, fitted from the store: the correlations' break-up.speed.pooled.c1 (the study has
+// no axis besides speed and N: one condition) and, at N = 64, P = logistic(R's linear predictor).
 TEST_CASE("Fit table at sizes not run: the rows are the pooled model R's glm reproduces", "[export][fit][reference]") {
   PooledFixture fixture;
-  const auto& exported = fit_named(fixture.fits.size_pooled, "break-up.speed.sizes.g1").common;
-  const auto& correlations = fit_named(fixture.fits.logistic, "break-up.speed.pooled").common;
+  const auto& exported = fit_named(fixture.fits.logistic, "break-up.speed.pooled.c1").common;
   REQUIRE(exported.coefficients.size() == 3);
-  CHECK(exported.coefficients == correlations.coefficients);
-  CHECK(exported.covariance == correlations.covariance);
+  const double r_estimate[] = {6.231419790302835, 1.974162739163768, -0.350161297993368};
+  for (Eigen::Index j = 0; j < 3; ++j) CHECK(exported.coefficients[j] == Approx(r_estimate[j]).epsilon(1e-6));
   const double r_se[] = {1.144144841333684, 0.210954716603717, 0.226739531429917};
   for (Eigen::Index j = 0; j < 3; ++j) CHECK(std::sqrt(exported.covariance(j, j)) == Approx(r_se[j]).epsilon(1e-6));
   ExportRequest request;
@@ -159,14 +163,13 @@ CaseOutcomeTable two_walls() {
 
 }  // namespace
 
-TEST_CASE("Fit table at sizes not run: one pooled fit per group of the other axes (a boolean wall axis)", "[export][fit]") {
+TEST_CASE("Fit table at sizes not run: one pooled fit per condition of the other axes (a boolean wall axis)", "[export][fit]") {
   const CaseOutcomeTable outcomes = two_walls();
   CorrelationSet set;
   set.request.speed_axis = "impact_speed";
   set.request.size_axis = "primaries";
+  set.request.covariates = {{"primaries", true}};
   set.logistic = fit_logistic_models(outcomes, group_cases(outcomes, "impact_speed"), set.request);
-  set.size_pooled = fit_size_pooled_models(outcomes, set.request);
-  REQUIRE(set.size_pooled.size() == 6);  // stick, bounce, break-up x two walls
   ExportRequest request;
   request.kind = TableKind::fit;
   request.sizes = {48};  // not 64: between 32 and 128 in ln N the swapped counts give the same P there
@@ -175,11 +178,52 @@ TEST_CASE("Fit table at sizes not run: one pooled fit per group of the other axe
   REQUIRE(table.rows() == 2);
   CHECK(table.find("wall_adhesive")->values == std::vector<double>{1.0, 0.0});
   for (std::size_t row = 0; row < 2; ++row) {
-    const auto& pooled = fit_named(set.size_pooled, row == 0 ? "break-up.speed.sizes.g1" : "break-up.speed.sizes.g2");
+    const auto& pooled = fit_named(set.logistic, row == 0 ? "break-up.speed.pooled.c1" : "break-up.speed.pooled.c2");
     CHECK(pooled.common.group == nlohmann::ordered_json{{"/wall/adhesive", row == 0}});
     CHECK(at(table, "p_break_up", row) == Approx(band_by_hand(pooled.common, 0.05, 48).p).epsilon(1e-9));
   }
   CHECK(at(table, "p_break_up", 0) != Approx(at(table, "p_break_up", 1)).epsilon(1e-3));
+}
+
+// The two-wall study of export_study.hpp: nothing sticks on the wall without adhesion (12 determined
+// results per size there), so its stick fits have no transition.
+TEST_CASE("Fit table: every outcome with its band and status: no transition gives the observed 0 with its Wilson band",
+          "[export][fit]") {
+  ScratchDirectory directory("fit_table_walls");
+  Store store(directory.path() / "store.sqlite");
+  const auto study = fill_wall_study(store);
+  const auto fits = study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
+  ExportRequest request;
+  request.kind = TableKind::fit;
+  request.speeds = {0.01, 0.02, 0.05};
+  const auto table = study_lookup_table(store, study, request, &fits);
+  REQUIRE(table.rows() == 12);  // 2 sizes x 2 walls x 3 speeds
+  const auto no_stick = *wilson_interval(0, 12);
+  std::size_t without_adhesion = 0;
+  for (std::size_t row = 0; row < table.rows(); ++row)
+    for (const std::string outcome : {"p_stick", "p_bounce", "p_break_up"}) {
+      INFO("row " << row << " " << outcome);
+      const double status = at(table, (outcome + "_status").c_str(), row);
+      const double p = at(table, outcome.c_str(), row), lo = at(table, (outcome + "_lo").c_str(), row),
+                   hi = at(table, (outcome + "_hi").c_str(), row);
+      REQUIRE((status == 0.0 || status == 1.0 || status == 2.0 || status == 3.0));
+      if (status == 3.0) {
+        CHECK(std::isnan(p));
+        continue;
+      }
+      CHECK(lo <= p);
+      CHECK(p <= hi);
+      if (status == 2.0) CHECK((p == 0.0 || p == 1.0));
+      if (outcome == "p_stick" && at(table, "wall_adhesive", row) == 0.0) {
+        ++without_adhesion;
+        CHECK(status == 2.0);
+        CHECK(p == 0.0);
+        CHECK(lo == 0.0);
+        CHECK(hi == Approx(no_stick.upper).epsilon(1e-12));
+      }
+    }
+  CHECK(without_adhesion == 6);
+  CHECK(table.metadata.at("fit_models").at("status").get<std::string>().find("2 = no transition") != std::string::npos);
 }
 
 TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and the range (aerobreak export)", "[export][fit]") {
@@ -203,8 +247,7 @@ TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and
 TEST_CASE("Fit table: a size not run is refused with the reason when no pooled fit can be made", "[export][fit]") {
   PooledFixture fixture;
   CorrelationSet without = fixture.fits;
-  without.size_pooled.clear();
-  without.request.size_axis.clear();  // as for a study that ran one size only
+  std::erase_if(without.logistic, [](const LogisticFit& fit) { return !fit.covariates.empty(); });  // as for a study of one size
   ExportRequest request;
   request.kind = TableKind::fit;
   request.sizes = {64};
@@ -217,7 +260,8 @@ TEST_CASE("Fit table: a size not run is refused with the reason when no pooled f
     CHECK(std::string(error.what()).find("does not sweep the cluster size") != std::string::npos);
   }
   without = fixture.fits;
-  for (auto& fit : without.size_pooled) fit.common.status = FitStatus::separation;
+  for (auto& fit : without.logistic)
+    if (!fit.covariates.empty()) fit.common.status = FitStatus::separation;
   try {
     study_lookup_table(fixture.store, fixture.study, request, &without);
     FAIL("a size whose pooled fits are separated was not refused");
@@ -225,6 +269,57 @@ TEST_CASE("Fit table: a size not run is refused with the reason when no pooled f
     CHECK(error.field == "sizes");
     CHECK(std::string(error.what()).find("separation") != std::string::npos);
   }
+}
+
+}  // namespace aerobreak::testing
+
+namespace aerobreak::testing {
+
+// The equivalent diameters of docs/EXPORT.md section 2 at limits with known answers: a sphere (N = 1)
+// much smaller than the mean free path settles like a unit-density sphere of rho_p/rho_0 times its
+// diameter (Cc proportional to 1/d), a much larger one like sqrt(rho_p/rho_0) times (Cc -> 1); each
+// diameter turned back into N gives N.
+TEST_CASE("Equivalent diameters: the aerodynamic limits of a sphere, and N back from every diameter", "[export][fit][diameters]") {
+  const double density = 1725.0;
+  CHECK(aerodynamic_diameter(1.0, 1e-9, density) == Approx(1e-9 * density / kUnitDensity).epsilon(2e-3));
+  CHECK(aerodynamic_diameter(1.0, 1e-4, density) == Approx(1e-4 * std::sqrt(density / kUnitDensity)).epsilon(2e-3));
+  for (const double n : {1.0, 32.0, 4675.0, 1e6}) {
+    INFO("N = " << n);
+    CHECK(primaries_of_diameter(DiameterType::volume, volume_equivalent_diameter(n)) == Approx(n).epsilon(1e-12));
+    CHECK(primaries_of_diameter(DiameterType::mobility, mobility_equivalent_diameter(n)) == Approx(n).epsilon(1e-12));
+    CHECK(primaries_of_diameter(DiameterType::aerodynamic, aerodynamic_diameter(n, 2e-8, density), 2e-8, density) ==
+          Approx(n).epsilon(1e-9));
+  }
+  // A fractal aggregate settles slower than its volume-equivalent sphere: d_ae below rho-scaled d_ve.
+  CHECK(aerodynamic_diameter(4675.0, 2e-8, density) < 2e-8 * std::cbrt(4675.0) * std::sqrt(density / kUnitDensity));
+}
+
+TEST_CASE("Fit table at diameters: each diameter's N, its rows those of that size, aerodynamic only with SI", "[export][fit][diameters]") {
+  PooledFixture fixture;
+  ExportRequest by_diameter;
+  by_diameter.speeds = {0.02, 0.1};
+  by_diameter.diameters = {5.0, 20.0};  // mobility diameters in d (reduced study): N = 5^2.16 and 20^2.16
+  ExportRequest by_size = by_diameter;
+  by_size.diameters.clear();
+  by_size.sizes = {std::pow(5.0, 2.16), std::pow(20.0, 2.16)};
+  const auto diameters = fixture.table(by_diameter), sizes = fixture.table(by_size);
+  REQUIRE(diameters.rows() == 4);
+  for (const char* column : {"primaries", "p_break_up", "p_break_up_lo", "p_break_up_hi", "inside_validity", "model"})
+    for (std::size_t row = 0; row < 4; ++row) CHECK(at(diameters, column, row) == Approx(at(sizes, column, row)).epsilon(1e-12));
+  CHECK(at(diameters, "d_mob", 0) == Approx(5.0).epsilon(1e-12));
+  CHECK(at(diameters, "inside_validity", 0) == 1.0);  // 5^2.16 = 32.3 lies between the sizes run, 32 and 128
+  CHECK(at(diameters, "inside_validity", 2) == 0.0);  // 20^2.16 = 646 beyond them: extrapolated, flagged
+  by_diameter.diameter_type = DiameterType::aerodynamic;
+  CHECK_THROWS_WITH(fixture.table(by_diameter), Catch::Contains("an aerodynamic diameter needs"));
+  // With a material (SI): diameters in m; the rows carry all three diameters.
+  by_diameter.material = ExportMaterial{{1e10, 0.3, 1725.0, 0.001 * 1e10 * 2e-8 / 2.73}, 2e-8};
+  by_diameter.diameters = {2e-7};
+  const auto si = fixture.table(by_diameter);
+  REQUIRE(si.rows() == 2);
+  CHECK(at(si, "d_ae_m", 0) == Approx(2e-7).epsilon(1e-9));
+  const double n = at(si, "primaries", 0);
+  CHECK(at(si, "d_mob_m", 0) == Approx(2e-8 * mobility_equivalent_diameter(n)).epsilon(1e-12));
+  CHECK(at(si, "d_ve_m", 0) == Approx(2e-8 * std::cbrt(n)).epsilon(1e-12));
 }
 
 }  // namespace aerobreak::testing

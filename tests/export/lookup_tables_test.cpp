@@ -91,7 +91,14 @@ TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments fro
   CHECK(at(table, "p_bounce", fast) == 0.25);
   CHECK(at(table, "reentrained_m2", fast) == Approx((3 * (4 + 1 + 1) + 31 * 31) / 4.0));
   CHECK(at(table, "reentrained_m3", fast) == Approx((3 * (8 + 1 + 1) + 31.0 * 31 * 31) / 4.0));
-  CHECK(std::isnan(at(table, "fractal_dimension", fast)));
+  // Restitution over the bounces only, with their count (the one bounce: 0.2; the break-ups' -0.3
+  // left out); missing where nothing bounced.
+  CHECK(at(table, "restitution", fast) == Approx(0.2).epsilon(1e-12));
+  CHECK(at(table, "restitution_bounces", fast) == 1.0);
+  CHECK(std::isnan(at(table, "restitution_sd", fast)));
+  CHECK(std::isnan(at(table, "restitution", row)));
+  CHECK(at(table, "restitution_bounces", row) == 0.0);
+  CHECK_FALSE(table.find("fractal_dimension"));  // the ballistic generator has no target D_f: no column
 }
 
 TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {
@@ -198,7 +205,7 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
       {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", false}, {"/model/friction", 0.3}, {"/odd", true}}};
   std::vector<const nlohmann::ordered_json*> pointers;
   for (const auto& point : points) pointers.push_back(&point);
-  const auto axes = axis_columns(pointers, {"primaries"});
+  const auto axes = axis_columns(pointers, {"primaries"}, false);
   REQUIRE(axes.size() == 4);
   const auto values = [&](std::size_t axis) {
     std::vector<double> column;
@@ -211,7 +218,15 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
   CHECK(values(1) == std::vector<double>{1, 0, 0});
   CHECK(axes[2].name == "model_friction");
   CHECK(values(2) == std::vector<double>{0.3, 0.5, 0.3});
-  CHECK(axes[2].unit() == "as in the case");
+  CHECK(axes[2].unit() == "1");  // a friction coefficient
+  CHECK(axes[1].unit() == "1");  // a boolean
+  // Every quantity with its unit: SI for a physical study's material, d, m, tau otherwise.
+  CHECK(axis_unit("/material/surface_energy", true) == "J/m^2");
+  CHECK(axis_unit("/material/surface_energy", false) == "m/tau^2");
+  CHECK(axis_unit("/model/rolling/critical_displacement", true) == "d");
+  CHECK(axis_unit("/impact/angle", false) == "deg");
+  CHECK(axis_unit("fractal_dimension", true) == "1");
+  CHECK(axis_unit("/somewhere/else", true) == "unknown");
   CHECK(values(3) == std::vector<double>{0, 1, 2});  // mixed values: labels "1", "x", "true"
   nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
   add_axis_labels(metadata, axes);
@@ -262,6 +277,16 @@ TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by h
   CHECK(table.find("impact_speed_m_s")->unit == "m/s");
   CHECK(table.find("d_ve_m")->unit == "m");
   CHECK(table.metadata.at("units") == "reduced and SI");
+  // The diameters say what they were computed with: the material's d and density, k_a and D_alpha.
+  const auto& diameters = table.metadata.at("diameters");
+  CHECK(diameters.at("primary_diameter_m") == 2e-8);
+  CHECK(diameters.at("primary_density_kg_m3") == 1725.0);
+  CHECK_THAT(diameters.at("mobility").get<std::string>(), Catch::Contains("k_a = 1, D_alpha = 1.08"));
+  CHECK_THAT(diameters.at("aerodynamic").get<std::string>(), Catch::Contains("rho_0 = 1000 kg/m^3"));
+  // Without SI, the relations in d only.
+  const auto reduced = fixture.table(ExportRequest{});
+  CHECK(reduced.metadata.at("diameters").contains("mobility"));
+  CHECK_FALSE(reduced.metadata.at("diameters").contains("primary_density_kg_m3"));
 }
 
 TEST_CASE("A material outside the study's gamma/k_n range is refused, and one between two values is taken only when interpolated", "[export]") {

@@ -47,4 +47,33 @@ inline std::int64_t fill_pooled_study(Store& store) {
   });
 }
 
+// The same speeds, sizes and replicates on two walls (axis /wall/adhesive): the adhesive wall as
+// above; the wall without adhesion with the sizes' counts swapped and every stick a bounce instead
+// (nothing sticks there: its stick fits have no transition).
+inline std::int64_t fill_pooled_wall_study(Store& store) {
+  auto study = named_study("pooled sizes, two walls", 'q');
+  study.document["axes"] = {{"impact_speed", {{"values", kPooledSpeeds}}},
+                            {"/wall/adhesive", {{"values", {true, false}}}},
+                            {"primaries", {{"values", kPooledSizes}}}};
+  for (const double speed : kPooledSpeeds)
+    for (const bool adhesive : {true, false})
+      for (const int size : kPooledSizes)
+        for (int r = 0; r < kPooledReplicates; ++r) {
+          auto c = reduced_case({{"impact_speed", speed}, {"/wall/adhesive", adhesive}, {"primaries", size}}, speed, 0.001, size, r);
+          c.document["wall"] = {{"adhesive", adhesive}};
+          study.cases.push_back(std::move(c));
+        }
+  return fill_study(store, study, [](const nlohmann::ordered_json& document) {
+    const auto& generator = document.at("cluster").at("generator");
+    const double speed = document.at("impact").at("speed");
+    const auto s = static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
+    const int size = generator.at("primaries");
+    const int replicate = generator.at("seed");
+    if (document.at("wall").at("adhesive").get<bool>()) return pooled_fragments(size, s, replicate);
+    const auto& counts = size == 32 ? kCounts128 : kCounts32;  // the other size's counts
+    if (replicate < counts.stick[s] + counts.bounce[s]) return std::vector<Fragment>{{size - 1, false}, {1, true}};
+    return std::vector<Fragment>{{size - 4, true}, {2, false}, {1, false}, {1, false}};
+  });
+}
+
 }  // namespace aerobreak::testing

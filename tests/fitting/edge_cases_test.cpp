@@ -174,3 +174,21 @@ TEST_CASE("Fragment sizes drawn from a power law give back its exponent, and the
 }
 
 }  // namespace aerobreak
+
+namespace aerobreak {
+
+// The measured crossing (observed_crossing, served with each group's fit in impact speed, which the
+// dashboard and studies/analysis/transition_fit.py read): linear in log dose between the two points
+// around the level, the first crossing, a point on the level itself, none when the level is never
+// crossed.
+TEST_CASE("The measured crossing of a level: linear in log dose between the points around it", "[fitting][crossing]") {
+  const std::vector<std::pair<double, double>> rising{{0.01, 0.0}, {0.02, 0.25}, {0.04, 0.75}, {0.08, 1.0}};
+  CHECK(*observed_crossing(rising, 0.5) == Approx(std::sqrt(0.02 * 0.04)).epsilon(1e-12));  // halfway in log
+  CHECK(*observed_crossing(rising, 0.25) == Approx(0.02).epsilon(1e-12));
+  const std::vector<std::pair<double, double>> falling{{1.0, 1.0}, {10.0, 0.0}};
+  CHECK(*observed_crossing(falling, 0.9) == Approx(std::pow(10.0, 0.1)).epsilon(1e-12));
+  CHECK_FALSE(observed_crossing({{1.0, 0.0}, {2.0, 0.3}}, 0.5));
+  CHECK_FALSE(observed_crossing({{1.0, 0.5}}, 0.5));  // one point: nothing to interpolate
+}
+
+}  // namespace aerobreak

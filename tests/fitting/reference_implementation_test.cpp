@@ -44,6 +44,21 @@
 //     log(v) -1.53249511693183 SE 0.136579104558209; dispersion 0.0509106431995322
 //   power law: coefficients -1.839206172311440 0.155501424409856 0.272859429117981
 //     standard errors from (X'WX)^-1: 0.1881978738357903 0.0424370218140313 0.0234189103099331 (chi2/df 0.185)
+// The per-condition pooled models: the same counts on two walls (axis /wall/adhesive), the adhesive
+// one as above and on the other the sizes' counts swapped; each wall's model pools along N alone:
+//   N <- rep(c(32, 128), each = 8); ctl <- glm.control(epsilon = 1e-14, maxit = 100)
+//   glm(cbind(c(breakA, breakB), 20 - c(breakA, breakB)) ~ rep(x, 2) + log(N), family = binomial, control = ctl)
+//   glm(cbind(c(breakB, breakA), 20 - c(breakB, breakA)) ~ rep(x, 2) + log(N), family = binomial, control = ctl)
+//   glm(cbind(c(stickB, stickA), 20 - c(stickB, stickA)) ~ rep(x, 2) + log(N), family = binomial, control = ctl)
+// Its output (R 4.2.2):
+//   wall 1 break-up 6.23141979030283 SE 1.14414484133368; 1.97416273916377 SE 0.210954716603717;
+//     -0.350161297993368 SE 0.226739531429917
+//   wall 2 break-up 3.31885999295906 SE 1.03153284043332; 1.97416273916377 SE 0.210954716603715;
+//     0.350161297993369 SE 0.226739531429916
+//   wall 2 stick -3.49733718184593 SE 0.996334947775349; -1.7372883854707 SE 0.185345276311066;
+//     -0.452416041348993 SE 0.219089615173936
+// (Pooled over both walls, as the pooled model once was, the break-up curve would have been
+// 4.7248045253736 + 1.95351957366026 x + 0 log N: a mixture that describes neither wall.)
 // The statsmodels script (python3 mnlogit.py): the N = 32 counts expanded to one row per case,
 //   sm.MNLogit(y, sm.add_constant(log v)).fit(method="newton", tol=1e-14, maxiter=100)
 // Its output (columns: bounce, break-up against stick; rows: constant, log v):
@@ -52,10 +67,12 @@
 //   llf -112.66993834996097
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
 #include "orchestrator/fitting/case_groups.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
 #include "orchestrator/fitting/logistic_models.hpp"
 #include "orchestrator/fitting/multinomial_logit.hpp"
 #include "orchestrator/fitting/secondary_fits.hpp"
@@ -85,6 +102,24 @@ void add_group(CaseOutcomeTable& table, double primaries, const Counts& counts) 
         table.cases.push_back(c);
       }
   }
+}
+
+void add_group(CaseOutcomeTable& table, nlohmann::ordered_json axes, const Counts& counts) {
+  const std::size_t first = table.grid_points.size();
+  add_group(table, axes.at("primaries").get<double>(), counts);
+  for (std::size_t g = first; g < table.grid_points.size(); ++g) table.grid_points[g].update(axes);
+}
+
+// The fixture's counts on two walls: the adhesive wall as fixture_study, the other with the sizes'
+// counts swapped.
+CaseOutcomeTable two_wall_study() {
+  CaseOutcomeTable table;
+  table.axes = {"impact_speed", "/wall/adhesive", "primaries"};
+  add_group(table, {{"/wall/adhesive", true}, {"primaries", 32}}, kSmall);
+  add_group(table, {{"/wall/adhesive", true}, {"primaries", 128}}, kLarge);
+  add_group(table, {{"/wall/adhesive", false}, {"primaries", 32}}, kLarge);
+  add_group(table, {{"/wall/adhesive", false}, {"primaries", 128}}, kSmall);
+  return table;
 }
 
 CaseOutcomeTable fixture_study() {
@@ -156,6 +191,43 @@ TEST_CASE("The pooled model with log N as covariate agrees with R", "[fitting][r
   CHECK(pooled.common.cases == 320);
 }
 
+TEST_CASE("Pooled models pool along N only: one per wall, each R's glm on that wall's cases", "[fitting][reference]") {
+  CorrelationRequest request = speed_request();
+  request.size_axis = "primaries";
+  request.covariates = {{"primaries", true}};
+  const CorrelationSet set = compute_correlations(two_wall_study(), request, {});
+  const auto named = [&set](const std::string& name) -> const LogisticFit& {
+    const auto found = std::find_if(set.logistic.begin(), set.logistic.end(), [&](const LogisticFit& f) { return f.common.name == name; });
+    REQUIRE(found != set.logistic.end());
+    return *found;
+  };
+  const LogisticFit& adhesive = named("break-up.speed.pooled.c1");
+  CHECK(adhesive.common.group == nlohmann::ordered_json{{"/wall/adhesive", true}});
+  check_estimate(adhesive.common, 0, 6.23141979030283, 1.14414484133368);
+  check_estimate(adhesive.common, 1, 1.97416273916377, 0.210954716603717);
+  check_estimate(adhesive.common, 2, -0.350161297993368, 0.226739531429917);
+  const LogisticFit& other = named("break-up.speed.pooled.c2");
+  CHECK(other.common.group == nlohmann::ordered_json{{"/wall/adhesive", false}});
+  CHECK(other.common.cases == 320);
+  check_estimate(other.common, 0, 3.31885999295906, 1.03153284043332);
+  check_estimate(other.common, 1, 1.97416273916377, 0.210954716603715);
+  check_estimate(other.common, 2, 0.350161297993369, 0.226739531429916);
+  const LogisticFit& stick = named("stick.speed.pooled.c2");
+  check_estimate(stick.common, 0, -3.49733718184593, 0.996334947775349);
+  check_estimate(stick.common, 1, -1.7372883854707, 0.185345276311066);
+  check_estimate(stick.common, 2, -0.452416041348993, 0.219089615173936);
+  // No fit mixes the walls: every pooled model and scaling law names its wall.
+  for (const LogisticFit& fit : set.logistic) CHECK(fit.common.group.contains("/wall/adhesive"));
+  REQUIRE(set.scaling.size() == 6);  // stick, bounce, break-up x two walls
+  for (const ScalingFit& fit : set.scaling) {
+    CHECK(fit.common.group.contains("/wall/adhesive"));
+    CHECK(fit.common.cases == 320);
+    // P(bounce) never reaches 0.5 in these counts: no v50, no law, and the fit says why.
+    CHECK(fit.axes == (fit.response == Outcome::bounce ? std::vector<std::string>{} : std::vector<std::string>{"primaries"}));
+    CHECK(fit.common.status == (fit.response == Outcome::bounce ? FitStatus::insufficient_data : FitStatus::ok));
+  }
+}
+
 TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting][reference]") {
   const std::vector<double> energy{0.3, 0.327, 0.3564, 0.3885, 0.4235, 0.4616, 0.5031, 0.5484, 0.5978, 0.6516, 0.7102, 0.7741,
                                    0.8438, 0.9197, 1.0025, 1.0927, 1.1911, 1.2983, 1.4151, 1.5425, 1.6813, 1.8326, 1.9976, 2.1774,
@@ -217,7 +289,9 @@ TEST_CASE("The weighted power law of v50 agrees with R's weighted least squares"
     const double half = kZ95 * sigma[g];  // an interval symmetric in log with that standard error
     groups[g].critical.push_back({0.5, {}, v50[g], v50[g] * std::exp(-half), v50[g] * std::exp(half)});
   }
-  const auto fits = fit_scaling_laws(groups, speed_request());
+  CorrelationRequest request = speed_request();
+  request.covariates = {{"primaries", true}, {"gamma_over_kn", true}};  // the axes the law models
+  const auto fits = fit_scaling_laws(groups, {{"c1", nlohmann::ordered_json::object(), {}, {}}}, request);
   REQUIRE(fits.size() == 1);
   REQUIRE(fits[0].common.status == FitStatus::ok);
   CHECK(fits[0].axes == std::vector<std::string>{"primaries", "gamma_over_kn"});

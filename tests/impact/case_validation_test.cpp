@@ -175,6 +175,24 @@ TEST_CASE("invalid cases are rejected with errors that name the field") {
     CHECK(names(v, "/model/twisting", "must be a boolean"));
     CHECK(names(v, "/impact/speed", "must be > 0"));
   }
+  SECTION("a schema error does not hide an error of the rules the schema cannot state") {
+    c["model"] = {{"friction", -1.0}, {"normal", "hertz"}, {"rolling", {{"enabled", true}, {"critical_displacement", 0.01}}}};
+    const auto v = rejection(c);
+    CHECK(names(v, "/model/friction", "must be >= 0"));
+    CHECK(names(v, "/model/rolling/enabled", "adhesive normal law"));
+    CHECK(v.size() == 2);
+  }
+  SECTION("a material in SI without \"units\": the hint, then the case's problems in the units it meant") {
+    c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0}, {"surface_energy", 0.05},
+                     {"diameter", 2e-8}};
+    c["run"] = {{"time_limit_s", 3e-7}};
+    c["model"] = {{"friction", -1.0}};
+    const auto v = rejection(c);
+    INFO(describe(v));
+    REQUIRE(v.size() == 2);
+    CHECK(names(v, "/units", "add \"units\": \"physical\""));
+    CHECK(names(v, "/model/friction", "must be >= 0"));
+  }
 }
 
 TEST_CASE("a file that is not JSON is rejected naming the parse error") {

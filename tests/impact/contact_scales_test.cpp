@@ -99,7 +99,7 @@ TEST_CASE("the contact scales of the reference pair of the literature (gamma/k_n
   CHECK_THAT(e.pull_off_force, WithinRel(3.0 * pi * 0.001 * 0.25, 1e-12));
 }
 
-TEST_CASE("E_break of the DMT law is 3/5 F_c delta_0; a law without adhesion has none") {
+TEST_CASE("E_break of the DMT law is 3/5 F_c delta_0, a law without adhesion has none") {
   ContactModelSpec spec;
   spec.normal = NormalLaw::dmt;
   const auto dmt = make_contact_forces(spec, NormalLaw::dmt);

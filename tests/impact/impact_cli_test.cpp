@@ -1,5 +1,5 @@
 // `aerobreak impact`: a case file in, a valid result document out; invalid cases are refused
-// with the offending field named on stderr and exit status 1.
+// with the offending field named on stderr and exit status 2 (README, "Exit status").
 #include <catch2/catch.hpp>
 
 #include "tests/support/run_command.hpp"
@@ -66,8 +66,18 @@ TEST_CASE("aerobreak impact refuses an invalid case and names the field") {
   Json c = testing::minimal_case();
   c["model"] = {{"friction", -0.5}};
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c.dump(2)).string());
-  CHECK(out.exit_code == 1);
+  CHECK(out.exit_code == 2);
   CHECK_THAT(out.text, Contains("/model/friction: must be >= 0 (got -0.5)"));
+}
+
+TEST_CASE("aerobreak impact --check says a case without rolling resistance has none, instead of E_roll = nan") {
+  const aerobreak::testing::ScratchDirectory scratch("impact_cli");
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact -o /dev/null --check " + AEROBREAK_SOURCE_DIR +
+                               "/studies/figure4_impact_n256.case.json");
+  INFO(out.text);
+  REQUIRE(out.exit_code == 0);
+  CHECK_THAT(out.text, Contains("impact: E_roll: no rolling resistance (/model/rolling/enabled is false)"));
+  CHECK_THAT(out.text, !Contains("nan"));
 }
 
 TEST_CASE("aerobreak impact --check writes the case completed with its defaults") {

@@ -68,7 +68,7 @@ TEST_CASE("$defs: nested references, boolean schemas, references from $defs to t
   CHECK_FALSE(valid(tree, Json::parse(R"({"value": 1, "children": [{"value": 2, "children": [{"value": "x"}]}]})")));
 }
 
-TEST_CASE("items is one schema for every item (draft 2020-12); the draft-7 array form is refused") {
+TEST_CASE("items is one schema for every item (draft 2020-12), the draft-7 array form is refused") {
   const Json schema{{"items", {{"type", "integer"}}}};
   CHECK(valid(schema, Json::array({1, 2, 3})));
   CHECK_FALSE(valid(schema, Json::array({1, "x"})));

@@ -94,7 +94,7 @@ TEST_CASE("stepping in stretches between observers gives the uninterrupted run t
   CHECK(observed.simulation->energy().mechanical() == plain.simulation->energy().mechanical());
 }
 
-TEST_CASE("snapshots come at their interval and never twice at one step; an interval of 0 means none") {
+TEST_CASE("snapshots come at their interval and never twice at one step, an interval of 0 means none") {
   PreparedImpact run = small_impact();
   std::vector<std::int64_t> steps;
   SnapshotObserver snapshots([&](const Simulation& s) { steps.push_back(s.step_count()); }, 4 * kStep);

@@ -25,7 +25,7 @@ Cluster three_in_a_row() {
 
 }  // namespace
 
-TEST_CASE("a name ending in .h5 or .hdf5, in any case, is a library; any other an XYZ file") {
+TEST_CASE("a name ending in .h5 or .hdf5, in any case, is a library, any other an XYZ file") {
   CHECK(names_cluster_library("a/clusters.h5"));
   CHECK(names_cluster_library("clusters.HDF5"));
   CHECK_FALSE(names_cluster_library("cluster.xyz"));

@@ -54,6 +54,28 @@ TEST_CASE("Bad requests are refused with a JSON body naming the problem, and the
     CHECK(names_pointer(answer.body, "/replicates/count"));
     CHECK(names_pointer(answer.body, "/axes/warp_factor"));
   }
+  SECTION("every problem of a study in one answer: its replicate count does not hide its cases' errors") {
+    auto study = small_study("three mistakes", {0.01}, 1);
+    study["replicates"]["count"] = 0;
+    study["base"]["model"]["friction"] = -1;
+    study["base"]["material"]["poisson_ratio"] = 0.7;
+    const auto answer = post(service, "/api/studies", study.dump());
+    INFO(answer.body.dump(2));
+    CHECK(answer.status == 422);
+    CHECK(answer.body.at("violations").size() == 3);
+    CHECK(names_pointer(answer.body, "/replicates/count"));
+    CHECK(names_pointer(answer.body, "/base/model/friction"));
+    CHECK(names_pointer(answer.body, "/base/material/poisson_ratio"));
+    // The command-line client prints each at its field.
+    const auto file = scratch.path() / "three.study.json";
+    std::ofstream(file) << study.dump();
+    const auto submitted =
+        run_command(std::string(AEROBREAK_BINARY) + " study submit --url " + service.url() + " " + file.string());
+    CHECK(submitted.exit_code == 2);
+    CHECK_THAT(submitted.text, Catch::Contains("\n  /replicates/count: ") &&
+                                   Catch::Contains("\n  /base/model/friction: ") &&
+                                   Catch::Contains("\n  /base/material/poisson_ratio: "));
+  }
   SECTION("a case made invalid by the base is named under /base") {
     auto study = small_study("bad base", {0.01}, 1);
     study["base"]["model"]["friction"] = -1;

@@ -68,8 +68,8 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   CHECK(v50.at("level") == 0.5);
   CHECK(v50.at("ci95")[0].get<double>() < 0.05 * 1.5);
   CHECK(v50.at("ci95")[1].get<double>() > 0.05 / 1.5);
-  CHECK(fit_named(summary, "break-up.speed.pooled"));
-  CHECK(fit_named(summary, "scaling.break-up.v50"));
+  CHECK(fit_named(summary, "break-up.speed.pooled.c1"));
+  CHECK(fit_named(summary, "scaling.break-up.v50.c1"));
 
   const Json fit = service.get("/api/studies/1/correlations/break-up.speed.g1");
   CHECK(fit.at("status") == "ok");
@@ -115,8 +115,10 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   // The CLI client prints the critical speeds from the same endpoint.
   const auto printed = run_command(std::string(AEROBREAK_BINARY) + " study correlations 1 --url " + service.url());
   CHECK(printed.exit_code == 0);
-  CHECK(printed.text.find("v50 [95% CI]") != std::string::npos);
-  CHECK(printed.text.find("break-up.speed.pooled") != std::string::npos);
+  INFO(printed.text);
+  CHECK(printed.text.find("v50 (d/tau)") != std::string::npos);
+  CHECK(printed.text.find("[95% CI]") != std::string::npos);
+  CHECK(printed.text.find("break-up.speed.pooled.c1") != std::string::npos);
   CHECK(service.kill(SIGTERM) == 0);
 }
 
@@ -143,7 +145,7 @@ TEST_CASE("Every served correlation document is valid against schemas/correlatio
   }
   // Every kind of document was among them, a fit with covariates too.
   CHECK(kinds == std::set<std::string>{"grid-points", "logistic", "multinomial", "scaling", "retained-fraction", "fragment-sizes"});
-  check(service.get("/api/studies/1/correlations/break-up.energy.pooled?covariates=N"), "pooled energy fit");
+  check(service.get("/api/studies/1/correlations/break-up.energy.pooled.c1?covariates=N"), "pooled energy fit");
 
   // The schema is a contract, not a formality: a document that breaks it is refused.
   Json broken = service.get("/api/studies/1/correlations/break-up.speed.g1");

@@ -1,10 +1,12 @@
 // Each case's HDF5 file is checked against the size and SHA-256 its worker recorded
-// (docs/ORCHESTRATOR.md, Store, "Data files checked"): a damaged or deleted file shows in the case,
-// and submitting the study again recomputes it.
-// Also the receipt of a study submitted again when all its cases are done.
+// (docs/ORCHESTRATOR.md, Store, "Data files checked"): a damaged or deleted file shows in the case;
+// submitting the study again reports it, keeps its result, and recomputes it when asked. A store
+// moved or copied with its data folder finds its files. Also the receipt of a study submitted again
+// when all its cases are done.
 #include <fstream>
 
 #include "tests/orchestrator/service_process.hpp"
+#include "tests/support/run_command.hpp"
 
 namespace aerobreak::testing {
 namespace {
@@ -36,7 +38,7 @@ void flip_a_byte(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting the study recomputes it",
+TEST_CASE("A damaged or deleted case file shows in the case, resubmitting reports it and recomputes it when asked",
           "[service]") {
   ScratchDirectory scratch("data-files");
   ServiceProcess service(scratch.path());
@@ -66,9 +68,22 @@ TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting th
   CHECK(download_status(service, damaged_id) == 409);
   CHECK(download_status(service, deleted_id) == 404);
 
-  const auto receipt = submit(service, study_document, 200);
+  // Submitted again: the lost files are reported, and the results kept and served.
+  const auto reported = submit(service, study_document, 200);
+  CHECK(reported.at("data_files_lost") == 2);
+  CHECK(reported.at("recomputed") == 0);
+  CHECK(reported.at("already_done") == 2);
+  for (const auto id : {damaged_id, deleted_id}) {
+    const auto detail = case_detail(service, id);
+    CHECK(detail.at("status") == "done");
+    CHECK(detail.at("result").is_object());
+  }
+  CHECK(service.get("/api/studies/" + std::to_string(study) + "/results").at("items").size() == 2);
+
+  // Asked for, they are computed again.
+  const auto receipt = submit(service, study_document, 200, "?recompute_data_files=true");
   CHECK(receipt.at("recomputed") == 2);
-  CHECK(receipt.at("already_done") == 0);
+  CHECK(receipt.at("data_files_lost") == 2);
   REQUIRE(eventually([&] { return study_complete(service, study); }, 60s));
   for (const auto id : {damaged_id, deleted_id}) {
     const auto detail = case_detail(service, id);
@@ -81,6 +96,40 @@ TEST_CASE("A damaged or deleted case file shows in the case, and resubmitting th
   const auto again = submit(service, study_document, 200);
   CHECK(again.at("already_done") == 2);
   CHECK(again.at("recomputed") == 0);
+}
+
+TEST_CASE("A store moved or copied with its data folder finds every data file: nothing is recomputed or lost",
+          "[service]") {
+  ScratchDirectory scratch("moved-store");
+  const auto first = scratch.path() / "first";
+  std::filesystem::create_directories(first);
+  const auto study_file = scratch.write("moved.study.json", small_study("moved", {0.01, 0.05}, 1).dump());
+  const std::string run = "timeout 120 " + std::string(AEROBREAK_BINARY) + " run " + study_file.string() +
+                          " --ranks 1 --port 0 --store ";
+  REQUIRE(run_command(run + (first / "s.sqlite").string()).exit_code == 0);
+
+  // Moved: the store and its data folder (s.data) together.
+  const auto moved = scratch.path() / "moved";
+  std::filesystem::rename(first, moved);
+  const auto again = run_command(run + (moved / "s.sqlite").string());
+  INFO(again.text);
+  CHECK(again.exit_code == 0);
+  CHECK_THAT(again.text, Catch::Contains("(2 already done)"));
+  CHECK_THAT(again.text, !Catch::Contains("computed again") && !Catch::Contains("lost"));
+
+  // Copied beside it: the copy serves its own files.
+  const auto copy = scratch.path() / "copy";
+  std::filesystem::copy(moved, copy, std::filesystem::copy_options::recursive);
+  ServiceProcess service(scratch.path(), {}, copy / "s.sqlite");
+  const auto cases = service.get("/api/studies/1/cases").at("items");
+  REQUIRE(cases.size() == 2);
+  for (const auto& listed : cases) {
+    const auto id = listed.at("id").get<std::int64_t>();
+    const auto detail = case_detail(service, id);
+    CHECK_THAT(detail.at("data_file").get<std::string>(), Catch::StartsWith((copy / "s.data").string()));
+    CHECK(detail.at("data_file_check").at("state") == "ok");
+    CHECK(download_status(service, id) == 200);
+  }
 }
 
 }  // namespace aerobreak::testing

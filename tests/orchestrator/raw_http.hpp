@@ -14,11 +14,18 @@
 
 namespace aerobreak::testing {
 
-// A TCP connection to 127.0.0.1:port, closed with the object.
+// A TCP connection to 127.0.0.1:port, closed with the object; from `source` (another loopback
+// address, e.g. 127.0.0.2: another client to the service) when given.
 class RawConnection {
  public:
-  explicit RawConnection(int port) : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
+  explicit RawConnection(int port, const char* source = nullptr) : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
     REQUIRE(fd_ >= 0);
+    if (source) {
+      sockaddr_in local{};
+      local.sin_family = AF_INET;
+      REQUIRE(::inet_pton(AF_INET, source, &local.sin_addr) == 1);
+      REQUIRE(::bind(fd_, reinterpret_cast<sockaddr*>(&local), sizeof local) == 0);
+    }
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(static_cast<std::uint16_t>(port));
@@ -56,6 +63,12 @@ class RawConnection {
     return received;
   }
 
+  // Whether the peer has sent something (an answer) or closed the connection.
+  bool readable() {
+    pollfd watched{fd_, POLLIN, 0};
+    return ::poll(&watched, 1, 0) > 0;
+  }
+
   // Whether the peer has closed the connection (a read would return end of file or an error).
   bool closed_by_peer() {
     pollfd watched{fd_, POLLIN, 0};
@@ -68,9 +81,9 @@ class RawConnection {
   int fd_;
 };
 
-// Sends a request on a new connection and returns the whole answer.
-inline std::string round_trip(int port, const std::string& request) {
-  RawConnection connection(port);
+// Sends a request on a new connection (from `source`, when given) and returns the whole answer.
+inline std::string round_trip(int port, const std::string& request, const char* source = nullptr) {
+  RawConnection connection(port, source);
   connection.send(request);
   return connection.receive_all();
 }

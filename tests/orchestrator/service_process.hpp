@@ -156,9 +156,11 @@ inline Json slow_study(const std::string& name, int cases) {
   return small_study(name, speeds, 1, 128, 40000.0);
 }
 
-inline Json submit(const ServiceProcess& service, const Json& study, int expected_status = 201) {
+// POST /api/studies, with `query` ("?recompute_data_files=true") when given.
+inline Json submit(const ServiceProcess& service, const Json& study, int expected_status = 201,
+                   const std::string& query = {}) {
   auto client = service.client();
-  const auto response = client.Post("/api/studies", study.dump(), "application/json");
+  const auto response = client.Post(("/api/studies" + query).c_str(), study.dump(), "application/json");
   REQUIRE(response);
   INFO(response->body);
   REQUIRE(response->status == expected_status);

@@ -4,6 +4,7 @@
 // sizes the study did not run (the fit pooled over its sizes), inside or outside its validity box.
 #include <map>
 
+#include "orchestrator/store/sqlite_database.hpp"
 #include "tests/export/pooled_size_study.hpp"
 #include "tests/orchestrator/service_process.hpp"
 
@@ -124,6 +125,52 @@ TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused 
   const auto refused = Json::parse(get(service, tables + "&sizes=16&strict=true").body);
   CHECK(refused.at("violations").at(0).at("message").get<std::string>().find("from 3.200000000e+01 to 1.280000000e+02") !=
         std::string::npos);
+}
+
+}  // namespace aerobreak::testing
+
+namespace aerobreak::testing {
+
+// A table is built once per result-set version and request, then kept: the same ETag (304 for a
+// client holding it) until a result changes; gzip for a client that accepts it, the same table once
+// inflated.
+TEST_CASE("Lookup-table endpoint: kept per result-set version and request, with an ETag, sent gzip", "[service][export]") {
+  ScratchDirectory scratch("table_endpoints_kept");
+  std::int64_t id = 0;
+  {
+    Store store(scratch.path() / "store.sqlite");
+    id = fill_pooled_study(store);
+  }
+  ServiceProcess service(scratch.path());
+  const std::string csv = "/api/studies/" + std::to_string(id) + "/tables?format=csv";
+  auto client = service.client();
+  const auto first = client.Get(csv.c_str(), httplib::Headers{{"Accept-Encoding", "identity"}});
+  REQUIRE(first);
+  REQUIRE(first->status == 200);
+  const std::string etag = first->get_header_value("ETag");
+  CHECK_FALSE(etag.empty());
+  CHECK(first->get_header_value("Content-Encoding").empty());
+  const auto again = client.Get(csv.c_str(), httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(again);
+  CHECK(again->status == 304);
+  CHECK(again->body.empty());
+  const auto compressed = client.Get(csv.c_str(), httplib::Headers{{"Accept-Encoding", "gzip"}});
+  REQUIRE(compressed);
+  CHECK(compressed->get_header_value("Content-Encoding") == "gzip");
+  CHECK(compressed->get_header_value("ETag") == etag);
+  CHECK(compressed->body == first->body);
+  const auto json = client.Get((csv.substr(0, csv.find('?')) + "?format=json").c_str());
+  REQUIRE(json);
+  CHECK(json->get_header_value("ETag") != etag);
+
+  // A changed result set: the table is built again, under a new tag.
+  SqliteDatabase(service.store_file()).execute("UPDATE results SET outcome = 'undetermined' WHERE case_id = 1");
+  const auto changed = client.Get(csv.c_str(), httplib::Headers{{"If-None-Match", etag}});
+  REQUIRE(changed);
+  CHECK(changed->status == 200);
+  CHECK(changed->get_header_value("ETag") != etag);
+  CHECK(changed->body != first->body);
+  CHECK(service.kill(SIGTERM) == 0);
 }
 
 }  // namespace aerobreak::testing

@@ -188,7 +188,7 @@ TEST_CASE("SIGKILL of the orchestrator mid-search: the restarted one goes on wit
   for (const auto& group : search.at("groups")) CHECK(group.at("state") != "searching");
 }
 
-TEST_CASE("Submitting a search study again recomputes the lost data files of every round, not only round 0",
+TEST_CASE("A search study submitted again reports the lost data files of every round, and recomputes them when asked",
           "[search][service]") {
   ScratchDirectory scratch("adaptive-data-files");
   const auto data = scratch.path() / "synthetic-data";
@@ -212,7 +212,12 @@ TEST_CASE("Submitting a search study again recomputes the lost data files of eve
     std::filesystem::remove(detail.at("data_file").get<std::string>());
   }
 
-  const auto receipt = submit(*service, document, 200);
+  // Reported, their results kept; computed again only when asked.
+  const auto reported = submit(*service, document, 200);
+  CHECK(reported.at("data_files_lost") == 2);
+  CHECK(reported.at("recomputed") == 0);
+  for (const auto case_id : lost) CHECK(service->get("/api/cases/" + std::to_string(case_id)).at("status") == "done");
+  const auto receipt = submit(*service, document, 200, "?recompute_data_files=true");
   CHECK(receipt.at("recomputed") == 2);
   REQUIRE(eventually([&] { return study_complete(*service, id); }, 120s));
   for (const auto case_id : lost) {

@@ -1,8 +1,10 @@
 // The correlations' storage over a real SQLite file: the reader, the study's result-set version
-// (Store::study_versions), and the cache that refits only when the result set changed.
+// (Store::study_versions), the application layer's StudyFits that refits only when the result set
+// changed, and its stored fits read back for the export.
 #include <catch2/catch.hpp>
 
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/fitting/correlation_set.hpp"
 #include "tests/store/correlation_study.hpp"
 #include "tests/store/store_support.hpp"
 
@@ -44,7 +46,7 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   const CorrelationRequest request = correlation_request(study, std::nullopt);
   REQUIRE(request.covariates.size() == 1);
   CHECK(request.covariates[0].axis == "primaries");
-  CorrelationCache cache(store);
+  StudyFits cache(store);
 
   const StoredCorrelations first = *cache.current(study, request);
   CHECK(first.result_set_version == 64);
@@ -77,6 +79,69 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
   }
 }
 
+// Two different requests never share a stored or cached answer: the key covers the levels, the size
+// and speed axes as well as the covariates (once it held the covariates only, and a request for
+// other levels was answered with the default levels' fits).
+TEST_CASE("The fits' cache keys on the whole request", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_request_key");
+  Store store(file.path());
+  const auto id = finished_correlation_study(store, "keys", 4, 2);
+  const StudyRecord study = *store.study(id);
+  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  CHECK(request.size_axis == "primaries");
+  StudyFits cache(store);
+  const auto first = cache.current(study, request);
+  CorrelationRequest other_levels = request;
+  other_levels.levels = {0.2, 0.5, 0.8};
+  const auto second = cache.current(study, other_levels);
+  CHECK(second->set_id != first->set_id);
+  CHECK(nlohmann::json::parse(second->summary).at("request").at("levels") == nlohmann::json{0.2, 0.5, 0.8});
+  const auto g1 = nlohmann::json::parse(*store.stored_fit(second->set_id, "break-up.speed.g1"));
+  CHECK(g1.at("critical")[0].at("level") == 0.2);
+  CHECK(cache.current(study, request)->set_id == first->set_id);  // each request keeps its own set
+  for (const auto& change : {&CorrelationRequest::size_axis, &CorrelationRequest::speed_axis}) {
+    CorrelationRequest changed = request;
+    changed.*change = "another_axis";
+    CHECK(request_key(changed) != request_key(request));
+  }
+}
+
+// The lookup-table export evaluates the stored fits read back (StudyFits::logistic_fits), not a
+// fresh fit of the study: read back they are the fits, number for number, and a stored document
+// changed by hand is what the export then gets.
+TEST_CASE("The export reads the study's stored fits back instead of fitting it again", "[store][correlations]") {
+  TemporaryStoreFile file("correlation_read_back");
+  Store store(file.path());
+  const auto id = finished_correlation_study(store, "read back", 4, 2);
+  const StudyRecord study = *store.study(id);
+  StudyFits fits(store);
+  const auto read = fits.logistic_fits(study);
+  const CorrelationSet fresh = study_correlations(store, study, correlation_request(study, std::nullopt));
+  REQUIRE(read->logistic.size() == fresh.logistic.size());
+  for (std::size_t i = 0; i < fresh.logistic.size(); ++i) {
+    const auto &a = read->logistic[i], &b = fresh.logistic[i];
+    INFO(b.common.name);
+    CHECK(a.common.name == b.common.name);
+    CHECK(a.common.status == b.common.status);
+    CHECK(a.common.group == b.common.group);
+    CHECK(a.common.coefficients == b.common.coefficients);  // bitwise: JSON keeps doubles exactly
+    CHECK(a.common.covariance == b.common.covariance);
+    REQUIRE(a.common.validity.size() == b.common.validity.size());
+    for (std::size_t k = 0; k < a.common.validity.size(); ++k) CHECK(a.common.validity[k].max == b.common.validity[k].max);
+    CHECK(a.covariates.size() == b.covariates.size());
+    CHECK(a.data.successes.sum() == b.data.successes.sum());
+    CHECK(a.critical.size() == b.critical.size());
+  }
+  CHECK(fits.logistic_fits(study) == read);  // kept per stored set
+  SqliteDatabase db(file.path());
+  db.execute("UPDATE correlation_fits SET document = json_set(document, '$.parameters[0].estimate', 42.0) "
+             "WHERE name = 'break-up.speed.g1'");
+  StudyFits again(store);
+  const auto changed = again.logistic_fits(study);
+  for (const auto& fit : changed->logistic)
+    if (fit.common.name == "break-up.speed.g1") CHECK(fit.common.coefficients[0] == 42.0);
+}
+
 TEST_CASE("Correlation requests that do not fit the study are refused with the reason", "[store][correlations]") {
   TemporaryStoreFile file("correlation_requests");
   Store store(file.path());
@@ -86,7 +151,7 @@ TEST_CASE("Correlation requests that do not fit the study are refused with the r
                     Catch::Contains("covariate 'angle' is not an axis of study") && Catch::Contains("impact_speed"));
   CHECK(correlation_request(study, std::vector<std::string>{"N"}).covariates.at(0).axis == "primaries");
   CHECK(correlation_request(study, std::vector<std::string>{}).covariates.empty());
-  CorrelationCache cache(store);
+  StudyFits cache(store);
   try {
     cache.current(study, correlation_request(study, std::nullopt));
     FAIL("a study without results was fitted");

@@ -1,5 +1,8 @@
 // `aerobreak study expand` over the real binary, and the project's default study.
 #include <catch2/catch.hpp>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <set>
 #include <string>
@@ -19,6 +22,20 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 const std::string kExpand = std::string(AEROBREAK_BINARY) + " study expand ";
+
+// A loopback port nothing listens on: one the kernel just handed out, closed again.
+int closed_port() {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  REQUIRE(fd >= 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
+  socklen_t length = sizeof address;
+  REQUIRE(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0);
+  ::close(fd);
+  return ntohs(address.sin_port);
+}
 
 }  // namespace
 
@@ -117,4 +134,21 @@ TEST_CASE("aerobreak study needs a subcommand") {
   const auto help = run_command(std::string(AEROBREAK_BINARY) + " study --help");
   CHECK(help.exit_code == 0);
   CHECK_THAT(help.text, Contains("expand"));
+}
+
+TEST_CASE("aerobreak study without a service says so in whole sentences, with status 4") {
+  const std::string url = "http://127.0.0.1:" + std::to_string(closed_port());
+  const auto out = run_command(std::string(AEROBREAK_BINARY) + " study list --url " + url);
+  INFO(out.text);
+  CHECK(out.exit_code == 4);
+  CHECK_THAT(out.text, Contains("aerobreak study list: no answer from the service at " + url +
+                                ": nothing accepts connections there."));
+  CHECK_THAT(out.text, Contains("aerobreak serve") && Contains("--url or AEROBREAK_URL."));
+}
+
+TEST_CASE("a command line aerobreak does not understand ends with status 2, not CLI11's own") {
+  CHECK(run_command(std::string(AEROBREAK_BINARY) + " study expand").exit_code == 2);                 // missing file
+  CHECK(run_command(std::string(AEROBREAK_BINARY) + " run --no-such-option x.json").exit_code == 2);  // unknown option
+  CHECK(run_command(std::string(AEROBREAK_BINARY) + " impact /no/such/case.json").exit_code == 2);    // file not there
+  CHECK(run_command(std::string(AEROBREAK_BINARY) + " --help").exit_code == 0);
 }

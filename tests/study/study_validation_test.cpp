@@ -2,7 +2,9 @@
 // names every offending field by its JSON pointer into the study document.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
 
 #include "study_support.hpp"
 
@@ -238,4 +240,79 @@ TEST_CASE("load_study names a file that is missing or not JSON") {
 TEST_CASE("the study schema file is the one compiled in") {
   std::ifstream in(aerobreak::testing::source_path("schemas/study.schema.json"));
   CHECK(study_schema().schema() == Json::parse(in));
+}
+
+namespace {
+
+// The default study (physical units) at two speeds, one wall, one size and one replicate.
+Json small_physical_study() {
+  std::ifstream in(aerobreak::testing::source_path("studies/default.study.json"));
+  Json s = Json::parse(in);
+  s["axes"] = {{"impact_speed", {{"values", {4, 8}}}}, {"primaries", {{"values", {32}}}}};
+  s["replicates"] = {{"count", 1}, {"seed", 1}};
+  return s;
+}
+
+std::size_t count_at(const std::vector<SchemaViolation>& violations, const std::string& pointer) {
+  return static_cast<std::size_t>(std::count_if(violations.begin(), violations.end(),
+                                                [&](const SchemaViolation& v) { return v.pointer == pointer; }));
+}
+
+}  // namespace
+
+TEST_CASE("every problem of a study comes in one answer: a replicate count does not hide the cases' errors") {
+  REQUIRE_NOTHROW(parse_study(small_physical_study()));
+  Json s = small_physical_study();
+  s["replicates"]["count"] = 0;
+  s["base"]["material"]["poisson_ratio"] = 0.7;
+  s["base"]["material"]["density"] = 1.725;  // g/cm^3 for kg/m^3
+  const auto v = violations_of(s);
+  INFO(describe(v));
+  CHECK_THAT(message_at(v, "/replicates/count"), Contains("must be >= 1 (got 0)"));
+  CHECK_THAT(message_at(v, "/base/material/poisson_ratio"), Contains("must be < 0.5 (got 0.7) (in every case)"));
+  CHECK_THAT(message_at(v, "/base/material/density"),
+             Contains("must be >= 100 (got 1.725); in kg/m^3: 1.7 g/cm^3 is 1700 (in every case)"));
+  CHECK(v.size() == 3);
+}
+
+TEST_CASE("a study whose material is in SI without \"units\" is told to add it, and checked as it meant") {
+  Json s = small_physical_study();
+  s["base"].erase("units");
+  auto v = violations_of(s);
+  INFO(describe(v));
+  REQUIRE(v.size() == 1);
+  CHECK(v[0].pointer == "/base/units");
+  CHECK_THAT(v[0].message, Contains("is missing, so the case is in reduced units") &&
+                               Contains("add \"units\": \"physical\"") && Contains("(in every case)"));
+
+  s["base"]["material"]["diameter"] = -1;  // a problem of the case as it meant it comes too
+  v = violations_of(s);
+  CHECK(count_at(v, "/base/units") == 1);
+  CHECK_THAT(message_at(v, "/base/material/diameter"), Contains("must be >= 1e-09 (got -1)"));
+
+  Json reduced = minimal_study();
+  reduced["base"]["units"] = "physical";
+  CHECK_THAT(message_at(violations_of(reduced), "/base/units"), Contains("this /material is reduced (gamma_over_kn)"));
+}
+
+TEST_CASE("a 20 m primary diameter is blamed on the diameter, not on the impact speed") {
+  Json s = small_physical_study();
+  s["base"]["material"]["diameter"] = 20;  // 20 nm meant
+  const auto v = violations_of(s);
+  INFO(describe(v));
+  REQUIRE(v.size() == 1);
+  CHECK(v[0].pointer == "/base/material/diameter");
+  CHECK_THAT(v[0].message, Contains("must be <= 0.001 (got 20); in m: 20 nm is 2e-08 (in every case)"));
+}
+
+TEST_CASE("a physical speed too slow to reach the wall in time is told in m/s and seconds") {
+  Json s = small_physical_study();
+  s["axes"]["impact_speed"] = {{"values", {1e-4, 8}}};
+  const auto v = violations_of(s);
+  INFO(describe(v));
+  REQUIRE(v.size() == 1);
+  CHECK(v[0].pointer == "/axes/impact_speed");
+  // gap 0.01 d = 2e-10 m at 1e-4 m/s: 2e-06 s, beyond the 3e-07 s limit.
+  CHECK_THAT(v[0].message, Contains("at 0.0001 m/s the cluster would reach the wall after 2e-06 s (the gap, 0.01 d = "
+                                    "2e-10 m, over the normal speed), beyond /run/time_limit_s (3e-07 s)"));
 }

@@ -198,16 +198,17 @@ const resizer = new ResizeObserver((entries) => {
 });
 
 // Draws `curves` ([{label, points: [{x, y, lo, hi}], style, dash, color}]) into `container`.
-// `bounds`: the quantity's range, e.g. [0, 1].
+// `bounds`: the quantity's range, e.g. [0, 1]; `empty`: what to say when there is nothing to draw.
 export function plotCurves(container, curves, options) {
   const { xLabel, yLabel, xLog = true, yLog = false, bounds = null, fitIntervals = true } = options;
+  const { empty = 'Nothing to plot yet: no finished cases here.' } = options;
   if (container.uplot) container.uplot.destroy();
   container.uplot = null;
   container.curves = curves;
   container.dataset.series = curves.length;
   container.dataset.points = curves.reduce((sum, curve) => sum + curve.points.length, 0);
   if (curves.length === 0) {
-    replaceChildren(container, el('p', { class: 'note' }, 'Nothing to plot yet: no finished cases here.'));
+    replaceChildren(container, el('p', { class: 'note' }, empty));
     return;
   }
   assignColors(curves);

@@ -7,7 +7,7 @@
 // curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (the study
 // has no results yet) hides these parts.
 import { ApiError, getJson } from './api.js';
-import { conditionKey, valueKey } from './series.js';
+import { conditionKey, observedCriticalCurves, valueKey } from './series.js';
 
 // The dose of a fit for each choice of x (series.js).
 const kDoseOfX = { impact_speed: 'impact_speed', energy_per_contact: 'energy_per_contact' };
@@ -31,8 +31,9 @@ export async function loadCorrelationSummary(studyId) {
 const groupMatches = (group, gridPoint) => Object.entries(group).every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
 // Whether the group lies in the slice ({axis: valueKey}) the plots show.
 const inSlice = (group, slice) => Object.entries(slice).every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
+// A group's own fit: a pooled model names the axes it pools along.
 const isGroupFit = (fit, outcome, dose) => fit.kind === 'logistic' && fit.response === outcome && fit.dose === dose &&
-  !fit.name.endsWith('.pooled');
+  fit.pooled_over.length === 0;
 
 export class Correlations {
   constructor(studyId, summary) {
@@ -93,6 +94,12 @@ export class Correlations {
       }
     }
     return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
+  }
+
+  // The measured crossings of 0.5 against N, as the service computes them from each group's
+  // measured proportions (observed_crossings of the fits along x), one series per other series axis.
+  observedCurves(outcome, xAxis, slice) {
+    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice);
   }
 
   // The scaling fits of v50 for `outcome` (exponents per axis) whose group lies in the slice.

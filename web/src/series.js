@@ -100,31 +100,18 @@ export const meanOf = (quantity) => (row) => {
   return { y: estimate.mean, lo: estimate.ci95 ? estimate.ci95[0] : null, hi: estimate.ci95 ? estimate.ci95[1] : null };
 };
 
-// Where a curve first crosses `level`, interpolated linearly in log x between the two measured
-// points around it; null when it never does.
-export function crossing(points, level = 0.5) {
-  for (let i = 1; i < points.length; i++) {
-    const [a, b] = [points[i - 1], points[i]];
-    if ((a.y - level) * (b.y - level) > 0 || a.y === b.y) continue;
-    if (a.y === level) return a.x;
-    const t = (level - a.y) / (b.y - a.y);
-    return Math.exp(Math.log(a.x) + t * (Math.log(b.x) - Math.log(a.x)));
-  }
-  return null;
-}
-
-// Critical speed against N: one series per value of the series axes other than N, from the
-// crossings of each curve.
-export function criticalSpeedCurves(curves, level = 0.5) {
+// Critical speed against N from the service's measured crossings (`observed_crossings` of each
+// group's fit, which the fitting library computes): one series per value of the series axes other
+// than N (those outside the slice).
+export function observedCriticalCurves(fits, slice, level = 0.5) {
   const series = new Map();
-  for (const curve of curves) {
-    if (!('primaries' in curve.groupValues)) continue;
-    const x = crossing(curve.points, level);
-    if (x === null) continue;
-    const { primaries, ...rest } = curve.groupValues;
+  for (const fit of fits) {
+    const crossing = (fit.observed_crossings || []).find((c) => c.level === level);
+    if (!('primaries' in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
+    const rest = Object.fromEntries(Object.entries(fit.group).filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
     const key = valueKey(rest);
     if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest), points: [] });
-    series.get(key).points.push({ x: primaries, y: x });
+    series.get(key).points.push({ x: fit.group.primaries, y: crossing.dose });
   }
   const sorted = [...series.values()];
   for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);

@@ -7,7 +7,7 @@ import { getJson } from '../api.js';
 import { el, replaceChildren, select } from '../dom.js';
 import { colourGroups, plotCurves } from '../charts.js';
 import {
-  alongAxis, axisLabel, conditionKey, criticalSpeedCurves, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
+  alongAxis, axisLabel, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
   meanOf, probabilityOf, shortAxisLabel, sliceAxes, valueKey,
 } from '../series.js';
 import { withUnit } from '../units.js';
@@ -50,6 +50,7 @@ const kCriticalNote = 'Points: where the measured probability crosses 0.5 (inter
   'v10 (dashed) and v90 (dotted); along the energy per contact E10, E50 and E90. The axis spans the estimates: an ' +
   'interval reaching beyond is cut at the edge (its numbers are in the correlations table).';
 const kStudent = 'Mean of the results, whiskers: 95 % Student interval';
+const kNoBounces = 'Nothing to plot: no case here bounced (the restitution is that of the bounces).';
 
 function createPanels() {
   return {
@@ -58,7 +59,8 @@ function createPanels() {
     retained: panel('retained', 'Retained mass fraction', `${kStudent} (within 0 and 1).`),
     damage: panel('damage', 'Damage ratio', 'Initial contacts broken by the end over the initial contacts. ' +
       `${kStudent} (within 0 and 1).`),
-    restitution: panel('restitution', 'Restitution (largest fragment, normal)', `${kStudent}.`),
+    restitution: panel('restitution', 'Restitution (largest fragment, normal)',
+      'Mean over the bounces only (a stick or a break-up has none), whiskers: 95 % Student interval.'),
     fragments: panel('fragments', 'Fragment-size distribution',
       'Fragments of each size per result, one series per grid value.'),
   };
@@ -70,21 +72,22 @@ function measuredGroups(curves, styleLabel) {
   return colourGroups(curves).map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
 }
 
-function measuredCritical(measured, xAxis) {
-  return criticalSpeedCurves(measured).map((curve) => ({
+// The measured crossings as the service computes them (correlations.js observedCurves).
+function measuredCritical(observed, xAxis) {
+  return observed.map((curve) => ({
     ...curve, style: 'points', group: conditionKey(curve.groupValues), groupLabel: curve.label,
     styleLabel: `measured ${levelName(0.5, xAxis)}`,
     label: `measured ${levelName(0.5, xAxis)}${curve.label === 'all' ? '' : `, ${curve.label}`}` }));
 }
 
-function drawCritical(critical, view, measured, fitted) {
+function drawCritical(critical, view, observed, fitted) {
   const hasN = view.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) &&
     alongAxis(view.xAxis) !== 'primaries';
   critical.node.hidden = !hasN;
   if (!hasN) return;
   const speed = view.xAxis === 'impact_speed';
   critical.heading.textContent = `Critical ${speed ? 'speed' : axisLabel(view.xAxis)} of ${view.outcome} against N`;
-  const points = measuredCritical(measured, view.xAxis);
+  const points = measuredCritical(observed, view.xAxis);
   colourGroups([...points, ...fitted]);
   plotCurves(critical.chart, [...points, ...fitted], { xLabel: 'N (primaries)',
     yLabel: speed ? withUnit('critical speed', view.units.speed) : `critical ${shortAxisLabel(view.xAxis)}`,
@@ -130,20 +133,22 @@ function createOutcomePlots({ probability, critical }, correlationsPanel) {
       'measured, whiskers: 95 % interval');
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
-    const drawBoth = async (fitted, fittedCritical) => {
+    const drawBoth = async (fitted, fittedCritical, observed) => {
       plotCurves(probability.chart, [...measured, ...fitted, ...markers],
         { xLabel: view.xLabel, yLabel: `P(${view.outcome})`, bounds: kBounded });
       probability.chart.dataset.fitted = fitted.length;
       probability.chart.dataset.outcome = view.outcome;
       await nextTask();
-      if (mine === drawing) drawCritical(critical, view, measured, fittedCritical);
+      if (mine === drawing) drawCritical(critical, view, observed, fittedCritical);
     };
-    await drawBoth([], []);
+    await drawBoth([], [], []);
     if (mine !== drawing) return;
     correlationsPanel.draw(correlations, view);
     if (!correlations) return;
     const fitted = await correlations.fittedCurves(measured, view);
-    if (mine === drawing) await drawBoth(fitted, correlations.criticalCurves(view.outcome, view.xAxis, view.slice));
+    if (mine === drawing)
+      await drawBoth(fitted, correlations.criticalCurves(view.outcome, view.xAxis, view.slice),
+        correlations.observedCurves(view.outcome, view.xAxis, view.slice));
   };
 }
 
@@ -163,16 +168,16 @@ export function createPlots({ state }) {
   async function drawQuantities(grid, view, mine) {
     const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice };
     const charts = [
-      [retained.chart, 'retained_mass_fraction', 'retained mass fraction', kBounded],
-      [damage.chart, 'damage_ratio', 'damage ratio', kBounded],
-      [restitution.chart, 'restitution', 'normal restitution', null],
+      [retained.chart, 'retained_mass_fraction', 'retained mass fraction', kBounded, undefined],
+      [damage.chart, 'damage_ratio', 'damage ratio', kBounded, undefined],
+      [restitution.chart, 'restitution', 'normal restitution', null, kNoBounces],
     ];
-    for (const [chart, quantity, yLabel, bounds] of charts) {
+    for (const [chart, quantity, yLabel, bounds, empty] of charts) {
       await nextTask();
       if (mine !== drawing) return;
       const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
         'mean, whiskers: 95 % interval');
-      plotCurves(chart, curves, { xLabel: view.xLabel, yLabel, bounds });
+      plotCurves(chart, curves, { xLabel: view.xLabel, yLabel, bounds, empty });
     }
     await nextTask();
     if (mine !== drawing) return;

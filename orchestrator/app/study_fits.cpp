@@ -1,4 +1,4 @@
-#include "orchestrator/service/correlation_cache.hpp"
+#include "orchestrator/app/study_fits.hpp"
 
 #include <algorithm>
 #include <set>
@@ -80,6 +80,7 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
   const auto axes = study_axes(study);
   CorrelationRequest request;
   request.speed_axis = axis_setting(axes, kSpeedPointer);
+  request.size_axis = axis_setting(axes, kPrimariesPointer);
   if (covariates) {
     std::set<std::string> seen;
     for (const auto& name : *covariates) {
@@ -88,24 +89,19 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
     }
     return request;
   }
-  for (const auto& known : kKnownCovariates) {
-    const std::string axis = axis_setting(axes, known.pointer);
-    if (!axis.empty() && sweeps_several(study, axis)) request.covariates.push_back({axis, known.logarithmic});
-  }
-  return request;
-}
-
-CorrelationRequest export_correlation_request(const StudyRecord& study) {
-  CorrelationRequest request = correlation_request(study, std::nullopt);
-  const std::string size_axis = axis_setting(study_axes(study), kPrimariesPointer);
-  if (!size_axis.empty() && sweeps_several(study, size_axis)) request.size_axis = size_axis;
+  // By default the pooled models model the size only: every other axis splits them.
+  if (!request.size_axis.empty() && sweeps_several(study, request.size_axis)) request.covariates.push_back({request.size_axis, true});
   return request;
 }
 
 std::string request_key(const CorrelationRequest& request) {
   nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
   for (const auto& covariate : request.covariates) covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});
-  return nlohmann::ordered_json{{"covariates", covariates}}.dump();
+  return nlohmann::ordered_json{{"speed_axis", request.speed_axis},
+                                {"size_axis", request.size_axis},
+                                {"covariates", covariates},
+                                {"levels", request.levels}}
+      .dump();
 }
 
 CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {
@@ -131,24 +127,25 @@ CorrelationSet study_correlations(Store& store, const StudyRecord& study, const 
   return compute_correlations(table, request, provenance);
 }
 
-std::shared_ptr<std::mutex> CorrelationCache::study_lock(std::int64_t study_id) {
+std::shared_ptr<std::mutex> StudyFits::study_lock(std::int64_t study_id) {
   std::lock_guard lock(locks_mutex_);
   auto& entry = study_locks_[study_id];
   if (!entry) entry = std::make_shared<std::mutex>();
   return entry;
 }
 
-std::int64_t CorrelationCache::result_set_version(std::int64_t study_id) {
+std::int64_t StudyFits::result_set_version(std::int64_t study_id) {
   const auto versions = store_.study_versions(study_id);
   return versions ? versions->result_set : 0;
 }
 
-std::shared_ptr<const StoredCorrelations> CorrelationCache::current(const StudyRecord& study,
+std::shared_ptr<const StoredCorrelations> StudyFits::current(const StudyRecord& study,
                                                                    const CorrelationRequest& request) {
   const std::string key = request_key(request);
   if (auto kept = remembered(study.id, key, result_set_version(study.id))) return kept;
   auto stored = store_.stored_correlations(study.id, key);
   if (stored && stored->result_set_version == result_set_version(study.id)) return remember(study.id, key, *stored);
+  if (mode_ == Mode::read_only) return nullptr;
   const auto lock = study_lock(study.id);
   std::lock_guard guard(*lock);
   // Another request may have refitted while this one waited.
@@ -157,7 +154,7 @@ std::shared_ptr<const StoredCorrelations> CorrelationCache::current(const StudyR
   return remember(study.id, key, refit(study, request, key, stored));
 }
 
-std::shared_ptr<const StoredCorrelations> CorrelationCache::remembered(std::int64_t study_id, const std::string& key,
+std::shared_ptr<const StoredCorrelations> StudyFits::remembered(std::int64_t study_id, const std::string& key,
                                                                        std::int64_t version) const {
   std::lock_guard guard(memory_mutex_);
   const auto found = memory_.find({study_id, key});
@@ -165,7 +162,7 @@ std::shared_ptr<const StoredCorrelations> CorrelationCache::remembered(std::int6
   return found->second;
 }
 
-std::shared_ptr<const StoredCorrelations> CorrelationCache::remember(std::int64_t study_id, const std::string& key,
+std::shared_ptr<const StoredCorrelations> StudyFits::remember(std::int64_t study_id, const std::string& key,
                                                                     StoredCorrelations set) {
   auto kept = std::make_shared<const StoredCorrelations>(std::move(set));
   std::lock_guard guard(memory_mutex_);
@@ -174,7 +171,7 @@ std::shared_ptr<const StoredCorrelations> CorrelationCache::remember(std::int64_
   return kept;
 }
 
-StoredCorrelations CorrelationCache::refit(const StudyRecord& study, const CorrelationRequest& request,
+StoredCorrelations StudyFits::refit(const StudyRecord& study, const CorrelationRequest& request,
                                            const std::string& key, const std::optional<StoredCorrelations>& stored) {
   Provenance provenance{study.id, {}, 0, std::string(version())};
   const CaseOutcomeTable table = study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
@@ -191,6 +188,38 @@ StoredCorrelations CorrelationCache::refit(const StudyRecord& study, const Corre
   }
   store_.save_correlations(study.id, key, saved, fits);
   return *store_.stored_correlations(study.id, key);
+}
+
+}  // namespace aerobreak
+
+namespace aerobreak {
+
+std::shared_ptr<const CorrelationSet> StudyFits::logistic_fits(const StudyRecord& study) {
+  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  const auto stored = current(study, request);
+  if (!stored) return std::make_shared<const CorrelationSet>(study_correlations(store_, study, request));  // read_only, stale
+  {
+    std::lock_guard guard(memory_mutex_);
+    const auto found = read_back_.find({stored->set_id, stored->computed_at});
+    if (found != read_back_.end()) return found->second;
+  }
+  auto set = read_back(*stored, request);
+  std::lock_guard guard(memory_mutex_);
+  if (read_back_.size() >= kMaxRemembered) read_back_.clear();
+  read_back_[{stored->set_id, stored->computed_at}] = set;
+  return set;
+}
+
+std::shared_ptr<const CorrelationSet> StudyFits::read_back(const StoredCorrelations& stored, const CorrelationRequest& request) {
+  auto set = std::make_shared<CorrelationSet>();
+  set->request = request;
+  const auto summary = nlohmann::ordered_json::parse(stored.summary);
+  set->provenance = {summary.at("provenance").at("study"), stored.result_set_hash, stored.result_set_version,
+                     stored.aerobreak_version};
+  for (const auto& line : summary.at("fits"))
+    if (line.at("kind") == "logistic")
+      set->logistic.push_back(logistic_fit_from_json(nlohmann::ordered_json::parse(*store_.stored_fit(stored.set_id, line.at("name")))));
+  return set;
 }
 
 }  // namespace aerobreak

@@ -1,0 +1,24 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace aerobreak {
+
+// Units of the values a study or case writes (schemas/case.schema.json): SI for a physical case
+// ("units": "physical"), the reduced units d, m and tau = sqrt(m/k_n) otherwise (docs/MODEL.md 1.2).
+
+// The unit the case field at `pointer` is written in: "m/s" or "d/tau" for /impact/speed, "deg" for
+// /impact/angle, "Pa" for /material/youngs_modulus, "tau" for /model/damping/dissipative_time (in
+// both systems), ...; empty for a count, a ratio, a flag or a name (N, gamma/k_n, mu, a method).
+std::string case_field_unit(const std::string& pointer, bool physical);
+
+// The same for a study axis, by its name in the study (an alias such as "impact_speed", or a pointer),
+// in a unit system of study_units.hpp: "physical", "reduced", or "mixed" (an axis sets /units), where
+// only a unit both systems share is given.
+std::string study_axis_unit(const std::string& axis_name, const std::string& system);
+
+// The unit system of one grid point or fit group of a study in `study_system`: its "/units" where an
+// axis sets it, the study's otherwise.
+std::string point_unit_system(const nlohmann::ordered_json& axis_values, const std::string& study_system);
+
+}  // namespace aerobreak
