@@ -6,12 +6,14 @@
 For each store (one N) and wall: the adaptive search's v50 with its 95 % interval (Firth's fit and
 profile interval, docs/ADAPTIVE.md), the cases and the CPU seconds of their stepping (the sum of
 /run/cpu_seconds), the mean number of initial contacts N_c, E50/(N_c E_break) with its 95 % profile
-interval (the logistic fit in ln(E_kin/(N_c E_break)) of transition_fit.py, which sits beside this
-script), and the mobility-equivalent diameter d N^0.463 (free-molecular regime, docs/EXPORT.md
-section 2; in nm for the 20 nm primaries of the default material). Then, per wall, v50 = a N^b
-fitted by weighted least squares to ln v50 against ln N, each point weighted by its interval
-(sigma = (ln upper - ln lower) / (2 x 1.96)), with the 95 % interval of b (t quantile with n - 2
-degrees of freedom, the residual scatter taken when it exceeds the intervals').
+interval (the logistic fit of break-up in ln(E_kin/(N_c E_break)) that `aerobreak serve` computes
+for the store, asked as transition_fit.py, which sits beside this script, asks it; env AEROBREAK
+names the program, build/aerobreak by default), and the mobility-equivalent diameter d N^0.463
+(free-molecular regime, docs/EXPORT.md section 2; in nm for the 20 nm primaries of the default
+material). Then, per wall, v50 = a N^b fitted by weighted least squares to ln v50 against ln N,
+each point weighted by its interval (sigma = (ln upper - ln lower) / (2 x 1.96)), with the 95 %
+interval of b (t quantile with n - 2 degrees of freedom, the residual scatter taken when it exceeds
+the intervals').
 
 Python 3 standard library only.
 """
@@ -21,12 +23,14 @@ import math
 import os
 import sqlite3
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 spec = importlib.util.spec_from_file_location("transition_fit", os.path.join(HERE, "transition_fit.py"))
 transition_fit = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(transition_fit)
 
+AEROBREAK = os.environ.get("AEROBREAK", os.path.join(HERE, "..", "..", "build", "aerobreak"))
 PRIMARY_NM = 20.0
 T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447}
 
@@ -42,26 +46,36 @@ def groups_of(path):
 
 
 def results_of(path, wall):
-    """Per result of one wall: (energy per contact, break-up?, initial contacts, stepping CPU s)."""
+    """Per result of one wall: (initial contacts, stepping CPU s) of the settled ones."""
     db = sqlite3.connect(path)
     out = []
     for (document,) in db.execute("SELECT document FROM results"):
         d = json.loads(document)
         if d["case"]["wall"]["adhesive"] != wall or not d["run"]["settled"]:
             continue
-        out.append((d["dimensionless"]["energy_per_contact"], d["outcome"]["class"] == "break-up",
-                    d["contacts"]["initial"], d["run"]["cpu_seconds"]))
+        out.append((d["contacts"]["initial"], d["run"]["cpu_seconds"]))
     return out
 
 
-def energy_fit(results):
-    xs = [math.log(r[0]) for r in results]
-    ys = [1 if r[1] else 0 for r in results]
-    fit = transition_fit.fit(xs, ys)
-    if fit is None:
-        return None
-    x50, lower, upper = fit[0], fit[1], fit[2]
-    return math.exp(x50), math.exp(lower), math.exp(upper)
+def energy_fits(path):
+    """E50/(N_c E_break) with its 95 % interval per wall: the service's logistic fit of break-up in
+    log energy per contact (docs/CORRELATIONS.md), asked of `aerobreak serve` on the store."""
+    with tempfile.TemporaryDirectory() as folder:
+        process, url = transition_fit.serve(AEROBREAK, path, folder)
+        try:
+            summary = transition_fit.get(url + "/api/studies/1/correlations")
+        finally:
+            process.terminate()
+            process.wait()
+    out = {}
+    for f in summary["fits"]:
+        if (f["kind"] != "logistic" or f["response"] != "break-up" or f["dose"] != "energy_per_contact"
+                or f["pooled_over"] or f["status"] not in ("ok", "separation")):
+            continue
+        e50 = next(c for c in f["critical"] if c["level"] == 0.5)
+        if None not in e50["ci95"]:
+            out[f["group"]["/wall/adhesive"]] = (e50["estimate"], e50["ci95"][0], e50["ci95"][1])
+    return out
 
 
 def power_law(points):
@@ -89,12 +103,13 @@ def main(paths):
                                                              "d_mob d", "d_mob nm"))
     ladder = {True: [], False: []}
     for path in paths:
+        energies = energy_fits(path)
         for point, state, cases, v50, lower, upper in groups_of(path):
             n, wall = point["primaries"], point["/wall/adhesive"]
             results = results_of(path, wall)
-            cpu = sum(r[3] for r in results)
-            contacts = sum(r[2] for r in results) / len(results) if results else float("nan")
-            energy = energy_fit(results)
+            cpu = sum(r[1] for r in results)
+            contacts = sum(r[0] for r in results) / len(results) if results else float("nan")
+            energy = energies.get(wall)
             d_mob = n ** 0.463
             e_text = "%.2f [%.2f, %.2f]" % energy if energy else "-"
             v_text = "%.2f [%.2f, %.2f]" % (v50, lower, upper) if v50 else "-"
