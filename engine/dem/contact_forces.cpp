@@ -50,7 +50,7 @@ class ContactForcesFor final : public ContactForces {
     const Vec3 into_wall = -wall.normal;
     // Carried on from the ledger's sums, not started afresh: ranges add up as one pass would.
     DissipationTally tally = ledger.tally;
-    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals, ledger.drifted};
+    ContactLedger local{ledger.pool, tally, ledger.events, ledger.van_der_waals, ledger.drifted, ledger.timing_weight};
     double deepest = ledger.events.deepest_overlap_ratio;
     for (auto i = static_cast<std::uint32_t>(begin); i < end; ++i) {
       const double overlap = p.radius[i] - wall.gap(p.position[i]);
@@ -68,8 +68,9 @@ class ContactForcesFor final : public ContactForces {
         hand_over(local, -overlap, state.constants.radius, +1.0);
         // The overlap grew by dt times the approach rate in the drift that made the contact.
         if (ledger.drifted)
-          p.force[i] -=
-              formation_timing(state.constants, overlap - dt * dot(p.velocity[i], into_wall), overlap, dt) * into_wall;
+          p.force[i] -= formation_timing(state.constants, overlap - dt * dot(p.velocity[i], into_wall), overlap, dt,
+                                         local) *
+                        into_wall;
       }
       if (overlap < -ledger.pool.break_overlap(slot)) {
         p.force[i] -= close(slot, overlap, dot(p.velocity[i], into_wall), dt, local) * into_wall;
@@ -160,7 +161,8 @@ class ContactForcesFor final : public ContactForces {
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
     ContactPool& pool = pass.ledger.pool;
-    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted};
+    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted,
+                        pass.ledger.timing_weight};
     const std::size_t n = pairs.particles();
     for (std::uint32_t i = c.row; i < end; ++i) {
       if (i - c.reported >= completion_run) report_before(i, p, dt, pass, block, c);
@@ -202,7 +204,8 @@ class ContactForcesFor final : public ContactForces {
   // Evaluates the block and reports the particles before `row` complete.
   void report_before(std::size_t row, Particles& p, double dt, const Pass& pass, ContactBlock& block,
                      Cursor& c) const {
-    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted};
+    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals,
+                        pass.ledger.drifted, pass.ledger.timing_weight};
     finish_block(block, p, dt, local);
     pass.completed.complete(c.reported, row);
     c.reported = row;
@@ -340,7 +343,8 @@ class ContactForcesFor final : public ContactForces {
   // the normal force to zero to the crossing of the break overlap (event_timing.hpp).
   double close(std::int32_t& slot, double overlap, double approach_rate, double dt, ContactLedger& ledger) const {
     const ContactState state = ledger.pool.state(slot);
-    const double timing = ledger.drifted ? release_timing(state, overlap) : 0.0;
+    const double timing = ledger.drifted ? ledger.timing_weight * release_timing(state, overlap) : 0.0;
+    if (ledger.drifted) ledger.events.note_crossing(state.constants.break_overlap, state.overlap - overlap);
     model_.release(state, overlap, approach_rate, dt, ledger.tally);
     hand_over(ledger, -overlap, state.constants.radius, -1.0);
     ledger.pool.close(slot);
@@ -351,10 +355,13 @@ class ContactForcesFor final : public ContactForces {
 
   // Timing of the jump from no force to F(0) where the overlap crossed 0, between the overlaps
   // `before` and `after` of the drift that made the contact, with its second-order part.
-  double formation_timing(const ContactConstants& constants, double before, double after, double dt) const {
+  double formation_timing(const ContactConstants& constants, double before, double after, double dt,
+                          ContactLedger& ledger) const {
     const double jump = model_.normal.respond(0.0, constants).force;
     const double s = crossing_fraction(before, after, 0.0);
-    return jump_timing_force(jump, s) + formation_lag_force(jump, s, after - before, constants.mass, dt);
+    ledger.events.note_crossing(constants.break_overlap, after - before);
+    return ledger.timing_weight *
+           (jump_timing_force(jump, s) + formation_lag_force(jump, s, after - before, constants.mass, dt));
   }
 
   // Timing of the jump from F(-delta_b) to no force where the overlap crossed -delta_b, between
@@ -373,7 +380,7 @@ class ContactForcesFor final : public ContactForces {
     const double before = touching - norm(separation - dt * (p.velocity[j] - p.velocity[i]));
     const double after = touching - norm(separation);
     const Vec3 normal = separation * (1.0 / norm(separation));
-    const double timing = formation_timing(ledger.pool.state(slot).constants, before, after, dt);
+    const double timing = formation_timing(ledger.pool.state(slot).constants, before, after, dt, ledger);
     p.force[i] -= timing * normal;
     p.force[j] += timing * normal;
   }
@@ -413,6 +420,17 @@ DampingChoice choose_damping(const ContactModelSpec& spec) {
 }
 
 }  // namespace
+
+double zero_load_overlap(const ContactForces& law, const ContactConstants& c) {
+  if (law.normal_response(0.0, c).force >= 0.0) return 0.0;
+  double low = 0.0, high = std::max(c.critical_overlap, 1e-9 * c.radius);
+  for (int k = 0; k < 200 && law.normal_response(high, c).force <= 0.0; ++k) high *= 2.0;
+  for (int k = 0; k < 200 && high - low > 1e-15 * high; ++k) {
+    const double middle = 0.5 * (low + high);
+    (law.normal_response(middle, c).force > 0.0 ? high : low) = middle;
+  }
+  return 0.5 * (low + high);
+}
 
 std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal) {
   spec.validate();

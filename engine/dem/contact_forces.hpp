@@ -1,6 +1,8 @@
 #pragma once
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -20,6 +22,15 @@ struct ContactEvents {
   std::uint64_t broken = 0;
   // Deepest overlap seen, over R*: Hertz and JKR theory assume small strains (delta << R*).
   double deepest_overlap_ratio = 0.0;
+  // The fewest steps in which a contact that formed or let go would have crossed its break
+  // overlap delta_b at the speed it had then: delta_b over the overlap's change in the drift of
+  // the event (docs/MODEL.md 9.2 asks for steps_per_break_overlap); infinite while no contact with
+  // a tensile range has formed or let go.
+  double fewest_steps_per_break_overlap = std::numeric_limits<double>::infinity();
+  void note_crossing(double break_overlap, double travel) {
+    if (break_overlap > 0.0 && travel > 0.0)
+      fewest_steps_per_break_overlap = std::min(fewest_steps_per_break_overlap, break_overlap / travel);
+  }
 };
 
 // What one force pass reads and writes besides the particles.
@@ -32,6 +43,10 @@ struct ContactLedger {
   // forms or lets go crossed its threshold during that drift, and its force jump is timed to the
   // crossing (event_timing.hpp).
   bool drifted = true;
+  // Where the step changes after this force pass, its force acts for (dt + dt_next) / 2 instead
+  // of dt: the forces that time a jump (event_timing.hpp), meant as an impulse over dt, are
+  // weighted by 2 dt / (dt + dt_next).
+  double timing_weight = 1.0;
 };
 
 // Told by the pair loop which particles have received all their pair forces of the pass. The list
@@ -93,5 +108,9 @@ class ContactForces {
 
 // `normal` overrides spec.normal (walls without adhesion use Hertz with the particles' other laws).
 std::unique_ptr<ContactForces> make_contact_forces(const ContactModelSpec& spec, NormalLaw normal);
+
+// The overlap at which the elastic force of `law` vanishes for the completed constants `c`, by
+// bisection on the stable branch (0 for a law without adhesion, whose force vanishes at touching).
+double zero_load_overlap(const ContactForces& law, const ContactConstants& c);
 
 }  // namespace aerobreak

@@ -84,25 +84,28 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
     wall_slots_.emplace_back(particles_.size(), -1);
   }
 
-  if (settings_.time_step > 0.0) {
-    dt_ = settings_.time_step;
-    estimate_.time_step = dt_;
-  } else if (particles_.size() > 0) {
+  if (particles_.size() == 0 && !(settings_.time_step > 0.0))
+    throw std::invalid_argument("simulation: no particles and no time step");
+  // The automatic step at the speed scale; with a fixed step too, so that what depends on the
+  // contact period (an impact's settle window) does not depend on how the step was chosen.
+  if (!(settings_.time_step > 0.0)) {
     estimate_ = recommend_time_step(particles_, materials_, walls_, spec_, speed_scale(),
                                     {settings_.steps_per_period, settings_.steps_per_break_overlap});
-    dt_ = estimate_.time_step;
-  } else {
-    throw std::invalid_argument("simulation: no particles and no time step");
+  } else if (particles_.size() > 0) {
+    try {
+      estimate_ = recommend_time_step(particles_, materials_, walls_, spec_, speed_scale(),
+                                      {settings_.steps_per_period, settings_.steps_per_break_overlap});
+    } catch (const std::invalid_argument&) {
+      estimate_ = TimeStepEstimate{};  // a fixed step needs none
+    }
   }
+  dt_ = settings_.time_step > 0.0 ? settings_.time_step : estimate_.time_step;
+  limit_ = settings_.time_step > 0.0 ? TimeStepLimit::contact_period : estimate_.limit;
+  history_.choices = settings_.time_step > 0.0 ? 0 : 1;
 
-  // Automatic skin: a particle at the expected speed crosses half of it in about 20 steps, within
-  // [0.7, 1] smallest radius: a fractal cluster has few pairs per particle, so a wide skin is cheap
-  // (measured: rebuilds cost more than the extra pairs down to 0.7 R).
-  for (std::size_t i = 0; i < particles_.size(); ++i) {
-    half_step_per_mass_.push_back(0.5 * dt_ / particles_.mass[i]);
-    half_step_per_inertia_.push_back(0.5 * dt_ / particles_.inertia[i]);
-  }
-
+  // Automatic skin: a particle at the expected speed crosses half of it in about 20 steps of the
+  // step at the speed scale, within [0.7, 1] smallest radius: a fractal cluster has few pairs per
+  // particle, so a wide skin is cheap (measured: rebuilds cost more than the extra pairs down to 0.7 R).
   double skin = settings_.skin;
   if (skin <= 0.0 && particles_.size() > 0) {
     const double smallest = *std::min_element(particles_.radius.begin(), particles_.radius.end());
@@ -119,8 +122,39 @@ Simulation::Simulation(Particles particles, std::vector<Material> materials, std
     settings_.periodic->require_single_image(2.0 * largest + margin + skin);
   }
   neighbors_ = std::make_unique<VerletNeighborList>(std::move(search), margin, skin);
+  rebuild_neighbors();
+  start_step_chooser();
+  next_dt_ = dt_;
+  next_limit_ = limit_;
+  set_half_steps(dt_, half_step_per_mass_, half_step_per_inertia_);
   particles_.clear_forces();
-  compute_forces(true, settings_.initial_bond_gap, false);
+  compute_forces(false, settings_.initial_bond_gap, false);
+}
+
+// The step chosen from the speeds of the moment where there is an adhesion loop to resolve; the
+// first choice, from the initial velocities, is the first step.
+void Simulation::start_step_chooser() {
+  if (!settings_.adaptive_time_step || settings_.time_step > 0.0 || !(settings_.steps_per_break_overlap > 0.0) ||
+      settings_.body.langevin.enabled() || settings_.periodic)
+    return;
+  const BreakOverlaps overlaps = shortest_break_overlaps(particles_, materials_, walls_, spec_);
+  if (!(overlaps.pair > 0.0) && !(overlaps.wall > 0.0)) return;
+  chooser_ = std::make_unique<StepChooser>(estimate_.period / settings_.steps_per_period, overlaps,
+                                           settings_.steps_per_break_overlap, settings_.step_headroom);
+  const StepChooser::Choice choice =
+      chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin());
+  dt_ = choice.time_step;
+  limit_ = choice.limit;
+  choice_expires_ = time_ + choice.hold;
+}
+
+void Simulation::set_half_steps(double dt, std::vector<double>& per_mass, std::vector<double>& per_inertia) const {
+  per_mass.resize(particles_.size());
+  per_inertia.resize(particles_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    per_mass[i] = 0.5 * dt / particles_.mass[i];
+    per_inertia[i] = 0.5 * dt / particles_.inertia[i];
+  }
 }
 
 double Simulation::speed_scale() const {
@@ -173,56 +207,128 @@ void Simulation::step() { run(1); }
 // half kick of one step and the opening half kick of the next are done together (verlet_step).
 // Where the system is large enough, the wavefront runs several steps in one sweep over the data
 // with the same result to the last bit (wavefront.hpp).
-void Simulation::run(std::int64_t steps) {
-  if (steps <= 0) return;
-  ParticleDrift drift = kick_and_drift<1>(0, particles_.size());  // the first step's opening half kick and drift
+void Simulation::run(std::int64_t steps, double until) {
+  if (steps <= 0 || !(time_ < until)) return;
+  ParticleDrift drift = integrate<1>(0, particles_.size());  // the first step's opening half kick and drift
+  commit_step();
   wavefront_.begin_run();
-  for (std::int64_t done = 0; done < steps;) {
-    if (const std::int64_t taken = wavefront_.advance(*this, drift, done, steps)) {
+  for (std::int64_t done = 0; done < steps && time_ < until;) {
+    if (const std::int64_t taken = wavefront_.advance(*this, drift, steps - done, until)) {
       done += taken;
       continue;
     }
     ++done;
-    drift = verlet_step(drift, done < steps);
+    drift = verlet_step(drift, done < steps && time_ + dt_ < until);
   }
   kick();  // the last step's closing half kick
 }
 
+std::int64_t Simulation::steps_before(double until, std::int64_t most, bool& reaches) const {
+  double clock = time_;
+  for (std::int64_t k = 1; k <= most; ++k) {
+    clock += dt_;
+    if (!(clock < until)) {
+      reaches = true;
+      return k;
+    }
+  }
+  reaches = false;
+  return most;
+}
+
 // One step: the forces at the drifted positions (the neighbour list rebuilt first if a particle
-// may have left its skin); then, unless the run ends with this step, this step's closing half
-// kick, the next step's opening half kick and its drift, particle by particle as the force pass
-// completes each particle (ForcePass), with the force reset and the neighbour list's
-// displacement check: the particles' arrays are streamed once per step. The two half kicks are
-// two additions, rounded as two separate passes would round them.
-ParticleDrift Simulation::verlet_step(const ParticleDrift& drift, bool more) {
+// may have left its skin, and the step chosen again if the list was rebuilt or a velocity has
+// departed from the one the step was chosen for by more than it allows); then, unless the run
+// ends with this step, this step's closing half kick, the next step's opening half kick and its
+// drift, particle by particle as the force pass completes each particle (ForcePass), with the
+// force reset and the neighbour list's displacement check: the particles' arrays are streamed
+// once per step. The two half kicks are two additions, rounded as two separate passes would round
+// them; where the step changes, the closing one is of the old step and the opening one of the new.
+ParticleDrift Simulation::verlet_step(ParticleDrift& drift, bool more) {
+  prepare_forces(drift);
+  advance_clock();
+  const ParticleDrift next = compute_forces(false, 0.0, more);
+  if (more) commit_step();
+  return next;
+}
+
+// The drift just taken: the clock and the step history move on by its step.
+void Simulation::advance_clock() {
   time_ += dt_;
   ++steps_;
-  return compute_forces(drift.since_build2 > neighbors_->displacement_limit2(), 0.0, more);
+  history_.record(dt_, limit_);
+}
+
+// Before a step's forces (and before its drift is added to the clock): the neighbour list rebuilt
+// if a particle may have left its skin; the step chosen again at every rebuild (the new list may
+// hold pairs the last choice did not see), whenever a drift velocity has departed from the last
+// choice's by more than its budget, and when the last choice's hold has passed.
+void Simulation::prepare_forces(ParticleDrift& drift) {
+  bool rebuilt = false;
+  if (drift.since_build2 > neighbors_->displacement_limit2()) {
+    rebuild_neighbors();
+    drift.since_build2 = 0.0;
+    rebuilt = true;
+  }
+  if (chooser_ && (rebuilt || drift.departure2 > chooser_->budget2() || !(time_ < choice_expires_))) {
+    choose_step();
+    drift.departure2 = 0.0;
+  }
+}
+
+// The next drift's step from the velocities of the last one (StepChooser); the half kick that
+// opens it uses the new step, the one closing this step the old.
+void Simulation::choose_step() {
+  const StepChooser::Choice choice =
+      chooser_->choose(particles_, neighbors_->pairs(), walls_, neighbors_->built_at(), neighbors_->skin(), next_dt_);
+  ++history_.choices;
+  choice_expires_ = time_ + choice.hold;
+  next_limit_ = choice.limit;
+  if (choice.time_step == dt_ && next_dt_ == dt_) return;
+  next_dt_ = choice.time_step;
+  set_half_steps(next_dt_, next_half_step_per_mass_, next_half_step_per_inertia_);
+}
+
+// The opening half kick and the drift of the next step have been taken: its step is the step.
+void Simulation::commit_step() {
+  limit_ = next_limit_;
+  if (!switching_step()) return;
+  dt_ = next_dt_;
+  half_step_per_mass_.swap(next_half_step_per_mass_);
+  half_step_per_inertia_.swap(next_half_step_per_inertia_);
 }
 
 void Simulation::ForcePass::complete(std::size_t begin, std::size_t end) {
   Simulation& s = sim_;
   for (std::size_t w = 0; w < s.walls_.size(); ++w) {
     const VanDerWaals* long_range = s.spec_.van_der_waals && s.walls_[w].adhesive ? &s.spec_.hamaker : nullptr;
-    s.wall_forces_[w]->add_wall_forces(s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w],
-                                       s.materials_, s.dt_, begin, end,
-                                       {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range, step_ > 0});
+    s.wall_forces_[w]->add_wall_forces(
+        s.particles_, s.walls_[w], static_cast<std::uint32_t>(w), s.wall_slots_[w], s.materials_, s.dt_, begin, end,
+        {s.wall_pool_, wall_tally_[w], s.wall_events_, long_range, step_ > 0, s.timing_weight()});
   }
   if (!finish_) return;
   add_body_forces(s.particles_, s.settings_.body, step_, s.dt_, begin, end, body_work_);
-  if (integrate_) drift_.merge(s.kick_and_drift<2>(begin, end));
+  if (integrate_) drift_.merge(s.integrate<2>(begin, end));
 }
 
-// `Kicks` half kicks of the particles begin .. end-1 with their current forces, a drift over
-// dt, and their forces cleared for the next evaluation; returns how far they have now moved since
-// the neighbour list was built, and in this drift (the largest of each).
-template <int Kicks>
+// `Kicks` half kicks of the particles begin .. end-1 with their current forces (two: the closing
+// one of the step just computed and the opening one of the next; one: the opening one), a drift
+// over the next step, and their forces cleared for the next evaluation; returns how far they have
+// now moved since the neighbour list was built, and in this drift (the largest of each), and with
+// `Watch` how far their drift velocities have departed from those the step was chosen for.
+template <int Kicks, bool Watch>
 ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   Particles& p = particles_;
   const std::vector<Vec3>& built_at = neighbors_->built_at();
   if (built_at.size() != p.size()) throw std::logic_error("simulation: neighbour list built for other particles");
   ParticleDrift drift;
-  const double dt = dt_;
+  const double dt = next_dt_;
+  const double* closing_mass = half_step_per_mass_.data();
+  const double* closing_inertia = half_step_per_inertia_.data();
+  const bool switching = switching_step();
+  const double* opening_mass = switching ? next_half_step_per_mass_.data() : closing_mass;
+  const double* opening_inertia = switching ? next_half_step_per_inertia_.data() : closing_inertia;
+  const Vec3* reference = Watch ? chooser_->reference().data() : nullptr;
   // Locals, not the arrays: the stores to one array would otherwise make the compiler read the
   // others again (they all hold doubles).
   for (std::size_t i = begin; i < end; ++i) {
@@ -230,7 +336,8 @@ ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
     Vec3 spin = p.angular_velocity[i];
     const Vec3 force = p.force[i];
     const Vec3 torque = p.torque[i];
-    for (int k = 0; k < Kicks; ++k) half_kick(i, velocity, spin, force, torque);
+    if constexpr (Kicks == 2) half_kick(i, velocity, spin, force, torque, closing_mass, closing_inertia);
+    half_kick(i, velocity, spin, force, torque, opening_mass, opening_inertia);
     const Vec3 step = dt * velocity;
     const Vec3 position = p.position[i] + step;
     p.velocity[i] = velocity;
@@ -240,13 +347,16 @@ ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
     p.torque[i] = Vec3{};
     drift.since_build2 = std::max(drift.since_build2, norm2(position - built_at[i]));
     drift.last_step2 = std::max(drift.last_step2, norm2(step));
+    if constexpr (Watch) drift.departure2 = std::max(drift.departure2, norm2(velocity - reference[i]));
   }
   return drift;
 }
 
 void Simulation::kick() {
   Particles& p = particles_;
-  for (std::size_t i = 0; i < p.size(); ++i) half_kick(i, p.velocity[i], p.angular_velocity[i], p.force[i], p.torque[i]);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    half_kick(i, p.velocity[i], p.angular_velocity[i], p.force[i], p.torque[i], half_step_per_mass_.data(),
+              half_step_per_inertia_.data());
 }
 
 // The forces at the current positions, which must have been cleared; with `integrate`, the
@@ -262,7 +372,7 @@ ParticleDrift Simulation::compute_forces(bool rebuild, double formation_gap, boo
   ForcePass pass(*this, !long_range_pass, integrate, steps_);
   const VanDerWaals* long_range = long_range_pass ? &spec_.hamaker : nullptr;
   // The first evaluation of a run (step 0) follows no drift: its contacts crossed nothing.
-  add_pair_forces(formation_gap, {{{pair_pool_, tally_, pair_events_, long_range, steps_ > 0}, pass}});
+  add_pair_forces(formation_gap, {{{pair_pool_, tally_, pair_events_, long_range, steps_ > 0, timing_weight()}, pass}});
   pass.book(tally_, external_work_);
   if (!long_range_pass) return pass.drift();
   if (settings_.periodic)
@@ -272,7 +382,7 @@ ParticleDrift Simulation::compute_forces(bool rebuild, double formation_gap, boo
   double work = 0.0;
   add_body_forces(particles_, settings_.body, steps_, dt_, 0, particles_.size(), work);
   external_work_ += work;
-  return integrate ? kick_and_drift<2>(0, particles_.size()) : ParticleDrift{};
+  return integrate ? this->integrate<2>(0, particles_.size()) : ParticleDrift{};
 }
 
 // The pair loop over the listed pairs, compiled for open space or for the periodic box.
@@ -383,6 +493,23 @@ EnergyBudget Simulation::energy() const {
   e.dissipation = tally_;
   e.external_work = external_work_;
   return e;
+}
+
+Simulation::ContactReserve Simulation::contact_reserve(const ContactState& contact) const {
+  const ContactForces& law = contact.with_wall ? *wall_forces_.at(contact.j) : *pair_forces_;
+  const ContactConstants& c = contact.constants;
+  if (last_rest_.law != &law || !(last_rest_.constants == c))
+    last_rest_ = {&law, c, law.normal_response(zero_load_overlap(law, c), c).energy};
+  const double rest = last_rest_.energy;
+  return {law.stored_energy(contact) - rest, law.normal_response(-c.break_overlap, c).energy - rest};
+}
+
+double Simulation::wall_loop_energy(std::size_t i, std::size_t w) const {
+  const ContactForces& law = *wall_forces_.at(w);
+  const PairMaterial& material = materials_.pair(particles_.material[i], walls_[w].material);
+  ContactConstants c = sphere_wall_constants(particles_.radius[i], particles_.mass[i], material);
+  law.complete(c);
+  return law.normal_response(-c.break_overlap, c).energy - law.normal_response(0.0, c).energy;
 }
 
 }  // namespace aerobreak

@@ -138,6 +138,23 @@ void shortest_crossing(const std::vector<Probe>& probes, std::size_t particles, 
 
 }  // namespace
 
+BreakOverlaps shortest_break_overlaps(const Particles& p, const MaterialTable& materials,
+                                      const std::vector<Wall>& walls, const ContactModelSpec& spec) {
+  BreakOverlaps shortest;
+  if (p.size() == 0) return shortest;
+  const ProbeSet set = probes_of(p, materials, walls, spec, 0.0);
+  for (const Probe& probe : set.probes) {
+    const double range = probe.constants.break_overlap;
+    if (!(range > 0.0) || (probe.between_particles && p.size() < 2)) continue;
+    double& bound = probe.between_particles ? shortest.pair : shortest.wall;
+    bound = bound > 0.0 ? std::min(bound, range) : range;
+    const ContactConstants& c = probe.constants;
+    double& speed = probe.between_particles ? shortest.pair_adhesion_speed : shortest.wall_adhesion_speed;
+    speed = std::max(speed, std::sqrt(2.0 * c.pull_off_force * c.critical_overlap / c.mass));
+  }
+  return shortest;
+}
+
 const char* time_step_limit_name(TimeStepLimit limit) {
   return limit == TimeStepLimit::break_overlap ? "break_overlap" : "contact_period";
 }

@@ -52,4 +52,19 @@ TimeStepEstimate recommend_time_step(const Particles& particles, const MaterialT
                                      const std::vector<Wall>& walls, const ContactModelSpec& spec, double max_speed,
                                      const TimeStepFactors& factors = {});
 
+// The shortest break overlap delta_b of a contact the run can make between particles and with a
+// wall (the same probes as recommend_time_step: spheres of extreme radius, every material pair);
+// 0 where no such contact has a tensile range (Hertz, DMT, a single particle, no wall). With each,
+// the largest adhesion speed (2 F_c delta_c / m*)^(1/2) of those contacts, the speed whose kinetic
+// energy is the adhesion loop's scale (the sticking speed is 0.97 of it by the displacement rule,
+// 0.68 by the force rule; docs/MODEL.md 3.4).
+struct BreakOverlaps {
+  double pair = 0.0;
+  double wall = 0.0;
+  double pair_adhesion_speed = 0.0;
+  double wall_adhesion_speed = 0.0;
+};
+BreakOverlaps shortest_break_overlaps(const Particles& particles, const MaterialTable& materials,
+                                      const std::vector<Wall>& walls, const ContactModelSpec& spec);
+
 }  // namespace aerobreak

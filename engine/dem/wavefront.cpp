@@ -8,25 +8,31 @@
 
 namespace aerobreak {
 
-std::int64_t Wavefront::advance(Simulation& sim, ParticleDrift& drift, std::int64_t done, std::int64_t steps) {
-  const std::int64_t wanted = done < one_by_one_until_ ? 1 : std::min({deepest(sim), cap_, steps - done});
+std::int64_t Wavefront::advance(Simulation& sim, ParticleDrift& drift, std::int64_t left, double until) {
+  const std::int64_t wanted = left > one_by_one_left_ ? 1 : std::min({deepest(sim), cap_, left});
   if (wanted <= 1) return 0;
   // Rebuilt early rather than run a wavefront of less than half the passes a fresh list allows;
-  // not in a periodic box, where rebuilds wrap the positions (and so round them differently).
-  const bool early =
-      !sim.settings_.periodic && 2 * room(sim, drift.since_build2, drift, wanted) < room(sim, 0.0, drift, wanted);
-  if (drift.since_build2 > sim.neighbors_->displacement_limit2() || early) {
-    sim.rebuild_neighbors();
-    drift.since_build2 = 0.0;
-  }
-  const std::int64_t depth = room(sim, drift.since_build2, drift, wanted);
+  // not in a periodic box, where rebuilds wrap the positions (and so round them differently), nor
+  // where the step is chosen at every rebuild: the steps would then differ from single steps.
+  const bool early = !sim.settings_.periodic && !sim.chooser_ &&
+                     2 * room(sim, drift.since_build2, drift, wanted) < room(sim, 0.0, drift, wanted);
+  if (early) drift.since_build2 = std::numeric_limits<double>::infinity();
+  sim.prepare_forces(drift);
+  // The step changes with the next drift: that step's half kicks differ, so it runs alone.
+  if (sim.switching_step()) return 0;
+  // No pass after the first may be one at which a single step would choose the step again: the
+  // pass k (k >= 1) whose clock, k steps on, reaches the end of the choice's hold.
+  bool expires = false, reaches = false;
+  const std::int64_t fits = room(sim, drift.since_build2, drift, wanted);
+  const std::int64_t held = sim.steps_before(sim.choice_expires(), fits, expires);
+  const std::int64_t depth = sim.steps_before(until, held, reaches);
   if (depth <= 1) return 0;
-  if (const std::optional<ParticleDrift> next = run(sim, static_cast<int>(depth), done + depth < steps)) {
+  if (const std::optional<ParticleDrift> next = run(sim, static_cast<int>(depth), depth < left && !reaches)) {
     drift = *next;
     cap_ = std::min(2 * cap_, deepest(sim));
     return depth;
   }
-  one_by_one_until_ = done + depth;
+  one_by_one_left_ = left - depth;
   cap_ = std::max<std::int64_t>(2, depth / 2);
   return 0;
 }
@@ -65,16 +71,18 @@ std::optional<ParticleDrift> Wavefront::run(Simulation& sim, int depth, bool int
     list.push_back({{sim.pair_pool_, pair_tally[k], sim.pair_events_, nullptr}, passes.back()});
   }
   sim.add_pair_forces(0.0, list);
+  // A pass after which the list had to be rebuilt, or the step chosen again, ran on a list or a
+  // step that single steps would not have used.
   const double limit2 = sim.neighbors_->displacement_limit2();
+  const double budget2 = sim.chooser_ ? sim.chooser_->budget2() : std::numeric_limits<double>::infinity();
   for (int k = 0; k + 1 < depth; ++k)
-    if (passes[k].drift().since_build2 > limit2) {
+    if (passes[k].drift().since_build2 > limit2 || passes[k].drift().departure2 > budget2) {
       restore(sim);
       ++undone_;
       return std::nullopt;
     }
   for (int k = 0; k < depth; ++k) {
-    sim.time_ += sim.dt_;
-    ++sim.steps_;
+    sim.advance_clock();
     sim.tally_ += pair_tally[k];
     passes[k].book(sim.tally_, sim.external_work_);
   }

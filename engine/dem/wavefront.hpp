@@ -29,11 +29,12 @@ class Wavefront {
   explicit Wavefront(Settings settings) : settings_(settings) {}
 
   // At the start of every Simulation::run.
-  void begin_run() { one_by_one_until_ = 0; }
-  // Step `done` of a run of `steps`: runs the next steps as one wavefront where it can and returns
-  // how many it ran (0: none, the caller takes one plain step). It may rebuild the neighbour list
-  // first; `drift` follows the particles either way.
-  std::int64_t advance(Simulation& sim, ParticleDrift& drift, std::int64_t done, std::int64_t steps);
+  void begin_run() { one_by_one_left_ = std::numeric_limits<std::int64_t>::max(); }
+  // With at most `left` steps of a run to go, and the run to stop at the clock `until`: runs the
+  // next steps as one wavefront where it can and returns how many it ran (0: none, the caller
+  // takes one plain step). It may rebuild the neighbour list and choose the step first (as the
+  // plain step would); `drift` follows the particles either way.
+  std::int64_t advance(Simulation& sim, ParticleDrift& drift, std::int64_t left, double until);
 
   std::uint64_t steps() const { return steps_; }    // steps run in wavefronts
   std::uint64_t undone() const { return undone_; }  // wavefronts undone (their steps ran one at a time)
@@ -60,7 +61,9 @@ class Wavefront {
   std::uint64_t undone_ = 0;
   // Deepest wavefront to try next: halved when one is undone, doubled again after one that is not.
   std::int64_t cap_ = std::numeric_limits<std::int32_t>::max();
-  std::int64_t one_by_one_until_ = 0;  // after a wavefront that was undone, its steps one at a time
+  // After a wavefront that was undone, its steps one at a time: while more than this many steps of
+  // the run are left.
+  std::int64_t one_by_one_left_ = std::numeric_limits<std::int64_t>::max();
 };
 
 }  // namespace aerobreak

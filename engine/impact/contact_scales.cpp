@@ -10,19 +10,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The overlap at which the elastic force vanishes, by bisection on the stable branch (0 for a
-// law without adhesion, whose force vanishes at touching).
-double zero_load_overlap(const ContactForces& law, const ContactConstants& c) {
-  if (law.normal_response(0.0, c).force >= 0.0) return 0.0;
-  double low = 0.0, high = std::max(c.critical_overlap, 1e-9 * c.radius);
-  for (int k = 0; k < 200 && law.normal_response(high, c).force <= 0.0; ++k) high *= 2.0;
-  for (int k = 0; k < 200 && high - low > 1e-15 * high; ++k) {
-    const double middle = 0.5 * (low + high);
-    (law.normal_response(middle, c).force > 0.0 ? high : low) = middle;
-  }
-  return 0.5 * (low + high);
-}
-
 // Contact radius over R* at `overlap_ratio` (overlap over R*) for the completed constants `c`.
 double contact_radius_over_reduced(const ContactForces& law, const ContactConstants& c, double overlap_ratio) {
   return law.normal_response(overlap_ratio * c.radius, c).contact_radius / c.radius;

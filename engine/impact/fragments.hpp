@@ -26,8 +26,14 @@ struct Fragment {
   double radius_of_gyration = 0.0;  // of the primaries' centres, mass-weighted
   double bounding_radius = 0.0;  // largest |x_i - x_cm| + r_i
   std::uint32_t first_primary = 0;  // lowest particle index in it (a stable name)
+  // Fates foreseen by the fates-fixed rule (docs/IMPACT.md section 4): off the wall now, it lands
+  // on an adhesive wall and stays there (counted on the wall), or it bounces off a wall without
+  // adhesion (counted off it).
+  bool landing = false;
+  bool bouncing = false;
 
-  bool on_wall() const { return wall_contacts > 0; }
+  // Touches the wall, or lands on it and stays.
+  bool on_wall() const { return wall_contacts > 0 || landing; }
 };
 
 struct FragmentAnalysis {

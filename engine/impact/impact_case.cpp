@@ -230,6 +230,7 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   }
   c.snapshot_interval = run.value("snapshot_interval", 0.0);
   c.time_step = run.value("time_step", 0.0);
+  c.adaptive_time_step = run["adaptive_time_step"].get<bool>();
   c.steps_per_period = run["steps_per_period"].get<double>();
   c.steps_per_break_overlap = run["steps_per_break_overlap"].get<double>();
   c.settle.quiet_window = run["settle"].value("quiet_window", 0.0);

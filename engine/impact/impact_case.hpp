@@ -59,6 +59,7 @@ struct ImpactCase {
   double time_limit = 0.0;         // tau (given as /run/time_limit, or /run/time_limit_s over tau)
   double snapshot_interval = 0.0;  // tau; 0: first and last frames only
   double time_step = 0.0;          // tau; 0: automatic
+  bool adaptive_time_step = true;  // automatic: chosen again from the speeds of the moment (MODEL.md 9.2)
   double steps_per_period = 50.0;
   double steps_per_break_overlap = 10.0;
   SettleCriteria settle;

@@ -40,6 +40,7 @@ void record_run(PreparedImpact& prepared, const SettleMonitor& monitor, const El
   r.particle_steps_per_second = stepping.wall_seconds > 0.0 ? particle_steps / stepping.wall_seconds : 0.0;
   r.particle_steps_per_cpu_second = stepping.cpu_seconds > 0.0 ? particle_steps / stepping.cpu_seconds : 0.0;
   r.neighbor_builds = sim.neighbor_builds();
+  r.step_history = sim.step_history();
   r.pair_events = sim.pair_events();
   r.pair_events.made -= prepared.pair_start.made;
   r.pair_events.broken -= prepared.pair_start.broken;

@@ -63,6 +63,8 @@ Json fragment(const Fragment& f, const Vec3* mean_velocity, const Vec3& wall_nor
           {"mean_velocity", mean_velocity ? vector(*mean_velocity) : Json(nullptr)},
           {"mean_normal_velocity", mean_velocity ? number(dot(*mean_velocity, wall_normal)) : Json(nullptr)},
           {"on_wall", f.on_wall()},
+          {"landing", f.landing},
+          {"bouncing", f.bouncing},
           {"wall_contacts", f.wall_contacts},
           {"lowest_gap", number(f.lowest_gap)},
           {"radius_of_gyration", number(f.radius_of_gyration)},
@@ -157,12 +159,32 @@ Json setup_json(const ImpactResult& r) {
           {"contact_energies", contact_energies_json(r.contact_energies)}};
 }
 
+const char* time_step_source(const ImpactResult& r) {
+  if (r.impact_case.time_step > 0.0) return "fixed";
+  return r.adaptive_time_step ? "adaptive" : "automatic";
+}
+
+// The steps the run took (docs/MODEL.md 9.2) and how well its contact events were resolved.
+Json step_history_json(const ImpactResult& r) {
+  const StepHistory& h = r.step_history;
+  return {{"shortest", number(h.shortest)},
+          {"longest", number(h.longest)},
+          {"mean", number(h.mean())},
+          {"steps_at_contact_period", h.contact_period_steps},
+          {"steps_at_break_overlap", h.break_overlap_steps},
+          {"choices", h.choices},
+          {"fewest_steps_per_break_overlap",
+           {{"pairs", number(r.pair_events.fewest_steps_per_break_overlap)},
+            {"wall", number(r.wall_events.fewest_steps_per_break_overlap)}}}};
+}
+
 Json run_json(const ImpactResult& r) {
   const ImpactCase& c = r.impact_case;
   const TimeStepEstimate& est = r.time_step_estimate;
   return {{"time_step", number(r.time_step)},
-          {"time_step_source", c.time_step > 0.0 ? "fixed" : "automatic"},
-          {"time_step_estimate", {{"limit", c.time_step > 0.0 ? Json(nullptr) : Json(time_step_limit_name(est.limit))},
+          {"time_step_source", time_step_source(r)},
+          {"time_step_history", step_history_json(r)},
+          {"time_step_estimate", {{"limit", est.period > 0.0 ? Json(time_step_limit_name(est.limit)) : Json(nullptr)},
                                   {"period", number(est.period)},
                                   {"stiffness", number(est.stiffness)},
                                   {"mass", number(est.mass)},
@@ -374,8 +396,13 @@ std::string describe_setup(const ImpactResult& r) {
   const double scale = e.pull_off_force * e.critical_overlap;
   return "time unit tau = sqrt(m/k_n)" + si(1.0, time_unit, "s") + "\n" +
          formatted("time step %.6g tau", r.time_step) + si(r.time_step, time_unit, "s") +
-         formatted(" (%s, %.4g steps per contact period)\n", c.time_step > 0.0 ? "fixed" : "automatic",
-                   r.time_step_estimate.steps_per_period) +
+         (r.adaptive_time_step
+              ? formatted(" (adaptive: chosen again from the speeds of the moment, at most %.6g tau, %.4g steps per "
+                          "contact period)\n",
+                          r.time_step_estimate.period / r.time_step_estimate.steps_per_period,
+                          r.time_step_estimate.steps_per_period)
+              : formatted(" (%s, %.4g steps per contact period)\n", time_step_source(r),
+                          r.time_step_estimate.steps_per_period)) +
          formatted("lambda (eq 19) = %.6g\n", lambda(c)) +
          formatted("N = %zu primaries, N_c = %zu initial contacts, coordination %.4g, filling factor %.4g\n",
                    r.primaries, r.initial_contacts, r.before.coordination, r.before.filling_factor) +

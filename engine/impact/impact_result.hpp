@@ -7,6 +7,7 @@
 #include "engine/cluster/rotation.hpp"
 #include "engine/dem/contact_forces.hpp"
 #include "engine/dem/energy_budget.hpp"
+#include "engine/dem/step_chooser.hpp"
 #include "engine/dem/time_step.hpp"
 #include "engine/impact/contact_scales.hpp"
 #include "engine/impact/fragments.hpp"
@@ -50,8 +51,10 @@ struct ImpactResult {
   EnergyGroups energy_groups;          // E_kin / (N_c E_break), E_kin / E_roll
 
   // Run
-  TimeStepEstimate time_step_estimate;
-  double time_step = 0.0;
+  TimeStepEstimate time_step_estimate;  // the automatic step at the impact speed (also for a fixed step)
+  double time_step = 0.0;               // the first step
+  bool adaptive_time_step = false;      // chosen again during the run from the speeds of the moment
+  StepHistory step_history;
   std::int64_t steps = 0;
   double simulated_time = 0.0;
   bool settled = false;

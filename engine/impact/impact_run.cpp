@@ -176,6 +176,7 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
 
   SimulationSettings settings;
   settings.time_step = c.time_step;
+  settings.adaptive_time_step = c.adaptive_time_step;
   settings.steps_per_period = c.steps_per_period;
   settings.steps_per_break_overlap = c.steps_per_break_overlap;
   settings.speed_scale = c.speed;
@@ -187,6 +188,7 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
   const Simulation& sim = *prepared.simulation;
   r.time_step = sim.time_step();
   r.time_step_estimate = sim.time_step_estimate();
+  r.adaptive_time_step = sim.adaptive_time_step();
   r.initial_energy = sim.energy();
   prepared.initial_contacts = contact_pairs(sim);
   r.initial_contacts = prepared.initial_contacts.size();  // no wall contact yet: the cluster is `gap` above
@@ -206,12 +208,9 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
 }
 
 ImpactSchedule impact_schedule(const ImpactResult& r, std::size_t particles) {
-  const ImpactCase& c = r.impact_case;
-  const double dt = r.time_step;
   ImpactSchedule s;
-  s.limit_steps = static_cast<std::int64_t>(std::ceil(c.time_limit / dt - 1e-9));
-  s.check_steps = std::max<std::int64_t>(1, static_cast<std::int64_t>(r.quiet_window / dt / 20.0));
-  s.snapshot_steps = c.snapshot_interval > 0.0 ? std::max<std::int64_t>(1, std::llround(c.snapshot_interval / dt)) : 0;
+  s.check_interval = r.quiet_window / 20.0;
+  s.snapshot_interval = r.impact_case.snapshot_interval;
   s.progress_steps = std::max<std::int64_t>(1, 1'000'000 / static_cast<std::int64_t>(particles));
   return s;
 }
@@ -220,8 +219,8 @@ ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monito
   ImpactResult& r = prepared.result;
   Simulation& sim = *prepared.simulation;
   const ImpactSchedule schedule = impact_schedule(r, sim.particles().size());
-  SnapshotObserver snapshots(options.snapshot, schedule.snapshot_steps, sim.step_count());
-  SettleObserver settle(monitor, schedule.check_steps, sim.step_count());
+  SnapshotObserver snapshots(options.snapshot, schedule.snapshot_interval, sim.time());
+  SettleObserver settle(monitor, schedule.check_interval, sim.time());
   snapshots.take(sim);
   monitor.update(sim);
   const RunClock clock;
@@ -229,7 +228,7 @@ ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monito
                             schedule.progress_steps, sim.step_count());
   std::vector<StepObserver*> observers{&snapshots, &settle};
   if (options.progress) observers.push_back(&progress);
-  run_observed(sim, schedule.limit_steps, observers);
+  run_observed(sim, r.impact_case.time_limit, observers);
   const ElapsedTimes times = clock.elapsed();
   snapshots.take(sim);
   r.snapshots = snapshots.taken();

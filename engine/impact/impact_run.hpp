@@ -52,13 +52,12 @@ struct PreparedImpact {
 // with every primary at the impact velocity and builds the simulation (docs/IMPACT.md section 3).
 PreparedImpact prepare_impact(const ImpactCase& impact_case, const ImpactRunOptions& options = {});
 
-// How often a running impact is looked at, in steps: the time limit, the settle check (20 times
-// per quiet window), snapshots (the case's interval; 0: none) and progress (about every 10^6
-// particle-steps).
+// How often a running impact is looked at: the settle check 20 times per quiet window and
+// snapshots at the case's interval (0: none), in simulated time, the same whatever the steps;
+// progress about every 10^6 particle-steps. The run ends at the case's time limit.
 struct ImpactSchedule {
-  std::int64_t limit_steps = 0;
-  std::int64_t check_steps = 0;
-  std::int64_t snapshot_steps = 0;
+  double check_interval = 0.0;
+  double snapshot_interval = 0.0;
   std::int64_t progress_steps = 0;
 };
 ImpactSchedule impact_schedule(const ImpactResult& prepared, std::size_t particles);

@@ -9,30 +9,37 @@
 
 namespace aerobreak {
 
-bool run_observed(Simulation& simulation, std::int64_t limit_steps, const std::vector<StepObserver*>& observers) {
-  while (simulation.step_count() < limit_steps) {
-    std::int64_t until = limit_steps;
-    for (const StepObserver* o : observers) until = std::min(until, o->next_step());
-    if (until <= simulation.step_count()) throw std::logic_error("run_observed: an observer asks for a past step");
-    simulation.run(until - simulation.step_count());
+bool StepObserver::due(const Simulation& simulation) const {
+  return next_step() <= simulation.step_count() || next_time() <= simulation.time();
+}
+
+bool run_observed(Simulation& simulation, double time_limit, const std::vector<StepObserver*>& observers) {
+  while (simulation.time() < time_limit) {
+    std::int64_t step = std::numeric_limits<std::int64_t>::max();
+    double until = time_limit;
+    for (const StepObserver* o : observers) {
+      if (o->due(simulation)) throw std::logic_error("run_observed: an observer asks for a past moment");
+      step = std::min(step, o->next_step());
+      until = std::min(until, o->next_time());
+    }
+    simulation.run(step - simulation.step_count(), until);
     for (StepObserver* o : observers)
-      if ((o->next_step() == simulation.step_count() || o->looks_at_every_stop()) && o->observe(simulation))
-        return true;
+      if ((o->due(simulation) || o->looks_at_every_stop()) && o->observe(simulation)) return true;
   }
   return false;
 }
 
-IntervalObserver::IntervalObserver(std::int64_t interval, std::int64_t start)
-    : interval_(interval), next_(interval > 0 ? start + interval : std::numeric_limits<std::int64_t>::max()) {
-  if (interval < 0) throw std::invalid_argument("observer: the interval must be >= 0");
+IntervalObserver::IntervalObserver(double interval, double start)
+    : interval_(interval), next_(interval > 0.0 ? start + interval : std::numeric_limits<double>::infinity()) {
+  if (!(interval >= 0.0)) throw std::invalid_argument("observer: the interval must be >= 0");
 }
 
 bool IntervalObserver::observe(const Simulation& simulation) {
-  next_ += interval_;
+  while (next_ <= simulation.time()) next_ += interval_;
   return look(simulation);
 }
 
-SnapshotObserver::SnapshotObserver(Callback callback, std::int64_t interval, std::int64_t start)
+SnapshotObserver::SnapshotObserver(Callback callback, double interval, double start)
     : IntervalObserver(interval, start), callback_(std::move(callback)) {}
 
 void SnapshotObserver::take(const Simulation& simulation) {
@@ -47,7 +54,7 @@ bool SnapshotObserver::look(const Simulation& simulation) {
   return false;
 }
 
-SettleObserver::SettleObserver(SettleMonitor& monitor, std::int64_t interval, std::int64_t start)
+SettleObserver::SettleObserver(SettleMonitor& monitor, double interval, double start)
     : IntervalObserver(interval, start), monitor_(monitor) {}
 
 bool SettleObserver::look(const Simulation& simulation) { return monitor_.update(simulation); }

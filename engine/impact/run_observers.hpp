@@ -10,49 +10,57 @@ namespace aerobreak {
 class Simulation;
 class SettleMonitor;
 
-// Something that looks at a running simulation at steps of its own choosing (run_observed).
+// Something that looks at a running simulation at moments of its own choosing (run_observed): at a
+// step count, or at the first step that brings the simulated time to a moment or past it (the
+// step changes during a run: docs/MODEL.md 9.2).
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
-  // The step count at which it next wants to look; must lie ahead of the simulation's.
-  virtual std::int64_t next_step() const = 0;
-  // Looks at the simulation at that step; true stops the run.
+  // The step count at which it next wants to look (none: the largest count); ahead of the
+  // simulation's.
+  virtual std::int64_t next_step() const { return std::numeric_limits<std::int64_t>::max(); }
+  // The simulated time from which it next wants to look (none: infinite); ahead of the simulation's.
+  virtual double next_time() const { return std::numeric_limits<double>::infinity(); }
+  // Looks at the simulation; true stops the run.
   virtual bool observe(const Simulation& simulation) = 0;
   // Whether it also looks whenever the run stops for another observer.
   virtual bool looks_at_every_stop() const { return false; }
+  // Whether the simulation has reached the step or the time it asked for.
+  bool due(const Simulation& simulation) const;
 };
 
-// Steps `simulation` until `limit_steps` or until an observer stops it. Each observer sees the
-// simulation at every step it asks for, in the order of `observers` where several ask for the
-// same step (one that looks at every stop looks then too); one that stops the run is the last to
-// look. The stepping is Simulation::run in
-// stretches between those steps, which gives the trajectory of one uninterrupted run to the last
+// Steps `simulation` until its time reaches `time_limit` or an observer stops it. Each observer
+// sees the simulation at every step and time it asks for (at the first step at or past that
+// time), in the order of `observers` where several are due at once (one that looks at every stop
+// looks then too); one that stops the run is the last to look. The stepping is Simulation::run in
+// stretches between those moments, which gives the trajectory of one uninterrupted run to the last
 // bit. Returns whether an observer stopped the run.
-bool run_observed(Simulation& simulation, std::int64_t limit_steps, const std::vector<StepObserver*>& observers);
+bool run_observed(Simulation& simulation, double time_limit, const std::vector<StepObserver*>& observers);
 
-// An observer that looks every `interval` steps after the step it was made at (never for an
-// interval of 0).
+// An observer that looks every `interval` of simulated time after the time it was made at (never
+// for an interval of 0): at the first step at or past start + k interval, k = 1, 2, ...; a step
+// longer than the interval passes the moments it covers at once.
 class IntervalObserver : public StepObserver {
  public:
-  std::int64_t next_step() const final { return next_; }
+  double next_time() const final { return next_; }
   bool observe(const Simulation& simulation) final;
 
  protected:
-  IntervalObserver(std::int64_t interval, std::int64_t start);
+  IntervalObserver(double interval, double start);
   ~IntervalObserver() override = default;
   virtual bool look(const Simulation& simulation) = 0;
 
  private:
-  std::int64_t interval_;
-  std::int64_t next_;
+  double interval_;
+  double next_;
 };
 
-// Snapshots: at every interval, and whenever take() is called (the start and the end of a run),
-// never twice at one step.
+// Snapshots: at every interval of simulated time, and whenever take() is called (the start and the
+// end of a run), never twice at one step.
 class SnapshotObserver final : public IntervalObserver {
  public:
   using Callback = std::function<void(const Simulation&)>;
-  SnapshotObserver(Callback callback, std::int64_t interval, std::int64_t start = 0);
+  SnapshotObserver(Callback callback, double interval, double start = 0.0);
   void take(const Simulation& simulation);
   std::size_t taken() const { return taken_; }
 
@@ -63,10 +71,11 @@ class SnapshotObserver final : public IntervalObserver {
   std::size_t taken_ = 0;
 };
 
-// The settle check (SettleMonitor, both of its rules): stops the run once the outcome is settled.
+// The settle check (SettleMonitor, all of its rules): stops the run once the outcome is settled;
+// looks every `interval` of simulated time.
 class SettleObserver final : public IntervalObserver {
  public:
-  SettleObserver(SettleMonitor& monitor, std::int64_t interval, std::int64_t start = 0);
+  SettleObserver(SettleMonitor& monitor, double interval, double start = 0.0);
 
  private:
   bool look(const Simulation& simulation) override;

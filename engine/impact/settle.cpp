@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/dem/simulation.hpp"
+#include "engine/impact/fate_rule.hpp"
 
 namespace aerobreak {
 namespace {
@@ -35,7 +36,7 @@ std::uint64_t wall_events(const Simulation& simulation) {
 
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                              const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed) {
+                             double rest_speed, bool deposit_pairs) {
   const Vec3 n = wall_normal / norm(wall_normal);
   for (std::size_t k = 0; k < fragments.size(); ++k) {
     const Fragment& f = fragments[k];
@@ -52,10 +53,11 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
     }
   }
   // Two fragments can still meet if their centres approach and, moving on as they do, would pass
-  // closer than their bounding spheres allow. Fragments both resting on the wall are left out.
+  // closer than their bounding spheres allow. Fragments both resting on the wall are left out
+  // unless asked for.
   for (std::size_t a = 0; a < fragments.size(); ++a)
     for (std::size_t b = a + 1; b < fragments.size(); ++b) {
-      if (fragments[a].on_wall() && fragments[b].on_wall()) continue;
+      if (!deposit_pairs && fragments[a].on_wall() && fragments[b].on_wall()) continue;
       const Vec3 separation = fragments[b].centre_of_mass - fragments[a].centre_of_mass;
       const Vec3 relative = mean_velocity[b] - mean_velocity[a];
       const double approach = dot(separation, relative);
@@ -71,11 +73,15 @@ std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::
 
 std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                                 const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                                double rest_speed, const OutcomeThresholds& thresholds) {
-  std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed);
+                                double rest_speed, const OutcomeThresholds& thresholds, bool unbroken) {
+  // Before the quiet rule, which waits until nothing moves, the deposit's pieces may still creep
+  // into each other: they are tested for meeting too.
+  std::string reason = unsettled_reason(fragments, mean_velocity, lowest_gap_before, wall_normal, rest_speed, true);
   if (!reason.empty()) return reason;
+  if (unbroken) return {};
   const Classification c = classify(fates_of(fragments, mean_velocity, wall_normal), true, thresholds);
-  if (c.outcome != ImpactOutcome::break_up) return "the state is a " + to_string(c.outcome) + ", not a break-up";
+  if (c.outcome != ImpactOutcome::break_up)
+    return "the state is a " + to_string(c.outcome) + ", not a break-up, and contacts broke during the window";
   double mass = 0.0;
   for (const Fragment& f : fragments) mass += f.mass;
   for (std::size_t k = 0; k < fragments.size(); ++k)
@@ -84,7 +90,14 @@ std::string outcome_open_reason(const std::vector<Fragment>& fragments, const st
   return {};
 }
 
-std::string to_string(SettleRule rule) { return rule == SettleRule::quiet ? "quiet" : "outcome_fixed"; }
+std::string to_string(SettleRule rule) {
+  switch (rule) {
+    case SettleRule::quiet: return "quiet";
+    case SettleRule::outcome_fixed: return "outcome_fixed";
+    case SettleRule::fates_fixed: return "fates_fixed";
+  }
+  return "quiet";
+}
 
 SettleMonitor::SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds,
                              bool outcome_fixed_rule)
@@ -99,6 +112,7 @@ SettleMonitor::Window SettleMonitor::open_window(const Simulation& simulation, b
   w.start = simulation.time();
   w.positions = simulation.particles().position;
   w.events = with_deposit ? wall_events(simulation) : all_events(simulation);
+  w.bonds_broken = simulation.pair_events().broken;
   if (!with_deposit) return w;
   // The primaries of the fragments touching the wall, and their contacts among themselves.
   const FragmentAnalysis now = find_fragments(simulation);
@@ -162,12 +176,32 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
   ++judgements_;
   Judgement j = judge(simulation, fixed_);
   const std::string reason = outcome_open_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before,
-                                                 j.wall_normal, rest_speed_, thresholds_);
+                                                 j.wall_normal, rest_speed_, thresholds_,
+                                                 now.bonds_broken == fixed_.bonds_broken);
   if (!reason.empty()) return false;
+  // A state that is not a break-up stands on its fragments' staying off the wall: one tumbling
+  // fast enough could still swing back and be pushed off again, with another restitution.
+  const Classification c = classify(fates_of(j.fragments.fragments, j.mean_velocity, j.wall_normal), true, thresholds_);
+  if (c.outcome != ImpactOutcome::break_up && !swing_back_reason(simulation).empty()) return false;
   last_reason_.clear();
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.mean_velocity);
   settle(simulation, SettleRule::outcome_fixed, fixed_);
+  return true;
+}
+
+bool SettleMonitor::judge_fates_fixed(const Simulation& simulation) {
+  FatesJudgement j = judge_fates(simulation, last_positions_, last_time_);
+  last_positions_ = simulation.particles().position;
+  last_time_ = simulation.time();
+  if (!j.reason.empty()) return false;
+  ++judgements_;
+  last_reason_.clear();
+  judged_ = std::move(j.fragments);
+  judged_mean_velocity_ = std::move(j.velocities);
+  Window now;
+  now.start = simulation.time();
+  settle(simulation, SettleRule::fates_fixed, now);
   return true;
 }
 
@@ -191,6 +225,8 @@ bool SettleMonitor::update(const Simulation& simulation) {
     quiet_ = open_window(simulation, false);
     fixed_ = open_window(simulation, true);
     since_ = quiet_.start;
+    last_positions_ = simulation.particles().position;
+    last_time_ = simulation.time();
     return false;
   }
   // The quiet rule first: when both would pass, the run is settled in the plain sense.
@@ -206,7 +242,7 @@ bool SettleMonitor::update(const Simulation& simulation) {
     if (judge_outcome_fixed(simulation)) return true;
     fixed_ = open_window(simulation, true);
   }
-  return false;
+  return outcome_fixed_rule_ && judge_fates_fixed(simulation);
 }
 
 }  // namespace aerobreak

@@ -17,32 +17,38 @@ class Simulation;
 // otherwise one sentence saying which fragment is not. `mean_velocity[k]` is fragment k's
 // centre-of-mass velocity averaged over the window, `lowest_gap_before[k]` its lowest gap to
 // the wall at the window's start, `rest_speed` the largest mean normal speed that counts as rest.
+// Two fragments resting on the wall are not tested for meeting unless `deposit_pairs`: they may
+// still creep along it into each other.
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                              const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed);
+                             double rest_speed, bool deposit_pairs = false);
 
 // The state judgement of the outcome-fixed rule (docs/IMPACT.md section 4): empty when the state
-// passes unsettled_reason, is a break-up, and no fragment on the wall holds the bounce share of
-// the mass (so no later lift-off can make it a bounce); otherwise why not. Fragments off the wall
-// may still split, which leaves a break-up a break-up.
+// passes unsettled_reason and either is a break-up in which no fragment on the wall holds the
+// bounce share of the mass (so no later lift-off can make it a bounce; fragments off the wall may
+// still split, which leaves a break-up a break-up), or, `unbroken`, no contact between primaries
+// broke during the window (so the fragments themselves have stopped changing); otherwise why not.
 std::string outcome_open_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
                                 const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                                double rest_speed, const OutcomeThresholds& thresholds);
+                                double rest_speed, const OutcomeThresholds& thresholds, bool unbroken = false);
 
 // Which rule found a run settled.
 enum class SettleRule {
   quiet,          // no contact made or broken anywhere for a window, then unsettled_reason empty
   outcome_fixed,  // the deposit unchanged for a window, then outcome_open_reason empty
+  fates_fixed,    // every fragment's fate fixed by energy and geometry (judge_fates, fate_rule.hpp)
 };
 std::string to_string(SettleRule rule);
 
-// Watches a running impact and says when its outcome is settled, by either rule (docs/IMPACT.md
-// section 4):
+// Watches a running impact and says when its outcome is settled, by any of three rules
+// (docs/IMPACT.md section 4):
 //  - quiet: no contact (particle-particle or wall) has been made or broken for `quiet_window`,
 //    and then unsettled_reason() finds nothing;
 //  - outcome fixed (unless turned off): over a window of the same length no wall contact was made
 //    or broken and the primaries on the wall kept the same contacts among themselves (contacts
-//    inside fragments in flight may change), and then outcome_open_reason() finds nothing.
+//    inside fragments in flight may change), and then outcome_open_reason() finds nothing;
+//  - fates fixed (unless turned off, with the one above): at any update, judge_fates() finds
+//    every fragment's fate fixed.
 // A window whose judgement fails is followed by a new one. Call update() between steps as often
 // as wished.
 class SettleMonitor {
@@ -74,6 +80,7 @@ class SettleMonitor {
     double start = 0.0;
     std::vector<Vec3> positions;
     std::uint64_t events = 0;
+    std::uint64_t bonds_broken = 0;
     std::vector<std::uint32_t> deposit;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> deposit_contacts;
   };
@@ -87,6 +94,7 @@ class SettleMonitor {
   Judgement judge(const Simulation& simulation, const Window& window) const;
   bool judge_quiet(const Simulation& simulation);
   bool judge_outcome_fixed(const Simulation& simulation);
+  bool judge_fates_fixed(const Simulation& simulation);
   void settle(const Simulation& simulation, SettleRule rule, const Window& window);
 
   double quiet_window_;
@@ -102,6 +110,10 @@ class SettleMonitor {
   Window quiet_;
   bool quiet_opened_by_change_ = false;  // the quiet window began because contacts changed
   Window fixed_;
+  // The positions and time of the last update: a held fragment's velocity at a verdict of the
+  // fates-fixed rule is its mean since then (it vibrates on the wall).
+  std::vector<Vec3> last_positions_;
+  double last_time_ = 0.0;
   std::string last_reason_;
   FragmentAnalysis judged_;
   std::vector<Vec3> judged_mean_velocity_;

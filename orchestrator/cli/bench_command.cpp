@@ -101,6 +101,9 @@ void run_bench(const BenchOptions& o) {
     settings.initial_bond_gap = 1e-6;
     settings.speed_scale = o.speed;
     settings.time_step = o.time_step;
+    // One step for the whole run (the automatic one at the impact speed, or the given one): the
+    // cost per particle-step compares, and LAMMPS (compare.sh) runs the same step.
+    settings.adaptive_time_step = false;
     settings.wavefront_depth = o.wavefront_depth;
     settings.wavefront_min_particles = o.wavefront_min_particles;
     Simulation sim(std::move(placed), {material}, {wall}, full_model(o), settings);

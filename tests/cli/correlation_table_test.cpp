@@ -25,6 +25,7 @@ Json speed_fit(const std::string& response, bool adhesive, const std::string& st
            {"validity", {{"impact_speed", {{"min", 4}, {"max", 40}}}}},
            {"response", response},
            {"dose", "impact_speed"},
+           {"pooled_over", Json::array()},
            {"critical", std::move(critical_values)}};
   if (!detail.empty()) fit["detail"] = detail;
   return fit;

@@ -7,36 +7,11 @@
 #include "engine/cluster/ballistic_aggregation.hpp"
 #include "engine/dem/impact_placement.hpp"
 #include "engine/dem/simulation.hpp"
+#include "same_state.hpp"
 #include "support.hpp"
 
 using namespace aerobreak;
-
-namespace {
-
-void require_same_state(const Simulation& a, const Simulation& b) {
-  REQUIRE(a.particles().size() == b.particles().size());
-  for (std::size_t i = 0; i < a.particles().size(); ++i) {
-    CHECK(a.particles().position[i] == b.particles().position[i]);
-    CHECK(a.particles().velocity[i] == b.particles().velocity[i]);
-    CHECK(a.particles().angular_velocity[i] == b.particles().angular_velocity[i]);
-  }
-  const EnergyBudget x = a.energy(), y = b.energy();
-  CHECK(x.contact_elastic == y.contact_elastic);
-  CHECK(x.dissipation.damping == y.dissipation.damping);
-  CHECK(x.dissipation.friction == y.dissipation.friction);
-  CHECK(x.dissipation.rolling == y.dissipation.rolling);
-  CHECK(x.dissipation.twisting == y.dissipation.twisting);
-  CHECK(x.dissipation.breaking == y.dissipation.breaking);
-  CHECK(x.external_work == y.external_work);
-  CHECK(a.pair_events().made == b.pair_events().made);
-  CHECK(a.pair_events().broken == b.pair_events().broken);
-  CHECK(a.wall_events().made == b.wall_events().made);
-  CHECK(a.step_count() == b.step_count());
-  CHECK(a.time() == b.time());
-}
-
-}  // namespace
-
+using aerobreak::testing::require_same_state;
 
 TEST_CASE("a wavefront of any depth gives the steps one at a time to the last bit with walls and body forces") {
   const int depth = GENERATE(2, 5, 16);

@@ -22,14 +22,20 @@ TEST_CASE("the default study and its cases keep their hashes") {
   // in SI units, the wall's adhesion as an axis, so that it shows stick, bounce and break-up;
   // docs/STUDIES.md): the values below are its hashes as this code computes them, pinned from
   // then on. That the hashing itself did not change with the move to OpenSSL's SHA-256 is checked
-  // by the stored hashes of the next two test cases, computed before that change.
+  // by the stored hashes of the next two test cases, computed before that change. The case hashes
+  // were changed knowingly once more when the automatic step came to be chosen again from the
+  // speeds of the moment and verdicts to come as soon as the outcome is fixed (docs/MODEL.md 9.2,
+  // docs/IMPACT.md section 4): every completed case now states /run/adaptive_time_step, so that no
+  // result of the old rules is taken for the new (docs/ORCHESTRATOR.md). Before: 88971c8e...,
+  // 840a9ad8..., 05779a63..., cba5a0f8...
   const Study study = load_study(testing::source_path("studies/default.study.json"));
   REQUIRE(study.cases.size() == 320);
   CHECK(study.hash == "684b65e1c7ea79d7b31ca96712049ab1dc81f222edee82a44b9a5945fc68531d");
-  CHECK(study.cases[0].hash == "88971c8e75b2cc489508a232a3c7073987cced487f8d6b0544b361f4ee095918");
-  CHECK(study.cases[1].hash == "840a9ad8235e6a0653a36fcc9832be811451d46454638e40d31a663369e9401a");
-  CHECK(study.cases[159].hash == "05779a6393ccd6642d0767dd3e04150bee3d56451dd8981db396b0141356c716");
-  CHECK(study.cases[319].hash == "cba5a0f884f3f0b8141617f5fe1ee71ba3f2212c7bec49f9c69758117e9666ca");
+  CHECK(study.cases[0].document["run"]["adaptive_time_step"] == true);
+  CHECK(study.cases[0].hash == "a706623507a34cfdc2a811160c42b5763fcad625cd69fcc06dba5b49b835100a");
+  CHECK(study.cases[1].hash == "0db55a3139180102172f256baa8e946c57d3dff33c4ba49e19949ef21fca0960");
+  CHECK(study.cases[159].hash == "a334dfbbb66d27ec39fcfd5889a3003a15be4f5a9f16136a4ec7b56b92582917");
+  CHECK(study.cases[319].hash == "dea7bba10d983191fea93f6b1b00cfdeffc916acc748f356f7c48d312bc41533");
 }
 
 TEST_CASE("a completed case document keeps its stored hash, whatever the schema's defaults become") {

@@ -1,0 +1,314 @@
+#include "engine/impact/fate_rule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include "engine/dem/simulation.hpp"
+#include "engine/impact/fragment_paths.hpp"
+
+namespace aerobreak {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+std::string name_of(std::size_t k, const Fragment& f) {
+  return "fragment " + std::to_string(k + 1) + " (" + std::to_string(f.size) + " primar" + (f.size == 1 ? "y" : "ies") +
+         ")";
+}
+
+// A symmetric 3x3 matrix (row-major: xx, xy, xz, yy, yz, zz).
+struct Symmetric3 {
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+};
+
+Vec3 solve(const Symmetric3& a, const Vec3& b) {  // Cramer's rule
+  const double det = a.xx * (a.yy * a.zz - a.yz * a.yz) - a.xy * (a.xy * a.zz - a.yz * a.xz) +
+                     a.xz * (a.xy * a.yz - a.yy * a.xz);
+  const Vec3 c0{a.xx, a.xy, a.xz}, c1{a.xy, a.yy, a.yz}, c2{a.xz, a.yz, a.zz};
+  const auto det3 = [](const Vec3& u, const Vec3& v, const Vec3& w) { return dot(u, cross(v, w)); };
+  return {det3(b, c1, c2) / det, det3(c0, b, c2) / det, det3(c0, c1, b) / det};
+}
+
+// The smallest and largest eigenvalues of a symmetric 3x3 matrix (the trigonometric solution of
+// its characteristic cubic).
+std::pair<double, double> eigenvalue_range(const Symmetric3& a) {
+  const double q = (a.xx + a.yy + a.zz) / 3.0;
+  const double p1 = a.xy * a.xy + a.xz * a.xz + a.yz * a.yz;
+  const double p2 = (a.xx - q) * (a.xx - q) + (a.yy - q) * (a.yy - q) + (a.zz - q) * (a.zz - q) + 2.0 * p1;
+  const double p = std::sqrt(p2 / 6.0);
+  if (!(p > 0.0)) return {q, q};
+  const Symmetric3 b{(a.xx - q) / p, a.xy / p, a.xz / p, (a.yy - q) / p, a.yz / p, (a.zz - q) / p};
+  const double det_b = b.xx * (b.yy * b.zz - b.yz * b.yz) - b.xy * (b.xy * b.zz - b.yz * b.xz) +
+                       b.xz * (b.xy * b.yz - b.yy * b.xz);
+  const double phi = std::acos(std::clamp(det_b / 2.0, -1.0, 1.0)) / 3.0;
+  return {q + 2.0 * p * std::cos(phi + 2.0 * std::numbers::pi / 3.0), q + 2.0 * p * std::cos(phi)};
+}
+
+// What the rule reads of one fragment besides Fragment: its energies, the rigid rotation its
+// angular momentum gives it, and its lightest primary.
+struct Reserve {
+  double kinetic = 0.0;     // in the wall's frame, translation and spin of its primaries
+  double own_kinetic = 0.0; // in its own frame (about its centre of mass)
+  double above_rest = 0.0;  // stored in its contacts (bonds and wall contacts) above their rest
+  double weakest_bond = kInfinity;
+  double weakest_pull = kInfinity;  // the least pull-off force of its bonds
+  double weakest_wall_contact = kInfinity;
+  double lightest = kInfinity;
+  double landing_loop = 0.0;  // a primary alone: its adhesion loop with the wall
+  Vec3 momentum;              // angular momentum about the centre of mass
+  Symmetric3 inertia;         // inertia tensor about the centre of mass
+  Symmetric3 orbital;         // its part from the primaries' positions (without their own moments)
+  double own_moments = 0.0;   // the rest: the sum of the primaries' own moments
+  // The rigid rotation with that angular momentum, w = I^-1 L: its kinetic energy, the fastest
+  // spin it can reach as the fragment tumbles, (2 E / I_min)^(1/2), the most it can pull on a bond
+  // (rotation_pull), and the kinetic energy of the primaries' motion relative to it (their own
+  // spins left out: without twisting resistance a primary spins about its bond for ever and loads
+  // no contact).
+  Vec3 spin;
+  double rotation = 0.0;
+  double fastest_spin = 0.0;
+  double pull = 0.0;
+  double deformation = 0.0;
+};
+
+void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std::size_t i) {
+  const Vec3 r = p.position[i] - fragment.centre_of_mass;
+  const Vec3 u = p.velocity[i] - fragment.velocity;
+  f.kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]) + 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
+  f.own_kinetic += 0.5 * p.mass[i] * norm2(u) + 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
+  f.lightest = std::min(f.lightest, p.mass[i]);
+  f.momentum += p.mass[i] * cross(r, u) + p.inertia[i] * p.angular_velocity[i];
+  const double m = p.mass[i], r2 = norm2(r), own = p.inertia[i];
+  Symmetric3& t = f.orbital;
+  t.xx += m * (r2 - r.x * r.x);
+  t.yy += m * (r2 - r.y * r.y);
+  t.zz += m * (r2 - r.z * r.z);
+  t.xy -= m * r.x * r.y;
+  t.xz -= m * r.x * r.z;
+  t.yz -= m * r.y * r.z;
+  f.own_moments += own;
+}
+
+// The most a rigid rotation of kinetic energy E pulls on any bond. A bond carries the centripetal
+// force of the primaries on one side of it, which equals that of the other side (their sum
+// vanishes about the centre of mass): at most half the sum over all primaries,
+// sum m_i |w x (w x r_i)| <= |w| (M sum m_i |w x r_i|^2)^(1/2) = |w| (M w.I_orb.w)^(1/2), with
+// |w|^2 = 2 E / (e.I.e), e the axis, I = I_orb + c the inertia (c the primaries' own moments): so at
+// most E (M x / (x + c)^2)^(1/2), x = e.I_orb.e within I_orb's eigenvalues [low, high], largest at
+// x = c. (A dimer turning end over end pulls with 1.43 E; the bound gives 1.58 E.)
+double rotation_pull(double energy, double mass, double low, double high, double own) {
+  const double x = std::clamp(own, low, high);
+  return energy * std::sqrt(mass * x / ((x + own) * (x + own)));
+}
+
+std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& fa) {
+  const Particles& p = sim.particles();
+  std::vector<Reserve> r(fa.fragments.size());
+  for (std::size_t i = 0; i < p.size(); ++i) add_particle(r[fa.fragment_of[i]], fa.fragments[fa.fragment_of[i]], p, i);
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    Reserve& f = r[k];
+    f.inertia = f.orbital;
+    f.inertia.xx += f.own_moments;
+    f.inertia.yy += f.own_moments;
+    f.inertia.zz += f.own_moments;
+    f.spin = solve(f.inertia, f.momentum);
+    f.rotation = std::min(0.5 * dot(f.spin, f.momentum), f.own_kinetic);
+    const auto [low, high] = eigenvalue_range(f.orbital);
+    f.fastest_spin = std::sqrt(2.0 * f.rotation / (low + f.own_moments));
+    f.pull = rotation_pull(f.rotation, fa.fragments[k].mass, low, high, f.own_moments);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Fragment& fragment = fa.fragments[fa.fragment_of[i]];
+    Reserve& f = r[fa.fragment_of[i]];
+    const Vec3 rigid = fragment.velocity + cross(f.spin, p.position[i] - fragment.centre_of_mass);
+    f.deformation += 0.5 * p.mass[i] * norm2(p.velocity[i] - rigid);
+  }
+  sim.contacts().for_each([&](const ContactState& c) {
+    if (c.with_wall && c.j != 0) return;
+    Reserve& f = r[fa.fragment_of[c.i]];
+    const Simulation::ContactReserve reserve = sim.contact_reserve(c);
+    f.above_rest += reserve.above_rest;
+    double& weakest = c.with_wall ? f.weakest_wall_contact : f.weakest_bond;
+    weakest = std::min(weakest, reserve.to_break);
+    if (!c.with_wall) f.weakest_pull = std::min(f.weakest_pull, c.constants.pull_off_force);
+  });
+  if (!sim.walls().empty() && sim.walls().front().adhesive)
+    for (std::size_t k = 0; k < fa.fragments.size(); ++k)
+      if (fa.fragments[k].size == 1) r[k].landing_loop = sim.wall_loop_energy(fa.fragments[k].first_primary, 0);
+  return r;
+}
+
+// Off the wall and moving away: can its lowest point still come back? Each primary moves relative
+// to the centre of mass at most at u = w R_b + (2 E / m_lightest)^(1/2), w the fastest spin of its
+// rotation, R_b its bounding radius and E its internal energy; and, with too little internal energy
+// to break a bond (checked before), it keeps its shape: its primaries stay within its bounding
+// sphere, taken a tenth of a diameter wider. So the lowest gap is at least
+// max(g0 + (v_n - u) t, z_cm - 1.1 R_b + v_n t), whose least value over t >= 0 must stay above 0
+// (the two bounds cross at t = (g0 - z_cm + 1.1 R_b) / u). A primary alone keeps its lowest point
+// at its centre less its radius.
+bool cannot_return(const Fragment& f, const Reserve& r, double internal, double height) {
+  if (f.size == 1) return true;
+  if (!(f.lowest_gap > 0.0)) return false;
+  const double drift = r.fastest_spin * f.bounding_radius + std::sqrt(2.0 * std::max(internal, 0.0) / r.lightest);
+  const double v = f.normal_velocity;
+  if (v >= drift) return true;
+  const double reach = height - 1.1 * f.bounding_radius;
+  return reach + v * std::max((f.lowest_gap - reach) / drift, 0.0) > 0.0;
+}
+
+// Sorts one fragment into its fate; returns its path, or why its fate is open.
+struct Verdict {
+  std::string open;
+  FragmentPath path;
+  bool held = false;
+};
+
+Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, double friction,
+                const Vec3& mean_along_wall) {
+  const std::string name = name_of(k, f);
+  const Vec3 n = wall.normal / norm(wall.normal);
+  const double height = dot(f.centre_of_mass - wall.point, n);
+  const double wall_energy = r.kinetic + r.above_rest;
+  // In flight, what can pull a bond apart: the motion relative to the rigid rotation, whose angular
+  // momentum the fragment keeps, and the energy its contacts store above rest; and the rotation
+  // itself, by its centripetal pull (rotation_pull).
+  const double internal = r.deformation + r.above_rest;
+  Verdict v;
+  v.path = {f.centre_of_mass, f.velocity, f.bounding_radius, kInfinity, Vec3{}, 0.0};
+  if (f.on_wall()) {
+    if (!wall.adhesive) return {name + " touches a wall without adhesion", v.path};
+    const double hold = std::min(r.weakest_wall_contact, f.size > 1 ? r.weakest_bond : kInfinity);
+    if (!(wall_energy < hold))
+      return {name + " on the wall has energy " + number(wall_energy) + ", not below the " + number(hold) +
+                  " that frees its weakest contact",
+              v.path};
+    // It may still creep along the wall: on the course of its mean velocity along it.
+    v.path.velocity = mean_along_wall;
+    v.held = true;
+    return v;
+  }
+  const double speed = f.normal_velocity;
+  if (speed > 0.0) {
+    if (f.size > 1 && !(internal < r.weakest_bond))
+      return {name + " has internal energy " + number(internal) + ", not below its weakest bond's " +
+                  number(r.weakest_bond),
+              v.path};
+    if (f.size > 1 && !(r.pull < r.weakest_pull))
+      return {name + " spins fast enough to pull a bond apart (" + number(r.pull) + " against " +
+                  number(r.weakest_pull) + ")",
+              v.path};
+    if (!cannot_return(f, r, internal, height))
+      return {name + " moves away from the wall but may still swing back to it", v.path};
+    return v;
+  }
+  if (!(speed < 0.0)) return {name + " moves along the wall", v.path};
+  v.path.stop = f.lowest_gap / -speed;
+  if (wall.adhesive) {
+    if (f.size > 1 || !(r.kinetic < r.landing_loop))
+      return {name + " is on its way back to the wall (normal speed " + number(speed) + ")", v.path};
+    f.landing = true;
+    return v;
+  }
+  if (f.size > 1) return {name + " is on its way back to the wall (normal speed " + number(speed) + ")", v.path};
+  // A primary alone bounces off (a wall without adhesion cannot hold it, and without gravity
+  // nothing brings it back) with a normal speed between 0 and its speed now, and its tangential
+  // velocity changed by at most the Coulomb limit on the normal impulse, 2 mu |v_n|: its centre
+  // then moves at after = v_t + |v_n| / 2 n within a ball growing at
+  // ((2 mu |v_n|)^2 + (|v_n| / 2)^2)^(1/2).
+  const Vec3 tangential = f.velocity - speed * n;
+  v.path.after = tangential - 0.5 * speed * n;
+  v.path.spread = std::hypot(2.0 * friction * speed, 0.5 * speed);
+  f.bouncing = true;
+  return v;
+}
+
+// Each fragment's mean velocity along the wall since `earlier` (that of its centre of mass if the
+// time is the same).
+std::vector<Vec3> mean_along_wall(const Simulation& sim, const FragmentAnalysis& fa,
+                                  const std::vector<Vec3>& earlier_positions, double earlier) {
+  const Particles& p = sim.particles();
+  const Vec3 n = sim.walls().front().normal / norm(sim.walls().front().normal);
+  const double elapsed = sim.time() - earlier;
+  std::vector<Vec3> mean(fa.fragments.size());
+  if (elapsed > 0.0 && earlier_positions.size() == p.size()) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      mean[fa.fragment_of[i]] += p.mass[i] * (p.position[i] - earlier_positions[i]);
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = mean[k] / (fa.fragments[k].mass * elapsed);
+  } else {
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = fa.fragments[k].velocity;
+  }
+  for (Vec3& v : mean) v = v - dot(v, n) * n;
+  return mean;
+}
+
+}  // namespace
+
+FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earlier_positions, double earlier) {
+  FatesJudgement j;
+  j.fragments = find_fragments(sim);
+  std::vector<Fragment>& fragments = j.fragments.fragments;
+  for (const Fragment& f : fragments) j.velocities.push_back(f.velocity);
+  // Fragments apart move on straight lines only without forces at a distance.
+  if (sim.walls().empty() || sim.model().van_der_waals || norm2(sim.body_forces().gravity) > 0.0 ||
+      sim.body_forces().langevin.enabled()) {
+    j.reason = "fragments apart feel forces (van der Waals, gravity, Langevin) or there is no wall";
+    return j;
+  }
+  const Wall& wall = sim.walls().front();
+  const std::vector<Reserve> reserves = reserves_of(sim, j.fragments);
+  const std::vector<Vec3> along_wall = mean_along_wall(sim, j.fragments, earlier_positions, earlier);
+  const double friction = sim.model().tangential ? sim.model().friction : 0.0;
+  std::vector<Verdict> verdicts;
+  for (std::size_t k = 0; k < fragments.size(); ++k) {
+    verdicts.push_back(fate_of(k, fragments[k], reserves[k], wall, friction, along_wall[k]));
+    if (verdicts.back().held) j.velocities[k] = along_wall[k];
+    if (!verdicts.back().open.empty()) {
+      j.reason = verdicts.back().open;
+      return j;
+    }
+  }
+  if (fragments.front().landing || fragments.front().bouncing) {
+    j.reason = name_of(0, fragments.front()) + ", the largest, is on its way back to the wall";
+    return j;
+  }
+  for (std::size_t a = 0; a < fragments.size(); ++a)
+    for (std::size_t b = a + 1; b < fragments.size(); ++b) {
+      // Two held fragments that do not approach each other cannot meet (a held fragment's course
+      // along the wall is known only roughly: its bounding sphere may overlap another's from the
+      // start); one moving towards another is tested on its course.
+      const Vec3 apart = fragments[b].centre_of_mass - fragments[a].centre_of_mass;
+      const Vec3 closing = verdicts[b].path.velocity - verdicts[a].path.velocity;
+      if (verdicts[a].held && verdicts[b].held && dot(apart, closing) >= 0.0) continue;
+      if ((fragments[a].bouncing && fragments[b].bouncing) || paths_can_meet(verdicts[a].path, verdicts[b].path)) {
+        j.reason = name_of(a, fragments[a]) + " and " + name_of(b, fragments[b]) + " can still meet";
+        return j;
+      }
+    }
+  return j;
+}
+
+std::string swing_back_reason(const Simulation& sim) {
+  if (sim.walls().empty()) return {};
+  const FragmentAnalysis fa = find_fragments(sim);
+  const std::vector<Reserve> reserves = reserves_of(sim, fa);
+  const Wall& wall = sim.walls().front();
+  const Vec3 n = wall.normal / norm(wall.normal);
+  for (std::size_t k = 0; k < fa.fragments.size(); ++k) {
+    const Fragment& f = fa.fragments[k];
+    if (f.on_wall() || !(f.normal_velocity > 0.0)) continue;
+    if (!cannot_return(f, reserves[k], 0.0, dot(f.centre_of_mass - wall.point, n)))
+      return name_of(k, f) + " turns fast enough to swing back to the wall";
+  }
+  return {};
+}
+
+}  // namespace aerobreak
