@@ -134,7 +134,8 @@ TEST_CASE("MELCOR: names are unique across quantities, conditions, table kinds a
   // The fit table at sizes and at mobility diameters, as aerobreak run writes both, of a third study.
   const auto pooled = fill_pooled_wall_study(stores.store);
   const auto fits = study_correlations(stores.store, *stores.store.study(pooled), correlation_request(*stores.store.study(pooled), std::nullopt));
-  ExportRequest at_sizes{.kind = TableKind::fit}, at_diameters{.kind = TableKind::fit};
+  ExportRequest at_sizes, at_diameters;
+  at_sizes.kind = at_diameters.kind = TableKind::fit;
   at_diameters.diameters = {5.0, 8.0};  // in d: N = 32.3 and 89
   tables.emplace_back(study_lookup_table(stores.store, pooled, at_sizes, &fits), "F");
   tables.emplace_back(study_lookup_table(stores.store, pooled, at_diameters, &fits), "M");
