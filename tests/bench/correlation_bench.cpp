@@ -63,7 +63,7 @@ CaseOutcomeTable synthetic_study(std::size_t results) {
 }
 
 CorrelationRequest request() {
-  return {"impact_speed", {{"primaries", true}, {"gamma_over_kn", true}}, {0.1, 0.5, 0.9}};
+  return {"impact_speed", {{"primaries", true}, {"gamma_over_kn", true}}, {0.1, 0.5, 0.9}, "primaries"};
 }
 
 void time_fitting(const CaseOutcomeTable& table) {
