@@ -81,8 +81,7 @@ Cluster collide(Cluster target, Cluster projectile, RandomStream& random) {
 
 // Builds the cluster of primaries [first, first + count) of `radii`: the aggregate of the clusters
 // of the first ceil(count/2) and the last floor(count/2) of them (Jullien's hierarchical pairing).
-Cluster aggregate(const std::vector<double>& radii, std::size_t first, std::size_t count,
-                  RandomStream& random) {
+Cluster aggregate(const std::vector<double>& radii, std::size_t first, std::size_t count, RandomStream& random) {
   if (count == 1) return Cluster{{Vec3{}}, {radii[first]}};
   const std::size_t larger = count - count / 2;
   Cluster target = aggregate(radii, first, larger, random);
@@ -92,12 +91,11 @@ Cluster aggregate(const std::vector<double>& radii, std::size_t first, std::size
 
 }  // namespace
 
-Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParameters& parameters,
-                                              std::uint64_t seed) {
+Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParameters& parameters, std::uint64_t seed) {
   validate(parameters);
   RandomStream random(seed);
-  const std::vector<double> radii = random.lognormal_radii(
-      parameters.primary_count, parameters.geometric_mean_diameter, parameters.geometric_standard_deviation);
+  const std::vector<double> radii = random.lognormal_radii(parameters.primary_count, parameters.geometric_mean_diameter,
+                                                           parameters.geometric_standard_deviation);
   return ordered_along_neighbours(aggregate(radii, 0, radii.size(), random));
 }
 

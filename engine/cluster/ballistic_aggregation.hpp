@@ -31,7 +31,6 @@ struct BallisticAggregationParameters {
 // neighbours (ordered_along_neighbours). The same parameters and seed give
 // bit-identical output on the same build. Throws std::invalid_argument naming the offending
 // parameter for primary_count < 1, a non-positive or non-finite diameter, or sigma_g < 1.
-Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParameters& parameters,
-                                              std::uint64_t seed);
+Cluster ballistic_cluster_cluster_aggregation(const BallisticAggregationParameters& parameters, std::uint64_t seed);
 
 }  // namespace aerobreak

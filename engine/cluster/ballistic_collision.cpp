@@ -71,9 +71,7 @@ class ColumnGrid {
   }
 
  private:
-  long index_along(double coordinate, double origin) const {
-    return static_cast<long>((coordinate - origin) / cell_);
-  }
+  long index_along(double coordinate, double origin) const { return static_cast<long>((coordinate - origin) / cell_); }
   // Cell index of a query point, clamped just outside the grid so that far points visit nothing.
   long clamped_index(double coordinate, double origin, long count) const {
     const double cells = std::floor((coordinate - origin) / cell_);
@@ -93,8 +91,7 @@ double largest_radius(const Cluster& cluster) {
 
 }  // namespace
 
-std::optional<double> first_contact_travel(const Cluster& target, const Cluster& projectile,
-                                           const Vec3& direction) {
+std::optional<double> first_contact_travel(const Cluster& target, const Cluster& projectile, const Vec3& direction) {
   if (target.size() == 0 || projectile.size() == 0) return std::nullopt;
   const FlightFrame frame = flight_frame(direction);
   const ColumnGrid grid(target, frame, largest_radius(target) + largest_radius(projectile));

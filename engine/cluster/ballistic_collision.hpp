@@ -26,7 +26,6 @@ FlightFrame flight_frame(const Vec3& unit_direction);
 // the target is projected onto the plane normal to `direction` and binned in a 2-D cell grid of
 // cell size >= max r_i + max r_j; each projectile primary then marches down its own column of
 // cells (its 3x3 neighbourhood) and meets only the target primaries in that column.
-std::optional<double> first_contact_travel(const Cluster& target, const Cluster& projectile,
-                                           const Vec3& direction);
+std::optional<double> first_contact_travel(const Cluster& target, const Cluster& projectile, const Vec3& direction);
 
 }  // namespace aerobreak

@@ -22,8 +22,7 @@ void require_primaries(const Cluster& cluster, const char* what) {
 double mass(double radius) { return radius * radius * radius; }
 
 double mean_radius(const Cluster& cluster) {
-  return std::accumulate(cluster.radius.begin(), cluster.radius.end(), 0.0) /
-         static_cast<double>(cluster.size());
+  return std::accumulate(cluster.radius.begin(), cluster.radius.end(), 0.0) / static_cast<double>(cluster.size());
 }
 
 }  // namespace
@@ -68,8 +67,7 @@ double maximum_extent(const Cluster& cluster) {
     for (std::size_t b = a + 1; b < reach.size(); ++b) {
       if (reach[a].first + reach[b].first <= best) break;
       const std::size_t j = reach[b].second;
-      best = std::max(best, norm(cluster.position[i] - cluster.position[j]) + cluster.radius[i] +
-                                cluster.radius[j]);
+      best = std::max(best, norm(cluster.position[i] - cluster.position[j]) + cluster.radius[i] + cluster.radius[j]);
     }
   }
   return best;

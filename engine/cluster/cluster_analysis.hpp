@@ -15,8 +15,8 @@ struct ClusterAnalysis {
   Vec3 centre_of_mass;
   double radius_of_gyration = 0.0;
   double maximum_extent = 0.0;
-  std::size_t contact_count = 0;       // touching pairs, see find_contacts
-  std::size_t deep_overlap_count = 0;  // of those, pairs overlapping deeper than the tolerance
+  std::size_t contact_count = 0;             // touching pairs, see find_contacts
+  std::size_t deep_overlap_count = 0;        // of those, pairs overlapping deeper than the tolerance
   double mean_coordination_number = 0.0;     // 2 * contact_count / primary_count
   std::vector<std::size_t> component_sizes;  // connected components of the contacts, largest first
   double filling_factor = 0.0;

@@ -63,8 +63,7 @@ class CellList {
   };
 
   CellIndex cell_of(const Vec3& x) const {
-    return {static_cast<std::int64_t>((x.x - origin_.x) / cell_),
-            static_cast<std::int64_t>((x.y - origin_.y) / cell_),
+    return {static_cast<std::int64_t>((x.x - origin_.x) / cell_), static_cast<std::int64_t>((x.y - origin_.y) / cell_),
             static_cast<std::int64_t>((x.z - origin_.z) / cell_)};
   }
   static std::uint64_t key(const CellIndex& c) {
@@ -120,8 +119,8 @@ std::optional<PrimaryOverlap> find_overlap_beyond(const Cluster& cluster, double
   return found;
 }
 
-std::vector<std::size_t> connected_component_sizes(
-    std::size_t primary_count, const std::vector<std::pair<std::size_t, std::size_t>>& edges) {
+std::vector<std::size_t> connected_component_sizes(std::size_t primary_count,
+                                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges) {
   DisjointSets sets(primary_count);
   for (const auto& [i, j] : edges) sets.unite(i, j);
   std::vector<std::size_t> size_of_root(primary_count, 0);

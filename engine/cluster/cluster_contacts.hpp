@@ -34,7 +34,7 @@ std::optional<PrimaryOverlap> find_overlap_beyond(const Cluster& cluster, double
 
 // Sizes of the connected components of the graph on primary_count vertices, largest first
 // (isolated primaries are components of size 1). Union-find with path halving.
-std::vector<std::size_t> connected_component_sizes(
-    std::size_t primary_count, const std::vector<std::pair<std::size_t, std::size_t>>& edges);
+std::vector<std::size_t> connected_component_sizes(std::size_t primary_count,
+                                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges);
 
 }  // namespace aerobreak

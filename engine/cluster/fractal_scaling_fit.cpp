@@ -9,8 +9,7 @@
 
 namespace aerobreak {
 
-FractalScalingFit fit_fractal_scaling(std::span<const SizeRadiusSample> samples,
-                                      double primary_radius) {
+FractalScalingFit fit_fractal_scaling(std::span<const SizeRadiusSample> samples, double primary_radius) {
   if (!(primary_radius > 0.0)) {
     throw std::invalid_argument("fit_fractal_scaling: primary_radius must be positive");
   }
@@ -28,11 +27,10 @@ FractalScalingFit fit_fractal_scaling(std::span<const SizeRadiusSample> samples,
     log_radius.push_back(std::log(s.radius_of_gyration / primary_radius));
   }
   const auto [min_n, max_n] = std::minmax_element(
-      samples.begin(), samples.end(),
-      [](const auto& a, const auto& b) { return a.primary_count < b.primary_count; });
-  const auto [min_rg, max_rg] = std::minmax_element(
-      samples.begin(), samples.end(),
-      [](const auto& a, const auto& b) { return a.radius_of_gyration < b.radius_of_gyration; });
+      samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.primary_count < b.primary_count; });
+  const auto [min_rg, max_rg] = std::minmax_element(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
+    return a.radius_of_gyration < b.radius_of_gyration;
+  });
   if (min_n->primary_count == max_n->primary_count) {
     throw std::invalid_argument("fit_fractal_scaling: all samples share one primary_count");
   }

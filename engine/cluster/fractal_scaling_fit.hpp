@@ -28,7 +28,6 @@ struct FractalScalingFit {
 // error of D_f comes from the regression residuals (delta method). Throws std::invalid_argument for
 // fewer than 3 samples, a non-positive N, Rg or primary_radius, samples that all share one N, or Rg
 // not growing with N.
-FractalScalingFit fit_fractal_scaling(std::span<const SizeRadiusSample> samples,
-                                      double primary_radius);
+FractalScalingFit fit_fractal_scaling(std::span<const SizeRadiusSample> samples, double primary_radius);
 
 }  // namespace aerobreak

@@ -38,8 +38,7 @@ LineFit fit_line(std::span<const double> x, std::span<const double> y) {
   }
   const double s2 = residual2 / static_cast<double>(n - 2);
   fit.slope_standard_error = std::sqrt(s2 / sxx);
-  fit.intercept_standard_error =
-      std::sqrt(s2 * (1.0 / static_cast<double>(n) + x_mean * x_mean / sxx));
+  fit.intercept_standard_error = std::sqrt(s2 * (1.0 / static_cast<double>(n) + x_mean * x_mean / sxx));
   return fit;
 }
 

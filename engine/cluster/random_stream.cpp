@@ -30,8 +30,8 @@ Rotation RandomStream::rotation() {
   const double theta2 = 2.0 * std::numbers::pi * uniform();
   const double s1 = std::sqrt(1.0 - u1);
   const double s2 = std::sqrt(u1);
-  return Rotation::from_unit_quaternion(s2 * std::cos(theta2), s1 * std::sin(theta1),
-                                        s1 * std::cos(theta1), s2 * std::sin(theta2));
+  return Rotation::from_unit_quaternion(s2 * std::cos(theta2), s1 * std::sin(theta1), s1 * std::cos(theta1),
+                                        s2 * std::sin(theta2));
 }
 
 std::vector<double> RandomStream::lognormal_radii(std::size_t n, double geometric_mean_diameter,

@@ -34,9 +34,7 @@ std::string describe(double value) {
 }
 
 void validate(const TunableAggregationParameters& p) {
-  const auto fail = [](const std::string& what) {
-    throw std::invalid_argument("tunable aggregation: " + what);
-  };
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("tunable aggregation: " + what); };
   if (p.primary_count < 1) fail("primary_count must be >= 1");
   if (!(p.fractal_dimension >= 1.5 && p.fractal_dimension <= 2.8)) {
     fail("fractal_dimension must lie in [1.5, 2.8], got " + describe(p.fractal_dimension));
@@ -45,12 +43,10 @@ void validate(const TunableAggregationParameters& p) {
     fail("prefactor must be positive and finite, got " + describe(p.prefactor));
   }
   if (!(p.geometric_mean_diameter > 0.0) || !std::isfinite(p.geometric_mean_diameter)) {
-    fail("geometric_mean_diameter must be positive and finite, got " +
-         describe(p.geometric_mean_diameter));
+    fail("geometric_mean_diameter must be positive and finite, got " + describe(p.geometric_mean_diameter));
   }
   if (!(p.geometric_standard_deviation >= 1.0) || !std::isfinite(p.geometric_standard_deviation)) {
-    fail("geometric_standard_deviation must be >= 1 and finite, got " +
-         describe(p.geometric_standard_deviation));
+    fail("geometric_standard_deviation must be >= 1 and finite, got " + describe(p.geometric_standard_deviation));
   }
   if (p.particle_cluster_size < 3) fail("particle_cluster_size must be >= 3");
   if (p.max_cluster_cluster_attempts < 1) fail("max_cluster_cluster_attempts must be >= 1");
@@ -67,8 +63,8 @@ double law_gyration_radius(const FractalLaw& law, const TunableAggregate& a) {
 
 std::string context(const TunableAggregationParameters& p) {
   std::ostringstream out;
-  out << "tunable aggregation (Df = " << p.fractal_dimension << ", kf = " << p.prefactor
-      << ", N = " << p.primary_count << ", sigma_g = " << p.geometric_standard_deviation << "): ";
+  out << "tunable aggregation (Df = " << p.fractal_dimension << ", kf = " << p.prefactor << ", N = " << p.primary_count
+      << ", sigma_g = " << p.geometric_standard_deviation << "): ";
   return out.str();
 }
 
@@ -78,8 +74,7 @@ class Builder {
       : law_(law),
         random_(random),
         context_(context(p)),
-        settings_{placement_overlap_tolerance, p.particle_cluster_size,
-                  p.max_intermediate_deviation},
+        settings_{placement_overlap_tolerance, p.particle_cluster_size, p.max_intermediate_deviation},
         particle_cluster_limit_(p.particle_cluster_size),
         total_(p.primary_count),
         max_attempts_(p.max_cluster_cluster_attempts),
@@ -100,8 +95,7 @@ class Builder {
     const bool regrowable = count / 2 <= particle_cluster_limit_;
     TunableAggregate b = build(radii, first + larger, count / 2);
     for (int rebuild = 0;; ++rebuild) {
-      TunableJoin joined =
-          join_aggregates(a, b, law_, max_attempts_, placement_overlap_tolerance, random_);
+      TunableJoin joined = join_aggregates(a, b, law_, max_attempts_, placement_overlap_tolerance, random_);
       if (joined.aggregate) return std::move(*joined.aggregate);
       join_failure_ = std::move(joined.failure);
       if (!regrowable || rebuild == max_rebuilds_) break;
@@ -115,9 +109,8 @@ class Builder {
   const std::string& last_growth_shortfall() const { return growth_shortfall_; }
   // The last failed join, as context for the above (empty if none).
   std::string join_note() const {
-    return join_failure_.empty()
-               ? std::string()
-               : "; it had taken over from the cluster-cluster stage after " + join_failure_;
+    return join_failure_.empty() ? std::string()
+                                 : "; it had taken over from the cluster-cluster stage after " + join_failure_;
   }
 
  private:
@@ -126,15 +119,14 @@ class Builder {
     const std::vector<double> group(radii.begin() + static_cast<std::ptrdiff_t>(first),
                                     radii.begin() + static_cast<std::ptrdiff_t>(first + count));
     ParticleClusterGrowth grown = grow_particle_cluster(group, law_, settings_, random_);
-    for (int restart = 0; restart < max_restarts_ && count == total_ && grown.aggregate &&
-                          !grown.last_step_shortfall.empty();
+    for (int restart = 0;
+         restart < max_restarts_ && count == total_ && grown.aggregate && !grown.last_step_shortfall.empty();
          ++restart) {
       grown = grow_particle_cluster(group, law_, settings_, random_);
     }
     if (!grown.aggregate) {
       const std::string what = "the aggregates on the way cannot follow the scaling law; ";
-      throw UnreachableFractalParameters(context_ + what + "particle-cluster stage, " +
-                                         grown.failure + join_note());
+      throw UnreachableFractalParameters(context_ + what + "particle-cluster stage, " + grown.failure + join_note());
     }
     growth_shortfall_ = std::move(grown.last_step_shortfall);
     return std::move(*grown.aggregate);
@@ -162,37 +154,35 @@ TunableAggregate smallest(const std::vector<double>& radii, const FractalLaw& la
   const double target = law_gyration_radius(law, a);
   if (std::abs(a.gyration_radius / target - 1.0) > verification_gyration_tolerance) {
     throw UnreachableFractalParameters(
-        context(p) + std::to_string(radii.size()) + " primaries have a fixed Rg = " +
-        describe(a.gyration_radius) + ", the scaling law asks for " + describe(target) +
-        "; it can be imposed from three primaries on");
+        context(p) + std::to_string(radii.size()) + " primaries have a fixed Rg = " + describe(a.gyration_radius) +
+        ", the scaling law asks for " + describe(target) + "; it can be imposed from three primaries on");
   }
   return a;
 }
 
 // Joins are exact, so a final aggregate off the law was grown monomer by monomer and its last
 // monomer could not be put at Gamma_pc: the request is unreachable at this N.
-void require_law(const TunableAggregate& aggregate, const FractalLaw& law,
-                 const TunableAggregationParameters& p, const Builder& builder) {
+void require_law(const TunableAggregate& aggregate, const FractalLaw& law, const TunableAggregationParameters& p,
+                 const Builder& builder) {
   const double target = law_gyration_radius(law, aggregate);
   if (std::abs(aggregate.gyration_radius / target - 1.0) <= verification_gyration_tolerance) return;
-  throw UnreachableFractalParameters(
-      context(p) + "the scaling law's Rg = " + describe(target) + " cannot be reached (got " +
-      describe(aggregate.gyration_radius) + "); particle-cluster stage, " +
-      builder.last_growth_shortfall() + builder.join_note());
+  throw UnreachableFractalParameters(context(p) + "the scaling law's Rg = " + describe(target) +
+                                     " cannot be reached (got " + describe(aggregate.gyration_radius) +
+                                     "); particle-cluster stage, " + builder.last_growth_shortfall() +
+                                     builder.join_note());
 }
 
 void verify(const Cluster& cluster, const FractalLaw& law) {
   const double rg = gyration_radius(cluster, law.convention);
-  const double target = law.gyration_radius(static_cast<double>(cluster.size()),
-                                            geometric_mean_radius(cluster.radius));
+  const double target = law.gyration_radius(static_cast<double>(cluster.size()), geometric_mean_radius(cluster.radius));
   if (!(std::abs(rg / target - 1.0) <= verification_gyration_tolerance)) {
     throw std::runtime_error("tunable aggregation: check failed: Rg = " + describe(rg) +
                              " differs from the scaling law's " + describe(target));
   }
   const ContactGraph graph = find_contacts(cluster, verification_overlap_tolerance);
   if (graph.deep_overlap_count > 0) {
-    throw std::runtime_error("tunable aggregation: check failed: " +
-                             std::to_string(graph.deep_overlap_count) + " overlapping pairs");
+    throw std::runtime_error("tunable aggregation: check failed: " + std::to_string(graph.deep_overlap_count) +
+                             " overlapping pairs");
   }
   const std::size_t components = connected_component_sizes(cluster.size(), graph.contacts).size();
   if (components != 1) {
@@ -203,14 +193,12 @@ void verify(const Cluster& cluster, const FractalLaw& law) {
 
 }  // namespace
 
-Cluster tunable_cluster_aggregation(const TunableAggregationParameters& parameters,
-                                    std::uint64_t seed) {
+Cluster tunable_cluster_aggregation(const TunableAggregationParameters& parameters, std::uint64_t seed) {
   validate(parameters);
   RandomStream random(seed);
-  const std::vector<double> radii = random.lognormal_radii(
-      parameters.primary_count, parameters.geometric_mean_diameter, parameters.geometric_standard_deviation);
-  const FractalLaw law{parameters.fractal_dimension, parameters.prefactor,
-                       parameters.gyration_convention};
+  const std::vector<double> radii = random.lognormal_radii(parameters.primary_count, parameters.geometric_mean_diameter,
+                                                           parameters.geometric_standard_deviation);
+  const FractalLaw law{parameters.fractal_dimension, parameters.prefactor, parameters.gyration_convention};
 
   TunableAggregate aggregate;
   if (radii.size() <= 2) {

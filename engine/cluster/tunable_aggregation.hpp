@@ -87,7 +87,6 @@ class UnreachableFractalParameters : public std::runtime_error {
 // 2.6: 0.6-1.4; 2.8: 0.5-1.3. Lognormal sigma_g = 1.3: the same up to Df = 2.3; at 2.6 kf 0.6-1.1
 // and at 2.8 kf 0.5-0.9 for most seeds, not all (joins fail and the monomer-by-monomer growth
 // meets crowded shells). sigma_g = 1.6: Df up to 2.0 (kf 0.9-1.3), 2.3 only at kf 0.7-0.8.
-Cluster tunable_cluster_aggregation(const TunableAggregationParameters& parameters,
-                                    std::uint64_t seed);
+Cluster tunable_cluster_aggregation(const TunableAggregationParameters& parameters, std::uint64_t seed);
 
 }  // namespace aerobreak

@@ -38,12 +38,10 @@ std::pair<Vec3, Vec3> perpendicular_pair(const Vec3& w) {
 
 // A point at distance `radius` from `centre` in direction (cos_polar w + sin_polar (cos azimuth u +
 // sin azimuth v)), (w, u, v) the frame of axis w.
-Vec3 point_about(const Vec3& centre, const Vec3& w, double radius, double cos_polar,
-                 double azimuth) {
+Vec3 point_about(const Vec3& centre, const Vec3& w, double radius, double cos_polar, double azimuth) {
   const auto [u, v] = perpendicular_pair(w);
   const double sin_polar = std::sqrt(std::max(0.0, 1.0 - cos_polar * cos_polar));
-  return centre +
-         radius * (cos_polar * w + sin_polar * (std::cos(azimuth) * u + std::sin(azimuth) * v));
+  return centre + radius * (cos_polar * w + sin_polar * (std::cos(azimuth) * u + std::sin(azimuth) * v));
 }
 
 // The rotation taking unit vector `from` to unit vector `to`, turned by `twist` about `to`: maps
@@ -53,8 +51,7 @@ Rotation rotation_taking(const Vec3& from, const Vec3& to, double twist) {
   const auto [a, b] = perpendicular_pair(to);
   const Vec3 p2 = std::cos(twist) * a + std::sin(twist) * b;
   const Vec3 q2 = cross(to, p2);
-  return {to.x * from + p2.x * p + q2.x * q, to.y * from + p2.y * p + q2.y * q,
-          to.z * from + p2.z * p + q2.z * q};
+  return {to.x * from + p2.x * p + q2.x * q, to.y * from + p2.y * p + q2.y * q, to.z * from + p2.z * p + q2.z * q};
 }
 
 // Each of four lengths at most the sum of the other three: a (possibly degenerate) quadrilateral
@@ -83,9 +80,7 @@ PairCandidates pair_candidates(const TunableAggregate& a, const TunableAggregate
     max_radius_b = std::max(max_radius_b, b.radius[j]);
   }
   std::sort(c.partners.begin(), c.partners.end());
-  const auto by_distance = [](const std::pair<double, std::uint32_t>& p, double e) {
-    return p.first < e;
-  };
+  const auto by_distance = [](const std::pair<double, std::uint32_t>& p, double e) { return p.first < e; };
   c.begin.resize(a.size());
   c.end.resize(a.size());
   c.cumulative.resize(a.size());
@@ -94,13 +89,11 @@ PairCandidates pair_candidates(const TunableAggregate& a, const TunableAggregate
     const double longest_contact = a.radius[i] + max_radius_b;
     const double lowest = std::abs(gamma - d) - longest_contact;
     const double highest = gamma + d + longest_contact;
-    c.begin[i] = static_cast<std::size_t>(
-        std::lower_bound(c.partners.begin(), c.partners.end(), lowest, by_distance) -
+    c.begin[i] = static_cast<std::size_t>(std::lower_bound(c.partners.begin(), c.partners.end(), lowest, by_distance) -
+                                          c.partners.begin());
+    c.end[i] = static_cast<std::size_t>(
+        std::lower_bound(c.partners.begin(), c.partners.end(), std::nextafter(highest, 1e300), by_distance) -
         c.partners.begin());
-    c.end[i] =
-        static_cast<std::size_t>(std::lower_bound(c.partners.begin(), c.partners.end(),
-                                                  std::nextafter(highest, 1e300), by_distance) -
-                                 c.partners.begin());
     c.total += c.end[i] - c.begin[i];
     c.cumulative[i] = c.total;
   }
@@ -113,8 +106,8 @@ struct Trial {
   Vec3 centre;
 };
 
-std::optional<Trial> trial_configuration(const Vec3& x_i, double contact, const Vec3& body_j,
-                                         double gamma, RandomStream& random) {
+std::optional<Trial> trial_configuration(const Vec3& x_i, double contact, const Vec3& body_j, double gamma,
+                                         RandomStream& random) {
   const double d = norm(x_i);
   const double e = norm(body_j);
   // Contact point of x_j: on the sphere of radius `contact` about x_i, where its distance s from
@@ -126,12 +119,10 @@ std::optional<Trial> trial_configuration(const Vec3& x_i, double contact, const 
     const double low = std::abs(gamma - e);
     const double high = gamma + e;
     const double lo = std::max(-1.0, (low * low - d * d - contact * contact) / (2.0 * d * contact));
-    const double hi =
-        std::min(1.0, (high * high - d * d - contact * contact) / (2.0 * d * contact));
+    const double hi = std::min(1.0, (high * high - d * d - contact * contact) / (2.0 * d * contact));
     if (lo > hi) return std::nullopt;
     const double cos_polar = lo + (hi - lo) * random.uniform();
-    contact_point =
-        point_about(x_i, x_i / d, contact, cos_polar, 2.0 * std::numbers::pi * random.uniform());
+    contact_point = point_about(x_i, x_i / d, contact, cos_polar, 2.0 * std::numbers::pi * random.uniform());
   } else {
     contact_point = x_i + contact * random.unit_vector();
   }
@@ -142,8 +133,7 @@ std::optional<Trial> trial_configuration(const Vec3& x_i, double contact, const 
   if (s > 0.0) {
     const double along = (gamma * gamma - e * e + s * s) / (2.0 * s);
     const double cos_polar = std::clamp(along / gamma, -1.0, 1.0);
-    centre = point_about(Vec3{}, contact_point / s, gamma, cos_polar,
-                         2.0 * std::numbers::pi * random.uniform());
+    centre = point_about(Vec3{}, contact_point / s, gamma, cos_polar, 2.0 * std::numbers::pi * random.uniform());
   } else {
     centre = gamma * random.unit_vector();
   }
@@ -151,36 +141,30 @@ std::optional<Trial> trial_configuration(const Vec3& x_i, double contact, const 
   const Vec3 arm = contact_point - centre;
   const double arm_length = norm(arm);
   if (!(e > 0.0) || !(arm_length > 0.0)) return Trial{random.rotation(), centre};
-  return Trial{
-      rotation_taking(body_j / e, arm / arm_length, 2.0 * std::numbers::pi * random.uniform()),
-      centre};
+  return Trial{rotation_taking(body_j / e, arm / arm_length, 2.0 * std::numbers::pi * random.uniform()), centre};
 }
 
 }  // namespace
 
-TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b,
-                            const FractalLaw& law, int max_attempts, double overlap_tolerance,
-                            RandomStream& random) {
+TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b, const FractalLaw& law,
+                            int max_attempts, double overlap_tolerance, RandomStream& random) {
   const std::size_t n = a.size() + b.size();
-  const std::string stage = "joining aggregates of " + std::to_string(a.size()) + " and " +
-                            std::to_string(b.size()) + " primaries: ";
-  const double target =
-      law.gyration_radius(static_cast<double>(n),
-                          std::exp((a.log_radius_sum + b.log_radius_sum) / static_cast<double>(n)));
+  const std::string stage =
+      "joining aggregates of " + std::to_string(a.size()) + " and " + std::to_string(b.size()) + " primaries: ";
+  const double target = law.gyration_radius(static_cast<double>(n),
+                                            std::exp((a.log_radius_sum + b.log_radius_sum) / static_cast<double>(n)));
   // Gamma_cc from FracVAL eq. 6.
-  const double gamma2 =
-      centre_distance_squared(a.mass, a.gyration_radius, b.mass, b.gyration_radius, target);
+  const double gamma2 = centre_distance_squared(a.mass, a.gyration_radius, b.mass, b.gyration_radius, target);
   if (!(gamma2 > 0.0)) {
-    return {std::nullopt, stage + "Gamma_cc^2 = " + describe(gamma2) +
-                              " <= 0: the target Rg = " + describe(target) +
+    return {std::nullopt, stage + "Gamma_cc^2 = " + describe(gamma2) + " <= 0: the target Rg = " + describe(target) +
                               " is below what any placement of the two gives (too compact)"};
   }
   const double gamma = std::sqrt(gamma2);
 
   const PairCandidates candidates = pair_candidates(a, b, gamma);
   if (candidates.total == 0) {
-    return {std::nullopt, stage + "Gamma_cc = " + describe(gamma) +
-                              " is beyond the reach of every pair of primaries (too open)"};
+    return {std::nullopt,
+            stage + "Gamma_cc = " + describe(gamma) + " is beyond the reach of every pair of primaries (too open)"};
   }
 
   double max_radius = 0.0;
@@ -191,16 +175,15 @@ TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b
   std::vector<Vec3> placed(b.size());
   for (int attempt = 0; attempt < max_attempts; ++attempt) {
     const std::size_t pick = uniform_index(random, candidates.total);
-    const std::size_t i = static_cast<std::size_t>(
-        std::upper_bound(candidates.cumulative.begin(), candidates.cumulative.end(), pick) -
-        candidates.cumulative.begin());
+    const std::size_t i =
+        static_cast<std::size_t>(std::upper_bound(candidates.cumulative.begin(), candidates.cumulative.end(), pick) -
+                                 candidates.cumulative.begin());
     const std::size_t before = candidates.cumulative[i] - (candidates.end[i] - candidates.begin[i]);
     const std::size_t j = candidates.partners[candidates.begin[i] + (pick - before)].second;
     const double contact = a.radius[i] + b.radius[j];
     if (!closes(gamma, norm(a.position[i]), contact, norm(b.position[j]))) continue;
 
-    const std::optional<Trial> trial =
-        trial_configuration(a.position[i], contact, b.position[j], gamma, random);
+    const std::optional<Trial> trial = trial_configuration(a.position[i], contact, b.position[j], gamma, random);
     if (!trial) continue;
     // At the edge of the admissible range the circle of c_b shrinks to a point and round-off can
     // leave x_j off the contact; such a trial is dropped.
@@ -219,9 +202,9 @@ TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b
     radius.insert(radius.end(), b.radius.begin(), b.radius.end());
     return {centred_aggregate(std::move(position), std::move(radius), law.convention), ""};
   }
-  return {std::nullopt, stage + "no orientation with the centres of mass Gamma_cc = " +
-                            describe(gamma) + " apart touches without overlap after " +
-                            std::to_string(max_attempts) + " attempts (too compact)"};
+  return {std::nullopt, stage + "no orientation with the centres of mass Gamma_cc = " + describe(gamma) +
+                            " apart touches without overlap after " + std::to_string(max_attempts) +
+                            " attempts (too compact)"};
 }
 
 }  // namespace aerobreak

@@ -29,8 +29,7 @@ struct TunableJoin {
 // uniformly on the circle that leaves, then b's orientation uniformly among those putting x_j
 // there; the attempt is kept if no primary of b overlaps a (hashed cell grid). Fails (with the
 // reason) when Gamma_cc^2 <= 0, when no pair is admissible, or after max_attempts attempts.
-TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b,
-                            const FractalLaw& law, int max_attempts, double overlap_tolerance,
-                            RandomStream& random);
+TunableJoin join_aggregates(const TunableAggregate& a, const TunableAggregate& b, const FractalLaw& law,
+                            int max_attempts, double overlap_tolerance, RandomStream& random);
 
 }  // namespace aerobreak

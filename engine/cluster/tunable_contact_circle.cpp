@@ -6,12 +6,9 @@
 
 namespace aerobreak {
 
-Vec3 ContactCircle::at(double angle) const {
-  return centre + radius * (std::cos(angle) * u + std::sin(angle) * v);
-}
+Vec3 ContactCircle::at(double angle) const { return centre + radius * (std::cos(angle) * u + std::sin(angle) * v); }
 
-std::optional<ContactCircle> contact_circle(const Vec3& centre, const Vec3& primary, double reach,
-                                            double gamma) {
+std::optional<ContactCircle> contact_circle(const Vec3& centre, const Vec3& primary, double reach, double gamma) {
   const Vec3 axis = primary - centre;
   const double d = norm(axis);
   if (!(d > 0.0) || d < std::abs(gamma - reach) || d > gamma + reach) return std::nullopt;
@@ -21,8 +18,7 @@ std::optional<ContactCircle> contact_circle(const Vec3& centre, const Vec3& prim
   const Vec3 helper = std::abs(w.x) < 0.9 ? Vec3{1.0, 0.0, 0.0} : Vec3{0.0, 1.0, 0.0};
   Vec3 u = cross(w, helper);
   u = u / norm(u);
-  return ContactCircle{centre + along * w, u, cross(w, u),
-                       std::sqrt(std::max(0.0, gamma * gamma - along * along))};
+  return ContactCircle{centre + along * w, u, cross(w, u), std::sqrt(std::max(0.0, gamma * gamma - along * along))};
 }
 
 // |P(theta) - x|^2 = |q|^2 + rho^2 + 2 rho (A cos theta + B sin theta) with q = circle centre - x,

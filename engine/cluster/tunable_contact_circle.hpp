@@ -19,8 +19,7 @@ struct ContactCircle {
 };
 
 // Empty when the spheres do not meet or the primary sits at the centre.
-std::optional<ContactCircle> contact_circle(const Vec3& centre, const Vec3& primary, double reach,
-                                            double gamma);
+std::optional<ContactCircle> contact_circle(const Vec3& centre, const Vec3& primary, double reach, double gamma);
 
 // The arc of the circle on which a monomer would come closer than `contact` to the centre of a
 // sphere at x (contact = (1 - tolerance)(r_new + r_x)); empty when it nowhere does.

@@ -18,26 +18,25 @@ ThreePrimaryGyration three_primary_gyration(GyrationConvention convention) {
 
 }  // namespace
 
-PrefactorWindow three_primary_prefactor_window(double fractal_dimension,
-                                               GyrationConvention convention, double tolerance) {
+PrefactorWindow three_primary_prefactor_window(double fractal_dimension, GyrationConvention convention,
+                                               double tolerance) {
   const ThreePrimaryGyration g = three_primary_gyration(convention);
   return {3.0 / std::pow((1.0 + tolerance) * g.chain, fractal_dimension),
           3.0 / std::pow((1.0 - tolerance) * g.triangle, fractal_dimension)};
 }
 
 std::optional<std::string> three_primary_shortfall(const FractalLaw& law, double tolerance) {
-  const PrefactorWindow window =
-      three_primary_prefactor_window(law.fractal_dimension, law.convention, tolerance);
+  const PrefactorWindow window = three_primary_prefactor_window(law.fractal_dimension, law.convention, tolerance);
   if (law.prefactor >= window.lowest && law.prefactor <= window.highest) return std::nullopt;
   const ThreePrimaryGyration g = three_primary_gyration(law.convention);
   std::ostringstream out;
   out.precision(4);
-  out << "particle-cluster stage, three primaries: the law asks for Rg = "
-      << law.gyration_radius(3.0, 1.0) << " a, but three touching primaries of radius a have Rg "
+  out << "particle-cluster stage, three primaries: the law asks for Rg = " << law.gyration_radius(3.0, 1.0)
+      << " a, but three touching primaries of radius a have Rg "
       << "from " << g.triangle << " a (triangle) to " << g.chain << " a (straight chain); "
-      << (law.prefactor < window.lowest ? "too open" : "too compact")
-      << ": at Df = " << law.fractal_dimension << " kf must lie in [" << window.lowest << ", "
-      << window.highest << "] (the window widened by " << 100.0 * tolerance << "%)";
+      << (law.prefactor < window.lowest ? "too open" : "too compact") << ": at Df = " << law.fractal_dimension
+      << " kf must lie in [" << window.lowest << ", " << window.highest << "] (the window widened by "
+      << 100.0 * tolerance << "%)";
   return out.str();
 }
 

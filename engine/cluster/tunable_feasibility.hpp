@@ -17,8 +17,8 @@ struct PrefactorWindow {
   double lowest = 0.0;
   double highest = 0.0;
 };
-PrefactorWindow three_primary_prefactor_window(double fractal_dimension,
-                                               GyrationConvention convention, double tolerance);
+PrefactorWindow three_primary_prefactor_window(double fractal_dimension, GyrationConvention convention,
+                                               double tolerance);
 
 // Why (Df, kf) falls outside the window, or nothing when it is inside.
 std::optional<std::string> three_primary_shortfall(const FractalLaw& law, double tolerance);

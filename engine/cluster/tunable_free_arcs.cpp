@@ -7,8 +7,7 @@
 
 namespace aerobreak {
 
-std::optional<double> free_angle(const std::vector<BlockedArc>& blocked, double u,
-                                 double min_free_length) {
+std::optional<double> free_angle(const std::vector<BlockedArc>& blocked, double u, double min_free_length) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
   std::vector<std::pair<double, double>> spans;  // [begin, end) within [0, 2 pi)
   spans.reserve(2 * blocked.size());

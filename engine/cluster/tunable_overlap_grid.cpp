@@ -26,8 +26,8 @@ TunableOverlapGrid::TunableOverlapGrid(double cell_edge) : table_(16) {
 // Three signed 21-bit cell indices packed into one key; aggregates span far fewer than 2^20 cells.
 std::uint64_t TunableOverlapGrid::pack(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
   constexpr std::uint64_t bits = (std::uint64_t{1} << 21) - 1;
-  return ((static_cast<std::uint64_t>(ix) & bits) << 42) |
-         ((static_cast<std::uint64_t>(iy) & bits) << 21) | (static_cast<std::uint64_t>(iz) & bits);
+  return ((static_cast<std::uint64_t>(ix) & bits) << 42) | ((static_cast<std::uint64_t>(iy) & bits) << 21) |
+         (static_cast<std::uint64_t>(iz) & bits);
 }
 
 std::int64_t TunableOverlapGrid::cell_of(double coordinate) const {
@@ -80,8 +80,7 @@ void TunableOverlapGrid::insert(const Vec3& centre, double radius) {
   bounding_radius_ = std::max(bounding_radius_, norm(centre) + radius);
 }
 
-bool TunableOverlapGrid::overlaps(const Vec3& centre, double radius,
-                                  double relative_tolerance) const {
+bool TunableOverlapGrid::overlaps(const Vec3& centre, double radius, double relative_tolerance) const {
   if (norm(centre) - radius >= bounding_radius_) return false;
   const double keep = 1.0 - relative_tolerance;
   const double reach = radius + 0.5 / inverse_edge_;

@@ -40,8 +40,7 @@ std::string describe(double value) {
 // gyration in O(1): Rg^2 = (sum m |x|^2 + sum m rg_own^2) / M - |c|^2 (FracVAL eqs. 4 and 5).
 class GrowingAggregate {
  public:
-  GrowingAggregate(double cell_edge, GyrationConvention convention)
-      : grid_(cell_edge), convention_(convention) {}
+  GrowingAggregate(double cell_edge, GyrationConvention convention) : grid_(cell_edge), convention_(convention) {}
 
   void add(const Vec3& x, double r) {
     const double m = r * r * r;
@@ -56,9 +55,7 @@ class GrowingAggregate {
   std::size_t size() const { return grid_.size(); }
   double mass() const { return mass_; }
   Vec3 centre() const { return first_ / mass_; }
-  double gyration_radius() const {
-    return std::sqrt(std::max(0.0, (second_ + own_) / mass_ - norm2(centre())));
-  }
+  double gyration_radius() const { return std::sqrt(std::max(0.0, (second_ + own_) / mass_ - norm2(centre()))); }
 
  private:
   TunableOverlapGrid grid_;
@@ -71,8 +68,7 @@ class GrowingAggregate {
 
 class MonomerPlacer {
  public:
-  MonomerPlacer(const GrowingAggregate& aggregate, double max_radius, double overlap_tolerance,
-                RandomStream& random)
+  MonomerPlacer(const GrowingAggregate& aggregate, double max_radius, double overlap_tolerance, RandomStream& random)
       : aggregate_(aggregate),
         max_radius_(max_radius),
         overlap_tolerance_(overlap_tolerance),
@@ -115,18 +111,16 @@ class MonomerPlacer {
       // reach + r + r_j of x_i can block it.
       blocked.clear();
       bool whole = false;
-      grid().for_each_near(
-          x_i, reach + r + max_radius_, [&](std::uint32_t j, const Vec3& x_j, double r_j) {
-            if (j == i || whole) return;
-            const double contact = (1.0 - overlap_tolerance_) * (r_j + r);
-            if (const std::optional<BlockedArc> arc = blocked_arc(*circle, x_j, contact)) {
-              whole = arc->half_width >= std::numbers::pi;
-              blocked.push_back(*arc);
-            }
-          });
+      grid().for_each_near(x_i, reach + r + max_radius_, [&](std::uint32_t j, const Vec3& x_j, double r_j) {
+        if (j == i || whole) return;
+        const double contact = (1.0 - overlap_tolerance_) * (r_j + r);
+        if (const std::optional<BlockedArc> arc = blocked_arc(*circle, x_j, contact)) {
+          whole = arc->half_width >= std::numbers::pi;
+          blocked.push_back(*arc);
+        }
+      });
       if (whole) continue;
-      if (const std::optional<double> angle =
-              free_angle(blocked, random_.uniform(), min_free_arc)) {
+      if (const std::optional<double> angle = free_angle(blocked, random_.uniform(), min_free_arc)) {
         return circle->at(*angle);
       }
     }
@@ -184,8 +178,8 @@ double arrange_radii(std::vector<double>& radii) {
 // Why step k (growing to k + 1 primaries) found no position on the law at Gamma_pc^2 = gamma2.
 std::string off_law_reason(std::size_t k, double gamma2, double farthest) {
   const double gamma = std::sqrt(std::max(0.0, gamma2));
-  const std::string step = "growing the aggregate from " + std::to_string(k) + " to " +
-                           std::to_string(k + 1) + " primaries, ";
+  const std::string step =
+      "growing the aggregate from " + std::to_string(k) + " to " + std::to_string(k + 1) + " primaries, ";
   if (!(gamma2 > 0.0)) return step + "Gamma_pc^2 = " + describe(gamma2) + " <= 0 (too compact)";
   if (gamma > farthest)
     return step + "Gamma_pc = " + describe(gamma) + " is beyond the reach of every primary, at most " +
@@ -209,8 +203,7 @@ Vec3 nearest_off_law_position(MonomerPlacer& placer, double r, double gamma, dou
 }  // namespace
 
 ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const FractalLaw& law,
-                                            const ParticleClusterSettings& settings,
-                                            RandomStream& random) {
+                                            const ParticleClusterSettings& settings, RandomStream& random) {
   const std::size_t n = radii.size();
   const double max_radius = *std::max_element(radii.begin(), radii.end());
   const double a = arrange_radii(radii);
@@ -249,9 +242,8 @@ ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const Fra
     aggregate.add(nearest_off_law_position(placer, r, std::sqrt(std::max(0.0, gamma2)), farthest), r);
 
     const double deviation = std::abs(aggregate.gyration_radius() / target - 1.0);
-    shortfall +=
-        "; the nearest reachable aggregate has Rg = " + describe(aggregate.gyration_radius()) +
-        " where the law asks for " + describe(target);
+    shortfall += "; the nearest reachable aggregate has Rg = " + describe(aggregate.gyration_radius()) +
+                 " where the law asks for " + describe(target);
     if (k + 1 > settings.deviation_tracked_above && deviation > settings.max_deviation) {
       growth.failure = shortfall + " (" + describe(100.0 * deviation) + "% off, tolerated " +
                        describe(100.0 * settings.max_deviation) + "%)";

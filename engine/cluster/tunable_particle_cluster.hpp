@@ -48,7 +48,6 @@ struct ParticleClusterGrowth {
 // use the measured Rg, bring the aggregate back onto the law. The radius nearest to a is kept for
 // the last step, so that the final aggregate can land on the law as a monodisperse one would.
 ParticleClusterGrowth grow_particle_cluster(std::vector<double> radii, const FractalLaw& law,
-                                            const ParticleClusterSettings& settings,
-                                            RandomStream& random);
+                                            const ParticleClusterSettings& settings, RandomStream& random);
 
 }  // namespace aerobreak

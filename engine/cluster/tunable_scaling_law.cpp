@@ -13,8 +13,7 @@ double primary_gyration_squared(double radius, GyrationConvention convention) {
   return convention == GyrationConvention::solid_spheres ? 0.6 * radius * radius : 0.0;
 }
 
-double gyration_radius(std::span<const Vec3> positions, std::span<const double> radii,
-                       GyrationConvention convention) {
+double gyration_radius(std::span<const Vec3> positions, std::span<const double> radii, GyrationConvention convention) {
   if (positions.empty() || positions.size() != radii.size()) {
     throw std::invalid_argument("gyration_radius: need one radius per position, at least one");
   }

@@ -38,8 +38,7 @@ double primary_gyration_squared(double radius, GyrationConvention convention);
 
 // Rg of a set of primaries under the convention (FracVAL eqs. 4 and 5). Throws
 // std::invalid_argument for an empty set or mismatched sizes.
-double gyration_radius(std::span<const Vec3> positions, std::span<const double> radii,
-                       GyrationConvention convention);
+double gyration_radius(std::span<const Vec3> positions, std::span<const double> radii, GyrationConvention convention);
 double gyration_radius(const Cluster& cluster, GyrationConvention convention);
 
 // exp(mean ln r): the primary radius a of the scaling law. Throws std::invalid_argument for an

@@ -13,12 +13,12 @@ struct ContactConstants {
   double work_of_adhesion = 0.0;  // w
 
   // Filled by the normal law:
-  double hertz_coefficient = 0.0;  // K = (4/3) E* sqrt(R*): Hertz force K delta^(3/2)
-  double equilibrium_radius = 0.0; // a0, eq 4 (JKR reference radius; 0 without adhesion)
-  double pull_off_force = 0.0;     // F_c, eq 5 (JKR), pi gamma d analogue (DMT), 0 (Hertz)
-  double critical_overlap = 0.0;   // delta_c, eq 3
-  double break_overlap = 0.0;      // the contact ends when delta < -break_overlap
-  double overlap_scale = 1.0;      // delta times this is the overlap the law solves for (JKR: R*/a0^2)
+  double hertz_coefficient = 0.0;   // K = (4/3) E* sqrt(R*): Hertz force K delta^(3/2)
+  double equilibrium_radius = 0.0;  // a0, eq 4 (JKR reference radius; 0 without adhesion)
+  double pull_off_force = 0.0;      // F_c, eq 5 (JKR), pi gamma d analogue (DMT), 0 (Hertz)
+  double critical_overlap = 0.0;    // delta_c, eq 3
+  double break_overlap = 0.0;       // the contact ends when delta < -break_overlap
+  double overlap_scale = 1.0;       // delta times this is the overlap the law solves for (JKR: R*/a0^2)
 
   bool operator==(const ContactConstants&) const = default;
 };
@@ -30,7 +30,7 @@ struct NormalResponse {
   // Load that sets the friction and twisting limits, >= 0: F_n + 2 F_c for JKR (eq 14), the
   // Hertz part F_n + F_c for DMT, F_n for Hertz.
   double coulomb_load = 0.0;
-  double energy = 0.0;          // elastic energy stored in the normal deformation
+  double energy = 0.0;                     // elastic energy stored in the normal deformation
   double radius_ratio_three_halves = 0.0;  // (a/a0)^(3/2), for the rolling stiffness (eq 18)
 };
 

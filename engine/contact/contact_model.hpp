@@ -10,11 +10,11 @@ namespace aerobreak {
 
 // Relative motion of the two bodies at a contact. For a wall, j's velocities are zero.
 struct ContactMotion {
-  Vec3 normal;             // unit vector from i towards j (into the wall for a wall contact)
-  double overlap = 0.0;    // delta = Ri + Rj - r (> 0 when pressed together)
-  Vec3 velocity;           // v_i - v_j
-  Vec3 spin_i;             // w_i
-  Vec3 spin_j;             // w_j
+  Vec3 normal;           // unit vector from i towards j (into the wall for a wall contact)
+  double overlap = 0.0;  // delta = Ri + Rj - r (> 0 when pressed together)
+  Vec3 velocity;         // v_i - v_j
+  Vec3 spin_i;           // w_i
+  Vec3 spin_j;           // w_j
   // Distances from the centres to the contact point. They add up to the centre distance
   // (R_i - delta/2 and R_j - delta/2; R_i - delta for a wall), so that the tangential force
   // exerts no net torque on the pair and angular momentum is conserved.
@@ -23,7 +23,7 @@ struct ContactMotion {
 };
 
 struct ContactLoad {
-  Vec3 force_i;   // force on i; j receives -force_i
+  Vec3 force_i;  // force on i; j receives -force_i
   Vec3 torque_i;
   Vec3 torque_j;
 };
@@ -93,7 +93,11 @@ struct ContactModel {
     // eq 12: elastic (eq 5) plus viscous normal force, > 0 pushing the bodies apart
     const double normal_force = response.force + damping_force;
 
-    const SpringContext spring{m.normal, dt, response.contact_radius, s.contact_radius, response.coulomb_load,
+    const SpringContext spring{m.normal,
+                               dt,
+                               response.contact_radius,
+                               s.contact_radius,
+                               response.coulomb_load,
                                response.radius_ratio_three_halves};
     const Vec3 slip_velocity = contact_velocity - approach_rate * m.normal;
     const Vec3 tangential_force = tangential.force(s.tangential_stretch, slip_velocity, spring, c, tally);

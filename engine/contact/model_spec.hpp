@@ -17,14 +17,14 @@ struct ContactModelSpec {
   double dissipative_time = 0.0;  // A of the visco-elastic law (eq 8)
   double restitution = 1.0;       // target e of the Tsuji law (eq 9)
 
-  bool tangential = true;         // Mindlin spring with Coulomb limit (eqs 10-14)
-  double friction = 0.5;          // mu (eqs 10, 14, 17)
+  bool tangential = true;  // Mindlin spring with Coulomb limit (eqs 10-14)
+  double friction = 0.5;   // mu (eqs 10, 14, 17)
 
   bool rolling = false;           // rolling resistance (eq 18)
   double critical_rolling = 0.0;  // xi_crit
   bool twisting = false;          // twisting resistance (eq 17)
 
-  bool van_der_waals = false;     // Hamaker attraction outside contact
+  bool van_der_waals = false;  // Hamaker attraction outside contact
   VanDerWaals hamaker;
 
   // Throws std::invalid_argument naming the offending field.

@@ -47,7 +47,8 @@ inline double jkr_radius_ratio(double overlap_ratio) {
 inline double jkr_overlap_ratio(double x) { return x * x - (2.0 / 3.0) * std::sqrt(x); }
 
 // Normal JKR law (Johnson, Kendall & Roberts 1971; report eqs 1-5) in the general form of
-// docs/MODEL.md section 2 (eqs 1-2, general form): F(a) = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3), delta(a) = a^2/R* - sqrt(2 pi w a/E*).
+// docs/MODEL.md section 2 (eqs 1-2, general form): F(a) = 4E*a^3/(3R*) - sqrt(8 pi w E* a^3), delta(a) = a^2/R* -
+// sqrt(2 pi w a/E*).
 struct JkrNormal {
   JkrSeparation separation = JkrSeparation::displacement;
 

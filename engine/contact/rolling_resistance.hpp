@@ -6,9 +6,7 @@
 namespace aerobreak {
 
 struct NoRolling {
-  Vec3 torque(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const {
-    return {};
-  }
+  Vec3 torque(Vec3&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const { return {}; }
   static double energy(const Vec3&, double, const ContactConstants&) { return 0.0; }
 };
 

@@ -18,7 +18,8 @@ namespace aerobreak {
 // stored energy, both at the stiffness k of this step:
 // D = k/2 [(s_old + s_new).increment + |s_old|^2 - |s_new|^2]. Zero while the spring stays
 // elastic (s_new = s_old + increment); k |s| |increment| while it slides at its limit.
-[[gnu::always_inline]] inline double slip_dissipation(double stiffness, const Vec3& before, const Vec3& increment, const Vec3& after) {
+[[gnu::always_inline]] inline double slip_dissipation(double stiffness, const Vec3& before, const Vec3& increment,
+                                                      const Vec3& after) {
   return 0.5 * stiffness * (dot(before + after, increment) + norm2(before) - norm2(after));
 }
 

@@ -9,11 +9,11 @@ namespace aerobreak {
 
 // What a tangential, rolling or twisting law reads of the current contact.
 struct SpringContext {
-  Vec3 normal;                  // unit normal, from i to j
+  Vec3 normal;  // unit normal, from i to j
   double dt = 0.0;
-  double contact_radius = 0.0;  // a, this step
-  double previous_radius = 0.0; // a, last step (for the stiffness change)
-  double coulomb_load = 0.0;    // from the normal law: F_n + 2 F_c for JKR (eq 14)
+  double contact_radius = 0.0;             // a, this step
+  double previous_radius = 0.0;            // a, last step (for the stiffness change)
+  double coulomb_load = 0.0;               // from the normal law: F_n + 2 F_c for JKR (eq 14)
   double radius_ratio_three_halves = 0.0;  // (a/a0)^(3/2), from the normal law
 };
 
@@ -52,7 +52,9 @@ struct MindlinTangential {
   }
 
   // k_t = 8 G* a at contact radius a.
-  static double stiffness_at(double contact_radius, const ContactConstants& c) { return 8.0 * c.shear * contact_radius; }
+  static double stiffness_at(double contact_radius, const ContactConstants& c) {
+    return 8.0 * c.shear * contact_radius;
+  }
 
   // Energy of the spring stretched by `stretch` at contact radius a: k_t |s|^2 / 2.
   static double energy(const Vec3& stretch, double contact_radius, const ContactConstants& c) {

@@ -7,7 +7,9 @@
 namespace aerobreak {
 
 struct NoTwisting {
-  Vec3 torque(double&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const { return {}; }
+  Vec3 torque(double&, const Vec3&, const SpringContext&, const ContactConstants&, DissipationTally&) const {
+    return {};
+  }
   static double energy(double, double, const ContactConstants&) { return 0.0; }
 };
 

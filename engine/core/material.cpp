@@ -9,8 +9,7 @@ void Material::validate(const std::string& what) const {
     if (!ok) throw std::invalid_argument(what + "." + field + " must be " + rule);
   };
   require(std::isfinite(youngs_modulus) && youngs_modulus > 0.0, "youngs_modulus", "positive");
-  require(std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5, "poisson_ratio",
-          "in (-1, 0.5)");
+  require(std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5, "poisson_ratio", "in (-1, 0.5)");
   require(std::isfinite(density) && density > 0.0, "density", "positive");
   require(std::isfinite(surface_energy) && surface_energy >= 0.0, "surface_energy", "non-negative");
 }

@@ -14,7 +14,7 @@ double adhesion_energy_ratio(const Material& m, double diameter, double impact_s
   const double pi = std::numbers::pi;
   const double nu2 = 1.0 - m.poisson_ratio * m.poisson_ratio;
   const double a0 = std::cbrt(9.0 * pi * m.surface_energy * nu2 * diameter * diameter / (8.0 * m.youngs_modulus));
-  const double pull_off = 0.75 * pi * m.surface_energy * diameter;               // eq 5
+  const double pull_off = 0.75 * pi * m.surface_energy * diameter;              // eq 5
   const double critical_overlap = 2.0 * a0 * a0 / (diameter * std::cbrt(6.0));  // eq 3
   const double mass = m.density * pi * diameter * diameter * diameter / 6.0;
   return 2.0 * pull_off * critical_overlap / (mass * impact_speed * impact_speed);  // eq 19

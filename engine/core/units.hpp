@@ -21,16 +21,16 @@ Material reduced_material(double gamma_over_kn, double poisson_ratio);
 // problem for every s: s only relabels time, t_physical = t_reduced * tau, whereas the softened
 // simulation's own clock reads t_reduced * tau / sqrt(s). Both are reported.
 struct PhysicalScaling {
-  Material material;      // physical (SI) material
-  double diameter = 0.0;  // m
-  double softening = 1.0; // s, 0 < s <= 1
+  Material material;       // physical (SI) material
+  double diameter = 0.0;   // m
+  double softening = 1.0;  // s, 0 < s <= 1
 
-  double mass() const;                 // kg
-  double stiffness() const;            // k_n (eq 7), N/m
-  double time_unit() const;            // tau = sqrt(m / k_n), s
-  double speed_unit() const;           // d / tau, m/s
-  double energy_unit() const;          // k_n d^2, J
-  Material reduced() const;            // the reduced material of the same gamma/k_n and nu
+  double mass() const;         // kg
+  double stiffness() const;    // k_n (eq 7), N/m
+  double time_unit() const;    // tau = sqrt(m / k_n), s
+  double speed_unit() const;   // d / tau, m/s
+  double energy_unit() const;  // k_n d^2, J
+  Material reduced() const;    // the reduced material of the same gamma/k_n and nu
   double reduced_speed(double speed) const { return speed / speed_unit(); }
   double physical_speed(double reduced) const { return reduced * speed_unit(); }
   double physical_time(double reduced) const { return reduced * time_unit(); }

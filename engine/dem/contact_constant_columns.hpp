@@ -48,8 +48,17 @@ class ContactConstantColumns : public ColumnSet<ContactConstantColumns> {
  private:
   friend class ColumnSet<ContactConstantColumns>;
   std::vector<std::vector<double>*> columns() {
-    return {&radius,         &mass,           &modulus,          &shear,         &work_of_adhesion, &hertz_coefficient,
-            &equilibrium_radius, &pull_off_force, &critical_overlap, &break_overlap, &overlap_scale};
+    return {&radius,
+            &mass,
+            &modulus,
+            &shear,
+            &work_of_adhesion,
+            &hertz_coefficient,
+            &equilibrium_radius,
+            &pull_off_force,
+            &critical_overlap,
+            &break_overlap,
+            &overlap_scale};
   }
 };
 

@@ -35,8 +35,8 @@ class ContactForcesFor final : public ContactForces {
     model_.release(contact, overlap, approach_rate, dt, tally);
   }
 
-  void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt,
-                       double formation_gap, const std::vector<Pass>& passes) const override {
+  void add_pair_forces(Particles& p, PairList& pairs, const MaterialTable& materials, double dt, double formation_gap,
+                       const std::vector<Pass>& passes) const override {
     add_pair_forces_in(OpenSpace{}, p, pairs, materials, dt, formation_gap, passes);
   }
   void add_periodic_pair_forces(Particles& p, PairList& pairs, const PeriodicBox& box, const MaterialTable& materials,
@@ -68,17 +68,17 @@ class ContactForcesFor final : public ContactForces {
         hand_over(local, -overlap, state.constants.radius, +1.0);
         // The overlap grew by dt times the approach rate in the drift that made the contact.
         if (ledger.drifted)
-          p.force[i] -= formation_timing(state.constants, overlap - dt * dot(p.velocity[i], into_wall), overlap, dt,
-                                         local) *
-                        into_wall;
+          p.force[i] -=
+              formation_timing(state.constants, overlap - dt * dot(p.velocity[i], into_wall), overlap, dt, local) *
+              into_wall;
       }
       if (overlap < -ledger.pool.break_overlap(slot)) {
         p.force[i] -= close(slot, overlap, dot(p.velocity[i], into_wall), dt, local) * into_wall;
         continue;
       }
       ContactState state = ledger.pool.state(slot);
-      const ContactMotion motion{into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{},
-                                 p.radius[i] - overlap, 0.0};
+      const ContactMotion motion{
+          into_wall, overlap, p.velocity[i], p.angular_velocity[i], Vec3{}, p.radius[i] - overlap, 0.0};
       const ContactLoad load = model_.evaluate(state, motion, dt, tally);
       ledger.pool.history.set(slot, state);
       deepest = std::max(deepest, overlap / state.constants.radius);
@@ -161,8 +161,8 @@ class ContactForcesFor final : public ContactForces {
     const Vec3* spin = p.angular_velocity.data();
     const double* radius = p.radius.data();
     ContactPool& pool = pass.ledger.pool;
-    ContactLedger local{pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted,
-                        pass.ledger.timing_weight};
+    ContactLedger local{
+        pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals, pass.ledger.drifted, pass.ledger.timing_weight};
     const std::size_t n = pairs.particles();
     for (std::uint32_t i = c.row; i < end; ++i) {
       if (i - c.reported >= completion_run) report_before(i, p, dt, pass, block, c);
@@ -202,9 +202,9 @@ class ContactForcesFor final : public ContactForces {
   }
 
   // Evaluates the block and reports the particles before `row` complete.
-  void report_before(std::size_t row, Particles& p, double dt, const Pass& pass, ContactBlock& block,
-                     Cursor& c) const {
-    ContactLedger local{pass.ledger.pool, c.tally, pass.ledger.events, pass.ledger.van_der_waals,
+  void report_before(std::size_t row, Particles& p, double dt, const Pass& pass, ContactBlock& block, Cursor& c) const {
+    ContactLedger local{pass.ledger.pool,    c.tally,
+                        pass.ledger.events,  pass.ledger.van_der_waals,
                         pass.ledger.drifted, pass.ledger.timing_weight};
     finish_block(block, p, dt, local);
     pass.completed.complete(c.reported, row);
@@ -328,8 +328,8 @@ class ContactForcesFor final : public ContactForces {
   std::int32_t open_pair(const Particles& p, const MaterialTable& materials, std::uint32_t i, std::uint32_t j,
                          double overlap, ContactLedger& ledger) const {
     ContactState state;
-    state.constants =
-        sphere_pair_constants(p.radius[i], p.mass[i], p.radius[j], p.mass[j], materials.pair(p.material[i], p.material[j]));
+    state.constants = sphere_pair_constants(p.radius[i], p.mass[i], p.radius[j], p.mass[j],
+                                            materials.pair(p.material[i], p.material[j]));
     state.i = i;
     state.j = j;
     model_.open(state, overlap);
@@ -387,11 +387,12 @@ class ContactForcesFor final : public ContactForces {
 
   // A pair entering contact leaves the van der Waals sum (sign +1); one leaving re-enters it (-1).
   static void hand_over(ContactLedger& ledger, double gap, double reduced_radius, double sign) {
-    if (ledger.van_der_waals) ledger.tally.van_der_waals_handover += sign * ledger.van_der_waals->at_gap(gap, reduced_radius).energy;
+    if (ledger.van_der_waals)
+      ledger.tally.van_der_waals_handover += sign * ledger.van_der_waals->at_gap(gap, reduced_radius).energy;
   }
 
   Model model_;
-  mutable ContactBlock block_;              // scratch of take_rows, kept to reuse its memory
+  mutable ContactBlock block_;                // scratch of take_rows, kept to reuse its memory
   mutable std::vector<std::uint32_t> reach_;  // scratch of find_reach
 };
 
@@ -403,18 +404,24 @@ using TwistingChoice = std::variant<NoTwisting, TwistingResistance>;
 
 NormalChoice choose_normal(const ContactModelSpec& spec, NormalLaw law) {
   switch (law) {
-    case NormalLaw::jkr: return JkrNormal{spec.separation};
-    case NormalLaw::dmt: return DmtNormal{};
-    case NormalLaw::hertz: return HertzNormal{};
+    case NormalLaw::jkr:
+      return JkrNormal{spec.separation};
+    case NormalLaw::dmt:
+      return DmtNormal{};
+    case NormalLaw::hertz:
+      return HertzNormal{};
   }
   return JkrNormal{spec.separation};
 }
 
 DampingChoice choose_damping(const ContactModelSpec& spec) {
   switch (spec.damping) {
-    case DampingLaw::none: return NoDamping{};
-    case DampingLaw::viscoelastic: return ViscoElasticDamping{spec.dissipative_time};
-    case DampingLaw::tsuji: return TsujiDamping{tsuji_alpha(spec.restitution)};
+    case DampingLaw::none:
+      return NoDamping{};
+    case DampingLaw::viscoelastic:
+      return ViscoElasticDamping{spec.dissipative_time};
+    case DampingLaw::tsuji:
+      return TsujiDamping{tsuji_alpha(spec.restitution)};
   }
   return NoDamping{};
 }

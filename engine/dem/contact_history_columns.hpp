@@ -42,8 +42,8 @@ class ContactHistoryColumns : public ColumnSet<ContactHistoryColumns> {
  private:
   friend class ColumnSet<ContactHistoryColumns>;
   std::vector<std::vector<double>*> columns() {
-    return {&stretch_x,      &stretch_y,     &stretch_z, &rolling_x,     &rolling_y,     &rolling_z,        &twist,
-            &contact_radius, &overlap,   &damping_force};
+    return {&stretch_x, &stretch_y, &stretch_z,      &rolling_x, &rolling_y,
+            &rolling_z, &twist,     &contact_radius, &overlap,   &damping_force};
   }
 };
 

@@ -75,10 +75,10 @@ class ContactMotionColumns : public ColumnSet<ContactMotionColumns> {
  private:
   friend class ColumnSet<ContactMotionColumns>;
   std::vector<std::vector<double>*> columns() {
-    return {&normal_x, &normal_y,   &normal_z,   &overlap,    &velocity_x, &velocity_y, &velocity_z, &spin_i_x,
-            &spin_i_y, &spin_i_z,   &spin_j_x,   &spin_j_y,   &spin_j_z,   &lever_i,    &lever_j,    &force_x,
-            &force_y,  &force_z,    &torque_i_x, &torque_i_y, &torque_i_z, &torque_j_x, &torque_j_y, &torque_j_z,
-            &damping,  &friction,   &rolling,    &twisting,   &stiffness_work};
+    return {&normal_x, &normal_y, &normal_z,   &overlap,    &velocity_x,    &velocity_y, &velocity_z, &spin_i_x,
+            &spin_i_y, &spin_i_z, &spin_j_x,   &spin_j_y,   &spin_j_z,      &lever_i,    &lever_j,    &force_x,
+            &force_y,  &force_z,  &torque_i_x, &torque_i_y, &torque_i_z,    &torque_j_x, &torque_j_y, &torque_j_z,
+            &damping,  &friction, &rolling,    &twisting,   &stiffness_work};
   }
 
   std::vector<double> velocity_x, velocity_y, velocity_z;  // v_i - v_j

@@ -12,9 +12,7 @@ Particles particles_from_cluster(const Cluster& cluster, double density, std::ui
   return p;
 }
 
-Cluster cluster_from_particles(const Particles& particles) {
-  return {particles.position, particles.radius};
-}
+Cluster cluster_from_particles(const Particles& particles) { return {particles.position, particles.radius}; }
 
 Particles place_for_impact(const Particles& cluster, const Rotation& orientation, const Wall& wall, double gap,
                            const Vec3& velocity) {

@@ -18,13 +18,13 @@ struct RelaxationSettings {
 };
 
 struct RelaxationResult {
-  Particles particles;               // relaxed positions, zero velocities
+  Particles particles;  // relaxed positions, zero velocities
   std::int64_t steps = 0;
   bool converged = false;
-  double kinetic_per_particle = 0.0; // at the end: mean of (kinetic energy of i / E_i)
-  double largest_force = 0.0;        // at the end: largest (net force on i / F_c,i)
-  std::size_t contacts = 0;          // particle-particle contacts at the end
-  std::uint64_t contacts_broken = 0; // during relaxation (0 for a cluster that holds together)
+  double kinetic_per_particle = 0.0;  // at the end: mean of (kinetic energy of i / E_i)
+  double largest_force = 0.0;         // at the end: largest (net force on i / F_c,i)
+  std::size_t contacts = 0;           // particle-particle contacts at the end
+  std::uint64_t contacts_broken = 0;  // during relaxation (0 for a cluster that holds together)
 };
 
 // Brings a cluster built at touching distance to mechanical equilibrium (docs/MODEL.md 11.1):

@@ -16,7 +16,8 @@ namespace {
 void validate_particles(const Particles& p, std::size_t material_count) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::string which = "particle " + std::to_string(i);
-    if (!(p.radius[i] > 0.0) || !std::isfinite(p.radius[i])) throw std::invalid_argument(which + ": radius must be > 0");
+    if (!(p.radius[i] > 0.0) || !std::isfinite(p.radius[i]))
+      throw std::invalid_argument(which + ": radius must be > 0");
     if (!(p.mass[i] > 0.0) || !std::isfinite(p.mass[i])) throw std::invalid_argument(which + ": mass must be > 0");
     if (p.material[i] >= material_count) throw std::invalid_argument(which + ": unknown material index");
     const Vec3& x = p.position[i];
@@ -161,7 +162,8 @@ double Simulation::speed_scale() const {
   if (settings_.speed_scale > 0.0) return settings_.speed_scale;
   double fastest = 0.0;
   for (std::size_t i = 0; i < particles_.size(); ++i)
-    fastest = std::max(fastest, norm(particles_.velocity[i]) + norm(particles_.angular_velocity[i]) * particles_.radius[i]);
+    fastest =
+        std::max(fastest, norm(particles_.velocity[i]) + norm(particles_.angular_velocity[i]) * particles_.radius[i]);
   // Gravity can accelerate a particle over the height of the system (plus one diameter).
   const double g = norm(settings_.body.gravity);
   if (g > 0.0) {
@@ -190,9 +192,9 @@ double Simulation::interaction_margin() const {
   std::set<std::uint16_t> present(particles_.material.begin(), particles_.material.end());
   for (auto a : present)
     for (auto b : present) {
-      ContactConstants c = sphere_pair_constants(particles_.radius[largest], particles_.mass[largest],
-                                                 particles_.radius[largest], particles_.mass[largest],
-                                                 materials_.pair(a, b));
+      ContactConstants c =
+          sphere_pair_constants(particles_.radius[largest], particles_.mass[largest], particles_.radius[largest],
+                                particles_.mass[largest], materials_.pair(a, b));
       pair_forces_->complete(c);
       margin = std::max(margin, c.break_overlap);
     }

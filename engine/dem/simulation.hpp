@@ -26,15 +26,15 @@ struct SimulationSettings {
   double time_step = 0.0;          // 0: automatic, from recommend_time_step
   double steps_per_period = 50.0;  // safety factors of the automatic step (TimeStepFactors)
   double steps_per_break_overlap = 10.0;
-  double speed_scale = 0.0;        // largest speed the automatic step must resolve; 0: from the initial state
+  double speed_scale = 0.0;  // largest speed the automatic step must resolve; 0: from the initial state
   // The automatic step chosen again during the run from the speeds of the moment (StepChooser,
   // docs/MODEL.md 9.2), never longer than the contact period allows at the speed scale; false:
   // one step for the whole run, at the speed scale. Only where the step has an adhesion loop to
   // resolve (steps_per_break_overlap > 0, a law with a tensile range), in open space and without
   // Langevin forces.
   bool adaptive_time_step = true;
-  double step_headroom = 0.25;     // StepChooser's headroom
-  double skin = 0.0;               // Verlet skin; 0: automatic, from the speed scale and time step
+  double step_headroom = 0.25;  // StepChooser's headroom
+  double skin = 0.0;            // Verlet skin; 0: automatic, from the speed scale and time step
   bool brute_force_neighbors = false;
   // Pairs whose surfaces are closer than this at the start are in contact from the start: a
   // cluster built at touching distance is bonded whatever the round-off in its coordinates.
@@ -187,9 +187,9 @@ class Simulation {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double external_work_ = 0.0;
-  std::vector<double> half_step_per_mass_;     // dt / (2 m_i)
-  std::vector<double> half_step_per_inertia_;  // dt / (2 I_i)
-  std::vector<double> next_half_step_per_mass_;     // the same for next_dt_ while it differs
+  std::vector<double> half_step_per_mass_;       // dt / (2 m_i)
+  std::vector<double> half_step_per_inertia_;    // dt / (2 I_i)
+  std::vector<double> next_half_step_per_mass_;  // the same for next_dt_ while it differs
   std::vector<double> next_half_step_per_inertia_;
   std::vector<ImageCount> images_;
   double van_der_waals_energy_ = 0.0;

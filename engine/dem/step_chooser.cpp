@@ -8,7 +8,10 @@ namespace aerobreak {
 
 StepChooser::StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom,
                          double turn)
-    : cap_(cap), overlaps_(overlaps), steps_per_break_overlap_(steps_per_break_overlap), headroom_(headroom),
+    : cap_(cap),
+      overlaps_(overlaps),
+      steps_per_break_overlap_(steps_per_break_overlap),
+      headroom_(headroom),
       turn_(turn) {
   if (!(cap > 0.0) || !std::isfinite(cap)) throw std::invalid_argument("step chooser: the cap must be > 0");
   if (!(steps_per_break_overlap > 0.0))

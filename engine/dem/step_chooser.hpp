@@ -77,8 +77,8 @@ class StepChooser {
 
  private:
   struct PairSpeeds {
-    double approach = 0.0;  // largest |along| + turn |across| of a listed pair
-    double relative = 0.0;  // largest relative speed
+    double approach = 0.0;                                     // largest |along| + turn |across| of a listed pair
+    double relative = 0.0;                                     // largest relative speed
     double closest = std::numeric_limits<double>::infinity();  // smallest distance between centres
   };
   PairSpeeds pair_speeds(const Particles& particles, const PairList& pairs) const;

@@ -89,7 +89,8 @@ Stiffest stiffest_mode(const Probe& probe, const ContactModelSpec& spec) {
   const double energy = 0.5 * c.mass * probe.speed * probe.speed + 2.0 * adhesion_work;
   Stiffest s;
   s.deepest = overlap_for_energy(law, c, std::max(energy, 1e-300));
-  const double equilibrium = c.equilibrium_radius > 0.0 ? c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius) : 0.0;
+  const double equilibrium =
+      c.equilibrium_radius > 0.0 ? c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius) : 0.0;
   for (double overlap : {s.deepest, equilibrium})
     if (overlap > 0.0) {
       const double kn = normal_stiffness(law, c, overlap);

@@ -26,14 +26,14 @@ enum class TimeStepLimit { contact_period, break_overlap };
 struct TimeStepEstimate {
   double time_step = 0.0;
   TimeStepLimit limit = TimeStepLimit::contact_period;
-  double period = 0.0;            // shortest contact oscillation period found
-  double stiffness = 0.0;         // the stiffness that sets it (normal, or tangential x 7/2)
-  double mass = 0.0;              // the reduced mass that sets it
-  double overlap = 0.0;           // deepest overlap the contact can reach
-  double steps_per_period = 0.0;  // the factor the period is divided by
-  double crossing_time = 0.0;     // shortest break overlap / approach speed (0: no tensile range)
-  double break_overlap = 0.0;     // the delta_b that sets it
-  double approach_speed = 0.0;    // the approach speed that sets it
+  double period = 0.0;                   // shortest contact oscillation period found
+  double stiffness = 0.0;                // the stiffness that sets it (normal, or tangential x 7/2)
+  double mass = 0.0;                     // the reduced mass that sets it
+  double overlap = 0.0;                  // deepest overlap the contact can reach
+  double steps_per_period = 0.0;         // the factor the period is divided by
+  double crossing_time = 0.0;            // shortest break overlap / approach speed (0: no tensile range)
+  double break_overlap = 0.0;            // the delta_b that sets it
+  double approach_speed = 0.0;           // the approach speed that sets it
   double steps_per_break_overlap = 0.0;  // the factor the crossing time is divided by
 };
 

@@ -22,9 +22,9 @@ class Simulation;
 class Wavefront {
  public:
   struct Settings {
-    int depth = 16;                          // deepest wavefront; 1: one step at a time
-    std::size_t min_particles = 24000;       // fewer particles: one step at a time
-    double margin = 2.0;                     // a step moves a particle at most this many times the last step's farthest
+    int depth = 16;                     // deepest wavefront; 1: one step at a time
+    std::size_t min_particles = 24000;  // fewer particles: one step at a time
+    double margin = 2.0;                // a step moves a particle at most this many times the last step's farthest
   };
   explicit Wavefront(Settings settings) : settings_(settings) {}
 

@@ -9,8 +9,7 @@ namespace aerobreak {
 
 ContactConstants primary_contact(const Material& material, const ContactModelSpec& model, double diameter,
                                  double mass) {
-  ContactConstants c =
-      sphere_pair_constants(0.5 * diameter, mass, 0.5 * diameter, mass, combine(material, material));
+  ContactConstants c = sphere_pair_constants(0.5 * diameter, mass, 0.5 * diameter, mass, combine(material, material));
   make_contact_forces(model, model.normal)->complete(c);
   return c;
 }

@@ -35,8 +35,7 @@ struct BrownianConditions {
 
 // Constants of a contact between two primaries of this material, diameter and mass, as the
 // model's normal law fills them (a0, F_c, delta_c, break overlap).
-ContactConstants primary_contact(const Material& material, const ContactModelSpec& model, double diameter,
-                                 double mass);
+ContactConstants primary_contact(const Material& material, const ContactModelSpec& model, double diameter, double mass);
 
 // Throws std::invalid_argument for a non-positive ratio, length, diameter or mass, or a contact
 // model without adhesion (Hertz: no bond to keep).

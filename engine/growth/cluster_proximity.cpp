@@ -38,8 +38,9 @@ GroupProximity GroupProximitySearch::find(const std::vector<Vec3>& position, con
     if (gap < close_gap) result.close.emplace_back(a, b);
   }
   // Pairs of groups not found are at least the search gap apart, and at least their spheres' gap.
-  const bool spheres_known = spheres.size() == groups && groups <= sphere_limit_ &&
-                             std::all_of(spheres.begin(), spheres.end(), [](const BoundingSphere& s) { return s.reach >= 0.0; });
+  const bool spheres_known =
+      spheres.size() == groups && groups <= sphere_limit_ &&
+      std::all_of(spheres.begin(), spheres.end(), [](const BoundingSphere& s) { return s.reach >= 0.0; });
   for (std::uint32_t a = 0; a < groups; ++a) {
     if (!spheres_known) {
       if (groups > 1 && found[a].size() + 1 < groups) result.gap[a] = std::min(result.gap[a], search_gap_);
@@ -48,7 +49,8 @@ GroupProximity GroupProximitySearch::find(const std::vector<Vec3>& position, con
     std::sort(found[a].begin(), found[a].end());
     for (std::uint32_t b = 0; b < groups; ++b) {
       if (b == a || std::binary_search(found[a].begin(), found[a].end(), b)) continue;
-      const double apart = norm(box_.minimum_image(spheres[b].centre - spheres[a].centre)) - spheres[a].reach - spheres[b].reach;
+      const double apart =
+          norm(box_.minimum_image(spheres[b].centre - spheres[a].centre)) - spheres[a].reach - spheres[b].reach;
       result.gap[a] = std::min(result.gap[a], std::max(search_gap_, apart));
     }
   }

@@ -53,8 +53,9 @@ std::vector<ContactCluster> contact_clusters(const Simulation& simulation) {
     if (box && norm(placed[j] - placed[i] - simulation.separation(i, j)) > 0.5 * box->shortest_edge())
       ++cluster.image_contacts;
   }
-  std::stable_sort(clusters.begin(), clusters.end(),
-                   [](const ContactCluster& a, const ContactCluster& b) { return a.members.size() > b.members.size(); });
+  std::stable_sort(clusters.begin(), clusters.end(), [](const ContactCluster& a, const ContactCluster& b) {
+    return a.members.size() > b.members.size();
+  });
   return clusters;
 }
 

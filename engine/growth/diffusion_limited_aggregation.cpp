@@ -51,7 +51,8 @@ Particles primaries_at(const std::vector<Vec3>& positions, double density) {
 }
 
 // Runs the plain engine until one cluster is left; returns the steps taken.
-std::int64_t grow(Simulation& sim, const DiffusionLimitedParameters& p, const DiffusionLimitedProgressCallback& progress) {
+std::int64_t grow(Simulation& sim, const DiffusionLimitedParameters& p,
+                  const DiffusionLimitedProgressCallback& progress) {
   const std::size_t n = sim.particles().size();
   while (true) {
     const auto sizes = connected_component_sizes(n, contact_edges(sim));
@@ -113,7 +114,8 @@ void DiffusionLimitedParameters::validate() const {
   require(far_field.encounter_gap > 0.0, "far_field.encounter_gap must be > 0");
   require(far_field.release_gap >= far_field.encounter_gap, "far_field.release_gap must be >= encounter_gap");
   require(far_field.settle_time >= 0.0, "far_field.settle_time must be >= 0");
-  require(far_field.step_fraction > 0.0 && far_field.step_fraction <= 0.5, "far_field.step_fraction must lie in (0, 0.5]");
+  require(far_field.step_fraction > 0.0 && far_field.step_fraction <= 0.5,
+          "far_field.step_fraction must lie in (0, 0.5]");
   require(far_field.search_gap >= far_field.release_gap, "far_field.search_gap must be >= release_gap");
 }
 
@@ -127,7 +129,8 @@ DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& 
   const Material material = reduced_material(p.gamma_over_kn, p.poisson_ratio);
   const ContactModelSpec spec = growth_model(p, material);
   DiffusionLimitedResult result;
-  result.conditions = brownian_conditions(material, spec, kDiameter, kMass, p.bond_energy_over_kt, p.persistence_length);
+  result.conditions =
+      brownian_conditions(material, spec, kDiameter, kMass, p.bond_energy_over_kt, p.persistence_length);
   result.box_edge = cube_edge_for_volume_fraction(p.primary_count, kDiameter, p.volume_fraction);
   if (p.primary_count == 1) {
     result.cluster = {{Vec3{}}, {0.5 * kDiameter}};
@@ -145,7 +148,8 @@ DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& 
   // A Langevin stream apart from the placement's: counter-based on (seed, step, particle).
   settings.body.langevin = {result.conditions.temperature, result.conditions.drag_per_diameter,
                             seed ^ 0x6a09e667f3bcc909ULL};
-  Particles primaries = primaries_at(random_sequential_positions(p.primary_count, box, kDiameter, random), material.density);
+  Particles primaries =
+      primaries_at(random_sequential_positions(p.primary_count, box, kDiameter, random), material.density);
   Simulation sim(primaries, {material}, {}, spec, settings);
   result.time_step = sim.time_step();
   ContactCluster grown;
@@ -156,8 +160,12 @@ DiffusionLimitedResult grow_diffusion_limited(const DiffusionLimitedParameters& 
     // overlap: a bond in tension stays bonded. A new contact between clusters still needs a touch
     // (they enter at encounter_gap, far beyond it), unless a rigid step overshot (overlaps).
     settings.initial_bond_gap = primary_contact(material, spec, kDiameter, kMass).break_overlap;
-    const PrimaryBath bath{0.5 * kDiameter, kMass, primaries.inertia.front(), result.conditions.drag,
-                           result.conditions.drag * kDiameter * kDiameter / 3.0, result.conditions.temperature};
+    const PrimaryBath bath{0.5 * kDiameter,
+                           kMass,
+                           primaries.inertia.front(),
+                           result.conditions.drag,
+                           result.conditions.drag * kDiameter * kDiameter / 3.0,
+                           result.conditions.temperature};
     RigidFarFieldSettings far = p.far_field;
     far.engine_chunk = p.check_interval;
     far.max_steps = p.max_steps;

@@ -25,7 +25,7 @@ struct DiffusionLimitedParameters {
   // the box edge); the fractal dimension does not change measurably between 0.03 % and 1 % at
   // N = 256 (docs/VALIDATION.md section 7).
   double volume_fraction = 0.001;
-  double gamma_over_kn = 0.01;     // reduced material (eq 7; reduced_material)
+  double gamma_over_kn = 0.01;  // reduced material (eq 7; reduced_material)
   double poisson_ratio = 0.3;
   // The report's sintering constraints: rolling (eq 18) and twisting (eq 17) resistance. On,
   // the clusters keep the open structure their collisions built (DLCA, figure 3b); off, bonded
@@ -42,8 +42,8 @@ struct DiffusionLimitedParameters {
   // would otherwise rattle the new bond for a drag time m / zeta (~220 tau at the defaults).
   // Rigid-body motion of the clusters, and so their diffusion, is untouched by it.
   double damping_ratio = 0.5;
-  bool tangential = true;          // Mindlin spring with Coulomb limit (eqs 10-14), either way
-  double friction = 0.5;           // mu (eqs 14, 17)
+  bool tangential = true;  // Mindlin spring with Coulomb limit (eqs 10-14), either way
+  double friction = 0.5;   // mu (eqs 14, 17)
   // E_b / kT (brownian_conditions). 100 is the physical value for the report's 20 nm primaries
   // (gamma = 0.05 J/m^2, E = 20 GPa, nu = 0.3 at 300 K: E_b ~ 1.54 F_c delta_c ~ 4e-19 J). It
   // also keeps the bonded clusters stiff enough: a joint's rolling spring (eq 18) lets it bend
@@ -89,10 +89,10 @@ struct DiffusionLimitedParameters {
 // Plain mode: every check_interval steps; rigid far field: at the start and whenever the number of
 // clusters changes.
 struct DiffusionLimitedProgress {
-  std::int64_t steps = 0;       // engine steps (plain) or rigid steps (rigid far field)
-  double time = 0.0;            // in tau = sqrt(m / k_n)
-  std::size_t clusters = 0;     // connected components of the contact graph, monomers included
-  std::size_t largest = 0;      // primaries in the largest
+  std::int64_t steps = 0;    // engine steps (plain) or rigid steps (rigid far field)
+  double time = 0.0;         // in tau = sqrt(m / k_n)
+  std::size_t clusters = 0;  // connected components of the contact graph, monomers included
+  std::size_t largest = 0;   // primaries in the largest
   // Every cluster, reassembled, largest first (e.g. for GrowthHistory); valid only during the call.
   const std::vector<ContactCluster>* components = nullptr;
 };
@@ -102,10 +102,10 @@ struct DiffusionLimitedResult {
   Cluster cluster;  // relaxed, centred on its centre of mass
   BrownianConditions conditions;
   double box_edge = 0.0;
-  double time_step = 0.0;     // of the engine
-  std::int64_t steps = 0;     // growth steps until one cluster remained (engine or rigid steps)
-  double time = 0.0;          // growth time, tau
-  std::size_t contacts = 0;   // contacts of the grown cluster (before relaxation)
+  double time_step = 0.0;    // of the engine
+  std::int64_t steps = 0;    // growth steps until one cluster remained (engine or rigid steps)
+  double time = 0.0;         // growth time, tau
+  std::size_t contacts = 0;  // contacts of the grown cluster (before relaxation)
   // Contacts that broke during the growth: DLCA assumes none (bonds are permanent); a few mean
   // bond_energy_over_kt is too low for the run's length.
   std::uint64_t contacts_broken = 0;

@@ -16,10 +16,10 @@ namespace aerobreak {
 // sigma^2 exp(-gamma t) and the mean square displacement 2 D (t - (1 - exp(-gamma t)) / gamma),
 // D = kT / Z, are those of the Langevin equation itself, whatever the step.
 struct OrnsteinUhlenbeckStep {
-  double velocity_decay = 1.0;       // mu
-  double velocity_spread = 0.0;      // s_v
-  double drift_per_velocity = 0.0;   // e / gamma
-  double correlated_spread = 0.0;    // c / s_v
+  double velocity_decay = 1.0;      // mu
+  double velocity_spread = 0.0;     // s_v
+  double drift_per_velocity = 0.0;  // e / gamma
+  double correlated_spread = 0.0;   // c / s_v
   double independent_spread = 0.0;  // s_r
 
   // Applies the step to (x, v) with the two standard normals g1, g2.

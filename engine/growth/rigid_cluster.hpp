@@ -15,10 +15,10 @@ namespace aerobreak {
 struct PrimaryBath {
   double radius = 0.5;
   double mass = 1.0;
-  double inertia = 0.1;     // 2/5 m R^2
-  double drag = 0.0;        // zeta
-  double spin_drag = 0.0;   // zeta d^2 / 3
-  double temperature = 0.0; // kT
+  double inertia = 0.1;      // 2/5 m R^2
+  double drag = 0.0;         // zeta
+  double spin_drag = 0.0;    // zeta d^2 / 3
+  double temperature = 0.0;  // kT
 };
 
 // A cluster of bonded primaries advanced as one rigid body in that bath while no other cluster is
@@ -40,17 +40,17 @@ struct PrimaryBath {
 // Omega_k+1 Omega_k+2 of Euler's equations, which exchanges spin between axes without changing its
 // energy or Maxwell distribution; the step keeps the rotation per step small (step_for_reach).
 struct RigidCluster {
-  std::vector<std::size_t> members;  // particle indices
-  std::vector<Vec3> body;            // member centres about the centre of mass, principal frame
-  Vec3 centre;                       // centre of mass, never wrapped
-  Vec3 velocity;                     // of the centre of mass
+  std::vector<std::size_t> members;                       // particle indices
+  std::vector<Vec3> body;                                 // member centres about the centre of mass, principal frame
+  Vec3 centre;                                            // centre of mass, never wrapped
+  Vec3 velocity;                                          // of the centre of mass
   std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // unit quaternion (w, x, y, z), body to space
-  Vec3 spin;                         // angular velocity in the principal frame
-  double mass = 0.0;                 // n m
-  double drag = 0.0;                 // n zeta
-  Vec3 inertia;                      // principal moments I_k
-  Vec3 rotational_drag;              // principal drags Z_k
-  double reach = 0.0;                // farthest surface point from the centre of mass
+  Vec3 spin;                                              // angular velocity in the principal frame
+  double mass = 0.0;                                      // n m
+  double drag = 0.0;                                      // n zeta
+  Vec3 inertia;                                           // principal moments I_k
+  Vec3 rotational_drag;                                   // principal drags Z_k
+  double reach = 0.0;                                     // farthest surface point from the centre of mass
 };
 
 // The rigid body of `members` at `position` (one piece: unwrapped or reassembled), moving with the

@@ -38,9 +38,9 @@ struct FrozenCluster {
 struct Encounter {
   std::vector<std::size_t> members;  // particle index of each particle of the simulation
   std::unique_ptr<Simulation> simulation;
-  std::uint64_t events = 0;  // contacts made and broken so far
-  double quiet_since = 0.0;  // growth time of the last contact made or broken (or of the start)
-  std::size_t clusters = 0;  // components of its contact graph
+  std::uint64_t events = 0;             // contacts made and broken so far
+  double quiet_since = 0.0;             // growth time of the last contact made or broken (or of the start)
+  std::size_t clusters = 0;             // components of its contact graph
   std::vector<Vec3> searched_position;  // at the last gap search
 };
 
@@ -56,8 +56,14 @@ class Growth {
   Growth(const Particles& primaries, const Material& material, const ContactModelSpec& model,
          const SimulationSettings& base, const PrimaryBath& bath, const RigidFarFieldSettings& settings,
          std::uint64_t seed)
-      : material_(material), model_(model), base_(base), bath_(bath), settings_(settings), seed_(seed),
-        random_(mix(seed ^ 0x243f6a8885a308d3ULL)), box_(*base.periodic),
+      : material_(material),
+        model_(model),
+        base_(base),
+        bath_(bath),
+        settings_(settings),
+        seed_(seed),
+        random_(mix(seed ^ 0x243f6a8885a308d3ULL)),
+        box_(*base.periodic),
         proximity_(*base.periodic, searchable_gap(*base.periodic, settings.search_gap, bath.radius)),
         radius_(primaries.radius) {
     const Vec3 still;
@@ -71,8 +77,9 @@ class Growth {
     if (look) report(look);
     while (clusters > 1) {
       if (outcome_.rigid_steps >= settings_.max_steps)
-        throw std::runtime_error("diffusion-limited aggregation: " + std::to_string(clusters) + " clusters remain after " +
-                                 std::to_string(outcome_.rigid_steps) + " rigid steps; raise max_steps");
+        throw std::runtime_error("diffusion-limited aggregation: " + std::to_string(clusters) +
+                                 " clusters remain after " + std::to_string(outcome_.rigid_steps) +
+                                 " rigid steps; raise max_steps");
       advance();
       const std::size_t now = cluster_count();
       if (now != clusters && look) report(look);
@@ -111,7 +118,8 @@ class Growth {
           moved = std::max(moved, norm(box_.minimum_image(x[k] - enc.searched_position[k])));
       }
     }
-    for (std::size_t g = 0; g < frozen_.size(); ++g) moved_[g] += propagate(frozen_[g].body, step, bath_.temperature, random_);
+    for (std::size_t g = 0; g < frozen_.size(); ++g)
+      moved_[g] += propagate(frozen_[g].body, step, bath_.temperature, random_);
     time_ += step;
     ++outcome_.rigid_steps;
     const std::size_t groups = frozen_.size() + encounters_.size();
@@ -184,9 +192,12 @@ class Growth {
     std::vector<std::vector<std::size_t>> joined(groups);
     for (std::size_t g = 0; g < groups; ++g) joined[sets.find(g)].push_back(g);
     for (std::size_t g = 0; g < groups; ++g) {
-      if (joined[g].size() == 1 && g < frozen_.size()) frozen.push_back(std::move(frozen_[g]));
-      else if (joined[g].size() == 1) encounters.push_back(std::move(encounters_[g - frozen_.size()]));
-      else if (!joined[g].empty()) encounters.push_back(encounter_of(joined[g]));
+      if (joined[g].size() == 1 && g < frozen_.size())
+        frozen.push_back(std::move(frozen_[g]));
+      else if (joined[g].size() == 1)
+        encounters.push_back(std::move(encounters_[g - frozen_.size()]));
+      else if (!joined[g].empty())
+        encounters.push_back(encounter_of(joined[g]));
     }
     frozen_ = std::move(frozen);
     encounters_ = std::move(encounters);
@@ -211,13 +222,14 @@ class Growth {
         const Encounter& old = encounters_[g - frozen_.size()];
         outcome_.contacts_broken += old.simulation->pair_events().broken;
         const Particles& q = old.simulation->particles();
-        for (std::size_t k = 0; k < q.size(); ++k) add(old.members[k], q.position[k], q.velocity[k], q.angular_velocity[k]);
+        for (std::size_t k = 0; k < q.size(); ++k)
+          add(old.members[k], q.position[k], q.velocity[k], q.angular_velocity[k]);
       }
     }
     SimulationSettings s = base_;
     s.body.langevin.seed = mix(seed_ ^ mix(++outcome_.encounters));
-    e.simulation = std::make_unique<Simulation>(std::move(p), std::vector<Material>{material_}, std::vector<Wall>{},
-                                                model_, s);
+    e.simulation =
+        std::make_unique<Simulation>(std::move(p), std::vector<Material>{material_}, std::vector<Wall>{}, model_, s);
     e.events = contact_events(*e.simulation);
     e.quiet_since = time_;
     e.clusters = connected_component_sizes(e.members.size(), contact_edges(*e.simulation)).size();
@@ -269,8 +281,8 @@ class Growth {
         w.push_back(s.particles().angular_velocity[m]);
         most = std::max(most, tension[m]);
       }
-      frozen_.push_back({rigid_cluster(std::move(members), part.position, v, w, bath_), part.contacts,
-                         part.image_contacts, most});
+      frozen_.push_back(
+          {rigid_cluster(std::move(members), part.position, v, w, bath_), part.contacts, part.image_contacts, most});
     }
   }
 
@@ -299,8 +311,9 @@ class Growth {
         for (std::size_t& m : part.members) m = e.members[m];
         all.push_back(std::move(part));
       }
-    std::stable_sort(all.begin(), all.end(),
-                     [](const ContactCluster& a, const ContactCluster& b) { return a.members.size() > b.members.size(); });
+    std::stable_sort(all.begin(), all.end(), [](const ContactCluster& a, const ContactCluster& b) {
+      return a.members.size() > b.members.size();
+    });
     return all;
   }
 

@@ -14,18 +14,18 @@ namespace aerobreak {
 
 // How the accelerated growth hands clusters between the rigid-body propagator and the engine.
 struct RigidFarFieldSettings {
-  double encounter_gap = 0.25;  // surface gap (d) below which two clusters go to the engine
-  double release_gap = 0.5;     // gap between every two clusters of an encounter before it ends
-  double settle_time = 50.0;    // time (tau) without a contact made or broken before it ends
-  double step_fraction = 0.15;  // rms reach of a rigid step over the cluster's smallest gap
-  double search_gap = 3.0;      // particle pairs within this gap are looked at one by one
+  double encounter_gap = 0.25;       // surface gap (d) below which two clusters go to the engine
+  double release_gap = 0.5;          // gap between every two clusters of an encounter before it ends
+  double settle_time = 50.0;         // time (tau) without a contact made or broken before it ends
+  double step_fraction = 0.15;       // rms reach of a rigid step over the cluster's smallest gap
+  double search_gap = 3.0;           // particle pairs within this gap are looked at one by one
   std::int64_t engine_chunk = 1000;  // engine steps at most between looks
   std::int64_t max_steps = 0;        // rigid steps at most
 };
 
 struct RigidFarFieldOutcome {
-  ContactCluster grown;       // members as particle indices, reassembled centres
-  double tension = 0.0;       // largest contact tension (-overlap) the grown cluster had when frozen
+  ContactCluster grown;  // members as particle indices, reassembled centres
+  double tension = 0.0;  // largest contact tension (-overlap) the grown cluster had when frozen
   double time = 0.0;
   std::int64_t rigid_steps = 0;
   std::int64_t engine_particle_steps = 0;  // engine steps times the primaries they moved

@@ -43,20 +43,24 @@ std::optional<UnitsHint> units_hint(const Json& document) {
   if (given != "physical" && has_any_si_field(material) && !reduced_material) {
     const std::string read_as = given.empty() ? "is missing, so the case is in reduced units (d, m, tau)"
                                               : "is \"" + given + "\": reduced units (d, m, tau)";
-    return UnitsHint{"physical", {"/units", read_as + ", whose /material is gamma_over_kn and poisson_ratio; this "
-                                            "/material is in SI (youngs_modulus, density, surface_energy, diameter): "
-                                            "add \"units\": \"physical\""}};
+    return UnitsHint{"physical",
+                     {"/units", read_as + ", whose /material is gamma_over_kn and poisson_ratio; this "
+                                          "/material is in SI (youngs_modulus, density, surface_energy, diameter): "
+                                          "add \"units\": \"physical\""}};
   }
   if (given == "physical" && reduced_material && !has_any_si_field(material))
-    return UnitsHint{"reduced", {"/units", "is \"physical\", whose /material is in SI (youngs_modulus, poisson_ratio, "
-                                           "density, surface_energy, diameter); this /material is reduced "
-                                           "(gamma_over_kn): leave \"units\" out or set it to \"reduced\""}};
+    return UnitsHint{"reduced",
+                     {"/units",
+                      "is \"physical\", whose /material is in SI (youngs_modulus, poisson_ratio, "
+                      "density, surface_energy, diameter); this /material is reduced "
+                      "(gamma_over_kn): leave \"units\" out or set it to \"reduced\""}};
   return std::nullopt;
 }
 
 void add_unit_hints(std::vector<SchemaViolation>& violations) {
   for (auto& violation : violations) {
-    const bool out_of_range = violation.message.rfind("must be <", 0) == 0 || violation.message.rfind("must be >", 0) == 0;
+    const bool out_of_range =
+        violation.message.rfind("must be <", 0) == 0 || violation.message.rfind("must be >", 0) == 0;
     for (const auto& [pointer, hint] : kUnitHints)
       if (out_of_range && violation.pointer == pointer) violation.message += "; " + std::string(hint);
   }

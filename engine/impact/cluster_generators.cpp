@@ -13,8 +13,8 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Cluster build_ballistic(const GeneratorRequest& r) {
-  return ballistic_cluster_cluster_aggregation(
-      {r.primaries, r.geometric_mean_diameter, r.geometric_standard_deviation}, r.seed);
+  return ballistic_cluster_cluster_aggregation({r.primaries, r.geometric_mean_diameter, r.geometric_standard_deviation},
+                                               r.seed);
 }
 
 // k_f and D_f in FracVAL's solid-sphere Rg convention (tunable_aggregation.hpp).
@@ -55,7 +55,8 @@ std::string generators_taking(std::string_view field) {
   for (const ClusterGenerator& g : cluster_generators())
     if (contains(g.fields, field)) names.emplace_back(g.name);
   std::string text = "the ";
-  for (std::size_t k = 0; k < names.size(); ++k) text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
   return text + (names.size() == 1 ? " generator" : " generators");
 }
 
@@ -89,16 +90,25 @@ void check_values(const ClusterGenerator& g, const GeneratorRequest& r, std::vec
 
 const std::vector<ClusterGenerator>& cluster_generators() {
   static const std::vector<ClusterGenerator> generators{
-      {"ballistic", {"bcca"},
+      {"ballistic",
+       {"bcca"},
        "hierarchical ballistic cluster-cluster aggregation (Jullien 1984; report figure 2), D_f ~ 1.9",
-       {}, {}, build_ballistic},
-      {"dlca", {},
+       {},
+       {},
+       build_ballistic},
+      {"dlca",
+       {},
        "diffusion-limited cluster-cluster aggregation grown by the engine with JKR contacts and Langevin "
        "dynamics (report section 3.2, figure 3), sintered or not, D_f ~ 1.65",
-       {"sintering"}, {}, build_dlca},
-      {"tunable", {},
+       {"sintering"},
+       {},
+       build_dlca},
+      {"tunable",
+       {},
        "tunable aggregation to a requested D_f and k_f (FracVAL, Moran et al. 2019)",
-       {"fractal_dimension", "prefactor"}, {"fractal_dimension", "prefactor"}, build_tunable},
+       {"fractal_dimension", "prefactor"},
+       {"fractal_dimension", "prefactor"},
+       build_tunable},
   };
   return generators;
 }
@@ -128,7 +138,8 @@ std::vector<GeneratorViolation> check_generator_request(const GeneratorRequest& 
   std::vector<GeneratorViolation> out;
   const ClusterGenerator* g = find_cluster_generator(request.method);
   if (!g) {
-    out.push_back({"method", "unknown generator '" + request.method + "' (available: " + cluster_generator_names() + ")"});
+    out.push_back(
+        {"method", "unknown generator '" + request.method + "' (available: " + cluster_generator_names() + ")"});
     return out;
   }
   check_own_fields(*g, given, out);
@@ -169,7 +180,9 @@ nlohmann::ordered_json generator_document(const GeneratorRequest& request) {
 
 Cluster generate_cluster(const GeneratorRequest& request) {
   const ClusterGenerator* g = find_cluster_generator(request.method);
-  if (!g) throw std::invalid_argument("unknown generator '" + request.method + "' (available: " + cluster_generator_names() + ")");
+  if (!g)
+    throw std::invalid_argument("unknown generator '" + request.method + "' (available: " + cluster_generator_names() +
+                                ")");
   return g->build(request);
 }
 

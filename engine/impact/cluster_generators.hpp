@@ -24,7 +24,7 @@ struct GeneratorRequest {
   double geometric_standard_deviation = 1.0;
   double fractal_dimension = std::numeric_limits<double>::quiet_NaN();  // tunable
   double prefactor = std::numeric_limits<double>::quiet_NaN();          // tunable
-  bool sintering = true;                                                 // dlca
+  bool sintering = true;                                                // dlca
 };
 
 // A field of a request that breaks a generator's rules, and why ("applies to tunable only").
@@ -35,10 +35,10 @@ struct GeneratorViolation {
 
 struct ClusterGenerator {
   std::string_view name;
-  std::vector<std::string_view> aliases;  // older spellings, accepted and stored as `name`
-  std::string_view summary;               // one line: what it builds, after whom
-  std::vector<std::string_view> fields;   // the fields it takes beyond method, primaries, seed
-  std::vector<std::string_view> required; // those of `fields` a request must give
+  std::vector<std::string_view> aliases;   // older spellings, accepted and stored as `name`
+  std::string_view summary;                // one line: what it builds, after whom
+  std::vector<std::string_view> fields;    // the fields it takes beyond method, primaries, seed
+  std::vector<std::string_view> required;  // those of `fields` a request must give
   Cluster (*build)(const GeneratorRequest& request);
 };
 

@@ -27,17 +27,19 @@ ContactEnergies contact_energies(const ContactForces& law, ContactConstants c, d
   e.breaking_energy =
       law.normal_response(-c.break_overlap, c).energy - law.normal_response(e.equilibrium_overlap, c).energy;
   // 6 pi^2 gamma R* xi_crit with gamma = w/2.
-  e.rolling_energy = critical_rolling > 0.0 ? 3.0 * std::numbers::pi * std::numbers::pi * c.work_of_adhesion * c.radius *
-                                                  critical_rolling
-                                            : kNaN;
+  e.rolling_energy = critical_rolling > 0.0
+                         ? 3.0 * std::numbers::pi * std::numbers::pi * c.work_of_adhesion * c.radius * critical_rolling
+                         : kNaN;
   return e;
 }
 
-EnergyGroups energy_groups(double impact_kinetic_energy, std::size_t initial_contacts, const ContactEnergies& energies) {
+EnergyGroups energy_groups(double impact_kinetic_energy, std::size_t initial_contacts,
+                           const ContactEnergies& energies) {
   EnergyGroups g;
-  g.energy_per_contact = initial_contacts > 0 && energies.breaking_energy > 0.0
-                             ? impact_kinetic_energy / (static_cast<double>(initial_contacts) * energies.breaking_energy)
-                             : kNaN;
+  g.energy_per_contact =
+      initial_contacts > 0 && energies.breaking_energy > 0.0
+          ? impact_kinetic_energy / (static_cast<double>(initial_contacts) * energies.breaking_energy)
+          : kNaN;
   g.energy_over_rolling = energies.rolling_energy > 0.0 ? impact_kinetic_energy / energies.rolling_energy : kNaN;
   return g;
 }

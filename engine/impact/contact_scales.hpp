@@ -57,8 +57,8 @@ struct SmallStrainCheck {
   StrainMeasure wall;   // contacts with the wall
   StrainMeasure worst;  // the larger of the two, each ratio
   StrainLimits limits;
-  bool within = true;   // worst inside the limits
-  bool bound = false;   // primaries of several radii: the measures are upper bounds
+  bool within = true;  // worst inside the limits
+  bool bound = false;  // primaries of several radii: the measures are upper bounds
 };
 
 // The deepest overlaps a run reached, over R* (ContactEvents::deepest_overlap_ratio); nullopt for

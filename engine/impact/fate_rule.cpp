@@ -31,8 +31,8 @@ struct Symmetric3 {
 };
 
 Vec3 solve(const Symmetric3& a, const Vec3& b) {  // Cramer's rule
-  const double det = a.xx * (a.yy * a.zz - a.yz * a.yz) - a.xy * (a.xy * a.zz - a.yz * a.xz) +
-                     a.xz * (a.xy * a.yz - a.yy * a.xz);
+  const double det =
+      a.xx * (a.yy * a.zz - a.yz * a.yz) - a.xy * (a.xy * a.zz - a.yz * a.xz) + a.xz * (a.xy * a.yz - a.yy * a.xz);
   const Vec3 c0{a.xx, a.xy, a.xz}, c1{a.xy, a.yy, a.yz}, c2{a.xz, a.yz, a.zz};
   const auto det3 = [](const Vec3& u, const Vec3& v, const Vec3& w) { return dot(u, cross(v, w)); };
   return {det3(b, c1, c2) / det, det3(c0, b, c2) / det, det3(c0, c1, b) / det};
@@ -47,8 +47,8 @@ std::pair<double, double> eigenvalue_range(const Symmetric3& a) {
   const double p = std::sqrt(p2 / 6.0);
   if (!(p > 0.0)) return {q, q};
   const Symmetric3 b{(a.xx - q) / p, a.xy / p, a.xz / p, (a.yy - q) / p, a.yz / p, (a.zz - q) / p};
-  const double det_b = b.xx * (b.yy * b.zz - b.yz * b.yz) - b.xy * (b.xy * b.zz - b.yz * b.xz) +
-                       b.xz * (b.xy * b.yz - b.yy * b.xz);
+  const double det_b =
+      b.xx * (b.yy * b.zz - b.yz * b.yz) - b.xy * (b.xy * b.zz - b.yz * b.xz) + b.xz * (b.xy * b.yz - b.yy * b.xz);
   const double phi = std::acos(std::clamp(det_b / 2.0, -1.0, 1.0)) / 3.0;
   return {q + 2.0 * p * std::cos(phi + 2.0 * std::numbers::pi / 3.0), q + 2.0 * p * std::cos(phi)};
 }
@@ -56,9 +56,9 @@ std::pair<double, double> eigenvalue_range(const Symmetric3& a) {
 // What the rule reads of one fragment besides Fragment: its energies, the rigid rotation its
 // angular momentum gives it, and its lightest primary.
 struct Reserve {
-  double kinetic = 0.0;     // in the wall's frame, translation and spin of its primaries
-  double own_kinetic = 0.0; // in its own frame (about its centre of mass)
-  double above_rest = 0.0;  // stored in its contacts (bonds and wall contacts) above their rest
+  double kinetic = 0.0;      // in the wall's frame, translation and spin of its primaries
+  double own_kinetic = 0.0;  // in its own frame (about its centre of mass)
+  double above_rest = 0.0;   // stored in its contacts (bonds and wall contacts) above their rest
   double weakest_bond = kInfinity;
   double weakest_pull = kInfinity;  // the least pull-off force of its bonds
   double weakest_wall_contact = kInfinity;

@@ -25,8 +25,8 @@ class Simulation;
 // (fragment_paths.hpp). `earlier_positions` are the particles' positions at the time `earlier`
 // before now (the last look at the run).
 struct FatesJudgement {
-  std::string reason;            // empty when every fate is fixed; else the first fragment that is not, and why
-  FragmentAnalysis fragments;    // the fragments of the moment, landing and bouncing marked
+  std::string reason;          // empty when every fate is fixed; else the first fragment that is not, and why
+  FragmentAnalysis fragments;  // the fragments of the moment, landing and bouncing marked
   // Their velocities: in flight their centre of mass's; held, 0 along the wall's normal (a held
   // fragment's height is bounded: its long-run mean normal velocity vanishes) and the mean since
   // `earlier` along the wall.

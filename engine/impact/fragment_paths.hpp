@@ -19,7 +19,6 @@ struct FragmentPath {
   double spread = 0.0;
 };
 
-
 // Whether two fragments on these paths can touch at some time from now on: whether the distance of
 // their centres can fall to the sum of their radii (each the bounding radius, plus its ball).
 bool paths_can_meet(const FragmentPath& a, const FragmentPath& b);

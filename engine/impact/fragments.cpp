@@ -11,7 +11,8 @@
 
 namespace aerobreak {
 
-FragmentAnalysis find_fragments(const Particles& p, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& contacts,
+FragmentAnalysis find_fragments(const Particles& p,
+                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& contacts,
                                 const std::vector<std::uint32_t>& wall_contacts_per_particle, const Wall& wall) {
   const std::size_t n = p.size();
   DisjointSets sets(n);

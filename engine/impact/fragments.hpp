@@ -16,15 +16,15 @@ class Simulation;
 // One fragment: a connected component of the particle-particle contact graph (docs/IMPACT.md
 // section 5); a primary without contacts is a fragment of size 1.
 struct Fragment {
-  std::size_t size = 0;          // primaries
+  std::size_t size = 0;  // primaries
   double mass = 0.0;
   Vec3 centre_of_mass;
-  Vec3 velocity;                 // of the centre of mass
-  double normal_velocity = 0.0;  // velocity . wall normal (> 0: moving away from the wall)
-  std::size_t wall_contacts = 0; // live contacts of its primaries with the wall
-  double lowest_gap = 0.0;       // smallest surface gap of its primaries to the wall (< 0: overlapping)
+  Vec3 velocity;                    // of the centre of mass
+  double normal_velocity = 0.0;     // velocity . wall normal (> 0: moving away from the wall)
+  std::size_t wall_contacts = 0;    // live contacts of its primaries with the wall
+  double lowest_gap = 0.0;          // smallest surface gap of its primaries to the wall (< 0: overlapping)
   double radius_of_gyration = 0.0;  // of the primaries' centres, mass-weighted
-  double bounding_radius = 0.0;  // largest |x_i - x_cm| + r_i
+  double bounding_radius = 0.0;     // largest |x_i - x_cm| + r_i
   std::uint32_t first_primary = 0;  // lowest particle index in it (a stable name)
   // Fates foreseen by the fates-fixed rule (docs/IMPACT.md section 4): off the wall now, it lands
   // on an adhesive wall and stays there (counted on the wall), or it bounces off a wall without

@@ -167,7 +167,6 @@ void read_materials(const Json& d, ImpactCase& c) {
       c.wall_material.surface_energy = w.value("gamma_over_kn", c.material.surface_energy);
     }
   }
-
 }
 
 // The contact model and the rules on it the schema does not state.
@@ -185,14 +184,14 @@ void read_model(const Json& d, ImpactCase& c, Violations& violations) {
     violation(c.physical ? "/wall/material/surface_energy" : "/wall/material/gamma_over_kn",
               "must be > 0 for an adhesive wall (or set /wall/adhesive to false)");
   if (c.model.rolling && !adhesive_law)
-    violation("/model/rolling/enabled", "rolling resistance needs an adhesive normal law (k_r = 4 F_c (a/a0)^(3/2), eq 18)");
+    violation("/model/rolling/enabled",
+              "rolling resistance needs an adhesive normal law (k_r = 4 F_c (a/a0)^(3/2), eq 18)");
   if (c.model.van_der_waals && !(c.model.hamaker.cutoff > c.model.hamaker.min_separation))
     violation("/model/van_der_waals/cutoff", "must exceed /model/van_der_waals/min_separation");
   if (c.model.damping == DampingLaw::viscoelastic && !(c.model.dissipative_time > 0.0))
     violation("/model/damping/dissipative_time", "must be > 0 for visco-elastic damping");
   if (c.model.damping == DampingLaw::tsuji && !(c.model.restitution < 1.0))
     violation("/model/damping/restitution", "must be < 1 for Tsuji damping (1 is no damping: use \"law\": \"none\")");
-
 }
 
 // Why the impact speed cannot reach the wall in time, in the case's own units.
@@ -224,7 +223,8 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
     if (c.physical)
       c.time_limit = run["time_limit_s"].get<double>() / c.physical->time_unit();
     else
-      violation("/run/time_limit_s", "needs \"units\": \"physical\" (a reduced case has no second; give /run/time_limit in tau)");
+      violation("/run/time_limit_s",
+                "needs \"units\": \"physical\" (a reduced case has no second; give /run/time_limit in tau)");
   } else {
     c.time_limit = run["time_limit"].get<double>();
   }
@@ -275,7 +275,8 @@ ImpactCase read_case(Json document, const std::filesystem::path& base_directory,
 // Every problem of a case the schema refuses: its violations and, as far as the rest can be read
 // without the fields they name, the rules' violations of the rest. A material in the other unit
 // system is reported as that (at /units), followed by the problems of the case in the units it meant.
-Violations all_violations(const Json& given, Violations schema_violations, const std::filesystem::path& base_directory) {
+Violations all_violations(const Json& given, Violations schema_violations,
+                          const std::filesystem::path& base_directory) {
   if (const auto hint = units_hint(given)) {
     Json meant = given;
     meant["units"] = hint->meant_units;

@@ -49,12 +49,12 @@ struct ImpactCase {
   ContactModelSpec model;
   ClusterSource cluster;
 
-  double speed = 0.0;             // d/tau
-  double angle_degrees = 0.0;     // from head-on
+  double speed = 0.0;          // d/tau
+  double angle_degrees = 0.0;  // from head-on
   std::uint64_t orientation_seed = 0;
-  double gap = 0.01;              // d
+  double gap = 0.01;  // d
 
-  OutcomeThresholds thresholds;   // bounce_share from /classification/largest_fragment_share
+  OutcomeThresholds thresholds;  // bounce_share from /classification/largest_fragment_share
 
   double time_limit = 0.0;         // tau (given as /run/time_limit, or /run/time_limit_s over tau)
   double snapshot_interval = 0.0;  // tau; 0: first and last frames only

@@ -34,12 +34,13 @@ Json budget(const EnergyBudget& e) {
           {"van_der_waals", number(e.van_der_waals)},
           {"gravitational", number(e.gravitational)},
           {"mechanical", number(e.mechanical())},
-          {"dissipated", {{"damping", number(d.damping)},
-                          {"friction", number(d.friction)},
-                          {"rolling", number(d.rolling)},
-                          {"twisting", number(d.twisting)},
-                          {"breaking", number(d.breaking)},
-                          {"total", number(d.dissipated())}}},
+          {"dissipated",
+           {{"damping", number(d.damping)},
+            {"friction", number(d.friction)},
+            {"rolling", number(d.rolling)},
+            {"twisting", number(d.twisting)},
+            {"breaking", number(d.breaking)},
+            {"total", number(d.dissipated())}}},
           {"stiffness_work", number(d.stiffness_work)},
           {"van_der_waals_handover", number(d.van_der_waals_handover)},
           {"external_work", number(e.external_work)},
@@ -90,14 +91,10 @@ Json units_json(const ImpactCase& c) {
                 {"physical", nullptr}};
   if (c.physical) {
     const PhysicalScaling& s = *c.physical;
-    units["physical"] = {{"diameter_m", s.diameter},
-                         {"mass_kg", s.mass()},
-                         {"stiffness_N_per_m", s.stiffness()},
-                         {"time_s", s.time_unit()},
-                         {"speed_m_per_s", s.speed_unit()},
-                         {"energy_J", s.energy_unit()},
-                         {"softening", s.softening},
-                         {"softened_time_s", s.softened_time(1.0)}};
+    units["physical"] = {{"diameter_m", s.diameter},           {"mass_kg", s.mass()},
+                         {"stiffness_N_per_m", s.stiffness()}, {"time_s", s.time_unit()},
+                         {"speed_m_per_s", s.speed_unit()},    {"energy_J", s.energy_unit()},
+                         {"softening", s.softening},           {"softened_time_s", s.softened_time(1.0)}};
   }
   return units;
 }
@@ -143,12 +140,13 @@ Json setup_json(const ImpactResult& r) {
   const ImpactCase& c = r.impact_case;
   const auto& rot = r.orientation;
   return {{"cluster_source", c.cluster.kind == ClusterSource::Kind::generated ? c.cluster.generator.method : "file"},
-          {"relaxation", {{"performed", r.relaxation.performed},
-                          {"converged", r.relaxation.converged},
-                          {"steps", r.relaxation.steps},
-                          {"contacts", r.relaxation.contacts},
-                          {"contacts_broken", r.relaxation.contacts_broken},
-                          {"wall_clock_seconds", number(r.relaxation.wall_clock_seconds)}}},
+          {"relaxation",
+           {{"performed", r.relaxation.performed},
+            {"converged", r.relaxation.converged},
+            {"steps", r.relaxation.steps},
+            {"contacts", r.relaxation.contacts},
+            {"contacts_broken", r.relaxation.contacts_broken},
+            {"wall_clock_seconds", number(r.relaxation.wall_clock_seconds)}}},
           {"orientation", Json::array({vector(rot.row0), vector(rot.row1), vector(rot.row2)})},
           {"wall_normal", vector(r.wall_normal)},
           {"gap", number(c.gap)},
@@ -184,16 +182,17 @@ Json run_json(const ImpactResult& r) {
   return {{"time_step", number(r.time_step)},
           {"time_step_source", time_step_source(r)},
           {"time_step_history", step_history_json(r)},
-          {"time_step_estimate", {{"limit", est.period > 0.0 ? Json(time_step_limit_name(est.limit)) : Json(nullptr)},
-                                  {"period", number(est.period)},
-                                  {"stiffness", number(est.stiffness)},
-                                  {"mass", number(est.mass)},
-                                  {"overlap", number(est.overlap)},
-                                  {"steps_per_period", number(est.steps_per_period)},
-                                  {"crossing_time", number(est.crossing_time)},
-                                  {"break_overlap", number(est.break_overlap)},
-                                  {"approach_speed", number(est.approach_speed)},
-                                  {"steps_per_break_overlap", number(est.steps_per_break_overlap)}}},
+          {"time_step_estimate",
+           {{"limit", est.period > 0.0 ? Json(time_step_limit_name(est.limit)) : Json(nullptr)},
+            {"period", number(est.period)},
+            {"stiffness", number(est.stiffness)},
+            {"mass", number(est.mass)},
+            {"overlap", number(est.overlap)},
+            {"steps_per_period", number(est.steps_per_period)},
+            {"crossing_time", number(est.crossing_time)},
+            {"break_overlap", number(est.break_overlap)},
+            {"approach_speed", number(est.approach_speed)},
+            {"steps_per_break_overlap", number(est.steps_per_break_overlap)}}},
           {"steps", r.steps},
           {"simulated_time", number(r.simulated_time)},
           {"simulated_time_s", c.physical ? number(c.physical->physical_time(r.simulated_time)) : Json(nullptr)},
@@ -230,20 +229,22 @@ Json reentrained_json(const ImpactResult& r) {
 Json outcome_json(const ImpactResult& r) {
   const ImpactCase& c = r.impact_case;
   const Classification& k = r.classification;
-  return {{"class", to_string(k.outcome)},
-          {"reason", k.reason},
-          {"fractured_on_wall", k.fractured_on_wall},
-          {"retained_mass_fraction", number(k.retained_mass_fraction)},
-          {"reentrained_mass_fraction", number(k.reentrained_mass_fraction)},
-          {"reentrained_fragments", reentrained_json(r)},
-          {"damage_ratio", number(r.damage_ratio())},
-          {"thresholds", {{"largest_fragment_share", number(c.thresholds.bounce_share)},
-                          {"rest_speed_fraction", number(c.settle.rest_speed_fraction)},
-                          {"quiet_window", number(r.quiet_window)}}},
-          {"largest_fragment_share", number(k.largest_fragment_share)},
-          {"largest_reentrained_share", number(k.largest_reentrained_share)},
-          {"fragment_count", r.fragments.size()},
-          {"restitution", {{"normal", number(r.restitution_normal)}, {"tangential", number(r.restitution_tangential)}}}};
+  return {
+      {"class", to_string(k.outcome)},
+      {"reason", k.reason},
+      {"fractured_on_wall", k.fractured_on_wall},
+      {"retained_mass_fraction", number(k.retained_mass_fraction)},
+      {"reentrained_mass_fraction", number(k.reentrained_mass_fraction)},
+      {"reentrained_fragments", reentrained_json(r)},
+      {"damage_ratio", number(r.damage_ratio())},
+      {"thresholds",
+       {{"largest_fragment_share", number(c.thresholds.bounce_share)},
+        {"rest_speed_fraction", number(c.settle.rest_speed_fraction)},
+        {"quiet_window", number(r.quiet_window)}}},
+      {"largest_fragment_share", number(k.largest_fragment_share)},
+      {"largest_reentrained_share", number(k.largest_reentrained_share)},
+      {"fragment_count", r.fragments.size()},
+      {"restitution", {{"normal", number(r.restitution_normal)}, {"tangential", number(r.restitution_tangential)}}}};
 }
 
 Json strain_json(const StrainMeasure& m) {
@@ -284,23 +285,25 @@ Json energy_json(const ImpactResult& r) {
           {"impact_kinetic", number(e_impact)},
           {"final_fragment_translational_kinetic", number(r.fragment_translational_kinetic)},
           {"final_internal_kinetic", number(e1.kinetic() - r.fragment_translational_kinetic)},
-          {"dissipated_share", {{"damping", share(d.damping)},
-                                {"friction", share(d.friction)},
-                                {"rolling", share(d.rolling)},
-                                {"twisting", share(d.twisting)},
-                                {"breaking", share(d.breaking)},
-                                {"total", share(d.dissipated())}}},
+          {"dissipated_share",
+           {{"damping", share(d.damping)},
+            {"friction", share(d.friction)},
+            {"rolling", share(d.rolling)},
+            {"twisting", share(d.twisting)},
+            {"breaking", share(d.breaking)},
+            {"total", share(d.dissipated())}}},
           {"balance_change", number(e1.balance() - e0.balance())},
           {"balance_drift", number((e1.balance() - e0.balance()) / (e_impact + d.dissipated()))}};
 }
 
 Json fragments_json(const ImpactResult& r) {
   Json distribution = Json::array();
-  for (const auto& [size, count] : size_distribution(r.fragments)) distribution.push_back({{"size", size}, {"count", count}});
+  for (const auto& [size, count] : size_distribution(r.fragments))
+    distribution.push_back({{"size", size}, {"count", count}});
   Json list = Json::array();
   for (std::size_t k = 0; k < r.fragments.size(); ++k)
-    list.push_back(fragment(r.fragments[k], k < r.fragment_mean_velocity.size() ? &r.fragment_mean_velocity[k] : nullptr,
-                            r.wall_normal));
+    list.push_back(fragment(
+        r.fragments[k], k < r.fragment_mean_velocity.size() ? &r.fragment_mean_velocity[k] : nullptr, r.wall_normal));
   return {{"size_distribution", distribution}, {"list", list}};
 }
 
@@ -329,12 +332,13 @@ Json si_json(const ImpactResult& r) {
           {"quiet_window_s", seconds(r.quiet_window)},
           {"impact_speed_m_per_s", metres_per_second(c.speed)},
           {"rest_speed_m_per_s", metres_per_second(r.rest_speed)},
-          {"restitution_inputs", {{"impact_normal_velocity_m_per_s", metres_per_second(dot(r.impact_velocity, n))},
-                                  {"impact_tangential_speed_m_per_s", metres_per_second(norm(tangent))},
-                                  {"rebound_velocity_m_per_s", Json::array({metres_per_second(r.rebound_velocity.x),
-                                                                            metres_per_second(r.rebound_velocity.y),
-                                                                            metres_per_second(r.rebound_velocity.z)})},
-                                  {"rebound_normal_velocity_m_per_s", metres_per_second(dot(r.rebound_velocity, n))}}},
+          {"restitution_inputs",
+           {{"impact_normal_velocity_m_per_s", metres_per_second(dot(r.impact_velocity, n))},
+            {"impact_tangential_speed_m_per_s", metres_per_second(norm(tangent))},
+            {"rebound_velocity_m_per_s",
+             Json::array({metres_per_second(r.rebound_velocity.x), metres_per_second(r.rebound_velocity.y),
+                          metres_per_second(r.rebound_velocity.z)})},
+            {"rebound_normal_velocity_m_per_s", metres_per_second(dot(r.rebound_velocity, n))}}},
           {"impact_kinetic_energy_J", joules(r.impact_kinetic_energy)},
           {"breaking_energy_J", joules(r.contact_energies.breaking_energy)},
           {"rolling_energy_J", joules(r.contact_energies.rolling_energy)},
@@ -349,21 +353,22 @@ nlohmann::ordered_json to_json(const ImpactResult& r) {
   Json compaction = {{"before", shape(r.before)},
                      {"after", shape(r.after)},
                      {"radius_of_gyration_ratio", number(r.after.radius_of_gyration / r.before.radius_of_gyration)}};
-  return {{"format", "aerobreak-impact-result"},
-          {"format_version", 2},
-          {"code", {{"name", "aerobreak"}, {"version", std::string(version())}, {"git_commit", std::string(git_commit())}}},
-          {"case", r.impact_case.document},
-          {"units", units_json(r.impact_case)},
-          {"dimensionless", dimensionless_json(r)},
-          {"setup", setup_json(r)},
-          {"run", run_json(r)},
-          {"outcome", outcome_json(r)},
-          {"validity", validity_json(r.validity)},
-          {"contacts", contacts_json(r)},
-          {"compaction", compaction},
-          {"energy", energy_json(r)},
-          {"fragments", fragments_json(r)},
-          {"si", si_json(r)}};
+  return {
+      {"format", "aerobreak-impact-result"},
+      {"format_version", 2},
+      {"code", {{"name", "aerobreak"}, {"version", std::string(version())}, {"git_commit", std::string(git_commit())}}},
+      {"case", r.impact_case.document},
+      {"units", units_json(r.impact_case)},
+      {"dimensionless", dimensionless_json(r)},
+      {"setup", setup_json(r)},
+      {"run", run_json(r)},
+      {"outcome", outcome_json(r)},
+      {"validity", validity_json(r.validity)},
+      {"contacts", contacts_json(r)},
+      {"compaction", compaction},
+      {"energy", energy_json(r)},
+      {"fragments", fragments_json(r)},
+      {"si", si_json(r)}};
 }
 
 double ImpactResult::damage_ratio() const {
@@ -394,8 +399,8 @@ std::string describe_setup(const ImpactResult& r) {
   const double time_unit = c.physical ? c.physical->time_unit() : 0.0;
   const double energy_unit = c.physical ? c.physical->energy_unit() : 0.0;
   const double scale = e.pull_off_force * e.critical_overlap;
-  return "time unit tau = sqrt(m/k_n)" + si(1.0, time_unit, "s") + "\n" +
-         formatted("time step %.6g tau", r.time_step) + si(r.time_step, time_unit, "s") +
+  return "time unit tau = sqrt(m/k_n)" + si(1.0, time_unit, "s") + "\n" + formatted("time step %.6g tau", r.time_step) +
+         si(r.time_step, time_unit, "s") +
          (r.adaptive_time_step
               ? formatted(" (adaptive: chosen again from the speeds of the moment, at most %.6g tau, %.4g steps per "
                           "contact period)\n",

@@ -47,8 +47,8 @@ struct ImpactResult {
   Vec3 impact_velocity;
   double impact_kinetic_energy = 0.0;  // of the whole cluster, 1/2 M v^2
   RelaxationSummary relaxation;
-  ContactEnergies contact_energies;    // of two primaries of diameter d (the geometric mean)
-  EnergyGroups energy_groups;          // E_kin / (N_c E_break), E_kin / E_roll
+  ContactEnergies contact_energies;  // of two primaries of diameter d (the geometric mean)
+  EnergyGroups energy_groups;        // E_kin / (N_c E_break), E_kin / E_roll
 
   // Run
   TimeStepEstimate time_step_estimate;  // the automatic step at the impact speed (also for a fixed step)
@@ -63,9 +63,9 @@ struct ImpactResult {
   double quiet_since = 0.0;
   double quiet_window = 0.0;
   double rest_speed = 0.0;
-  std::string unsettled_reason;  // the settle criterion's last objection (undetermined runs)
-  double wall_clock_seconds = 0.0;  // of stepping
-  double cpu_seconds = 0.0;         // of stepping, the run's thread
+  std::string unsettled_reason;                // the settle criterion's last objection (undetermined runs)
+  double wall_clock_seconds = 0.0;             // of stepping
+  double cpu_seconds = 0.0;                    // of stepping, the run's thread
   double particle_steps_per_second = 0.0;      // by the wall clock
   double particle_steps_per_cpu_second = 0.0;  // by CPU time
   std::uint64_t neighbor_builds = 0;
@@ -81,8 +81,8 @@ struct ImpactResult {
   double damage_ratio() const;              // initial_contacts_broken / initial_contacts; NaN without any
 
   // Outcome
-  std::vector<Fragment> fragments;  // largest first
-  std::vector<Vec3> fragment_mean_velocity;  // over the settling window; empty if not settled
+  std::vector<Fragment> fragments;            // largest first
+  std::vector<Vec3> fragment_mean_velocity;   // over the settling window; empty if not settled
   std::vector<Vec3> fragment_final_velocity;  // the mean velocity when settled, the last one otherwise
   Classification classification;
   // The largest fragment's velocity after the impact (its window mean when settled, its last one
@@ -90,8 +90,8 @@ struct ImpactResult {
   Vec3 rebound_velocity;
   double restitution_normal = 0.0;
   double restitution_tangential = 0.0;  // v_t after / v_t before along the impact's tangent; NaN head-on
-  ClusterShape before;  // the relaxed cluster
-  ClusterShape after;   // the largest fragment at the end
+  ClusterShape before;                  // the relaxed cluster
+  ClusterShape after;                   // the largest fragment at the end
   SmallStrainCheck validity;
 
   // Energy

@@ -28,9 +28,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Contacts live at the start of a run are the relaxed cluster's bonds: pairs whose surfaces are
 // within this gap (in d) of touching, so that round-off in the coordinates cannot unbond them.
@@ -43,7 +41,8 @@ constexpr std::uint16_t kWallMaterial = 1;
 double extent_of(const Particles& p) {
   const Vec3 centre = p.centre_of_mass();
   double extent = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    extent = std::max(extent, 2.0 * (norm(p.position[i] - centre) + p.radius[i]));
   return extent;
 }
 
@@ -181,10 +180,9 @@ PreparedImpact prepare_impact(const ImpactCase& c, const ImpactRunOptions& optio
   settings.steps_per_break_overlap = c.steps_per_break_overlap;
   settings.speed_scale = c.speed;
   settings.initial_bond_gap = kBondGap;
-  prepared.simulation =
-      std::make_unique<Simulation>(place_for_impact(cluster, r.orientation, wall, c.gap, r.impact_velocity),
-                                   std::vector<Material>{c.material, c.wall_material}, std::vector<Wall>{wall}, c.model,
-                                   settings);
+  prepared.simulation = std::make_unique<Simulation>(
+      place_for_impact(cluster, r.orientation, wall, c.gap, r.impact_velocity),
+      std::vector<Material>{c.material, c.wall_material}, std::vector<Wall>{wall}, c.model, settings);
   const Simulation& sim = *prepared.simulation;
   r.time_step = sim.time_step();
   r.time_step_estimate = sim.time_step_estimate();

@@ -66,7 +66,8 @@ ImpactSchedule impact_schedule(const ImpactResult& prepared, std::size_t particl
 // settled or the time limit comes, with snapshots and progress on the way (run_observed); returns
 // the wall-clock and CPU seconds of stepping. The result is then measured by measure_impact
 // (impact_measurement.hpp).
-ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor, const ImpactRunOptions& options = {});
+ElapsedTimes run_prepared_impact(PreparedImpact& prepared, SettleMonitor& monitor,
+                                 const ImpactRunOptions& options = {});
 
 // Runs one impact case end to end (docs/IMPACT.md): prepares the cluster, turns it to the seeded
 // random orientation, places it `gap` above the wall with every primary at the impact velocity,

@@ -11,15 +11,23 @@ using Json = nlohmann::ordered_json;
 
 std::string type_name(const Json& v) {
   switch (v.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return "boolean";
-    case Json::value_t::string: return "string";
-    case Json::value_t::array: return "array";
-    case Json::value_t::object: return "object";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return "boolean";
+    case Json::value_t::string:
+      return "string";
+    case Json::value_t::array:
+      return "array";
+    case Json::value_t::object:
+      return "object";
     case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned: return "integer";
-    case Json::value_t::number_float: return "number";
-    default: return "unknown";
+    case Json::value_t::number_unsigned:
+      return "integer";
+    case Json::value_t::number_float:
+      return "number";
+    default:
+      return "unknown";
   }
 }
 
@@ -157,8 +165,8 @@ class Validator {
     const auto bound = [&](const char* keyword, const char* relation, auto holds) {
       const auto limit = schema.find(keyword);
       if (limit != schema.end() && !holds(x, limit->template get<double>()))
-        fail(pointer, std::string("must be ") + relation + " " + number_text(limit->template get<double>()) +
-                          " (got " + number_text(x) + ")");
+        fail(pointer, std::string("must be ") + relation + " " + number_text(limit->template get<double>()) + " (got " +
+                          number_text(x) + ")");
     };
     bound("minimum", ">=", [](double a, double b) { return a >= b; });
     bound("maximum", "<=", [](double a, double b) { return a <= b; });
@@ -189,12 +197,14 @@ class Validator {
   void check_object(const Json& schema, Json& value, const std::string& pointer) const {
     if (const auto required = schema.find("required"); required != schema.end())
       for (const auto& name : *required)
-        if (!value.contains(name.get<std::string>())) fail(pointer_child(pointer, name.get<std::string>()), "is required");
+        if (!value.contains(name.get<std::string>()))
+          fail(pointer_child(pointer, name.get<std::string>()), "is required");
     static const Json no_properties = Json::object();
     const auto found = schema.find("properties");
     const Json& known = found == schema.end() ? no_properties : *found;
     for (const auto& [name, sub] : known.items()) {
-      if (complete_ && !value.contains(name) && sub.is_object() && sub.contains("default")) value[name] = sub["default"];
+      if (complete_ && !value.contains(name) && sub.is_object() && sub.contains("default"))
+        value[name] = sub["default"];
       if (value.contains(name)) check(sub, value[name], pointer_child(pointer, name));
     }
     const auto extra = schema.find("additionalProperties");
@@ -244,7 +254,8 @@ class Validator {
     if (matching.size() == 1) {
       if (complete_) check((*one)[matching.front()], value, pointer);
     } else if (matching.empty()) {
-      fail(pointer, "must match exactly one of " + count + " alternatives, matches none (" + why_none(*one, value, pointer) + ")");
+      fail(pointer, "must match exactly one of " + count + " alternatives, matches none (" +
+                        why_none(*one, value, pointer) + ")");
     } else {
       std::string which;
       for (std::size_t k : matching) which += (which.empty() ? "" : " and ") + std::to_string(k + 1);
@@ -292,7 +303,8 @@ std::vector<SchemaViolation> JsonSchema::validate_and_complete(nlohmann::ordered
   return out;
 }
 
-std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema, nlohmann::ordered_json document,
+std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema,
+                                                                nlohmann::ordered_json document,
                                                                 const std::vector<SchemaViolation>& violations) {
   for (const auto& violation : violations) {
     if (violation.pointer.empty()) return std::nullopt;

@@ -69,7 +69,8 @@ std::shared_ptr<const JsonSchema::Compiled> compile_json_schema(nlohmann::ordere
 // defaults: what the rest of a refused document looks like, so that its other problems can be
 // checked and reported in the same answer. nullopt when that is no valid document either (a
 // violation names a missing required member, an array item or the document itself).
-std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema, nlohmann::ordered_json document,
+std::optional<nlohmann::ordered_json> without_violating_members(const JsonSchema& schema,
+                                                                nlohmann::ordered_json document,
                                                                 const std::vector<SchemaViolation>& violations);
 
 // Equality of JSON values as JSON Schema defines it (const, enum): objects equal whatever the

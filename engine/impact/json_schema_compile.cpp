@@ -36,21 +36,43 @@ enum class KeywordValue {
 
 const std::map<std::string, KeywordValue>& keyword_values() {
   using enum KeywordValue;
-  static const std::map<std::string, KeywordValue> table{
-      {"type", type_names},        {"enum", value_list},       {"const", any},
-      {"multipleOf", positive_number},                         {"minimum", number},
-      {"maximum", number},         {"exclusiveMinimum", number}, {"exclusiveMaximum", number},
-      {"minLength", count},        {"maxLength", count},       {"minItems", count},
-      {"maxItems", count},         {"items", schema},          {"required", name_list},
-      {"properties", schema_map},  {"additionalProperties", schema},
-      {"allOf", schema_list},      {"anyOf", schema_list},     {"oneOf", schema_list},
-      {"not", schema},             {"if", schema},             {"then", schema},
-      {"else", schema},            {"$ref", reference},        {"$defs", schema_map},
-      // Annotations: accepted, not checked against documents.
-      {"$schema", text},           {"$id", text},              {"$comment", text},
-      {"title", text},             {"description", text},      {"default", any},
-      {"examples", list},          {"format", text},           {"deprecated", flag},
-      {"readOnly", flag},          {"writeOnly", flag}};
+  static const std::map<std::string, KeywordValue> table{{"type", type_names},
+                                                         {"enum", value_list},
+                                                         {"const", any},
+                                                         {"multipleOf", positive_number},
+                                                         {"minimum", number},
+                                                         {"maximum", number},
+                                                         {"exclusiveMinimum", number},
+                                                         {"exclusiveMaximum", number},
+                                                         {"minLength", count},
+                                                         {"maxLength", count},
+                                                         {"minItems", count},
+                                                         {"maxItems", count},
+                                                         {"items", schema},
+                                                         {"required", name_list},
+                                                         {"properties", schema_map},
+                                                         {"additionalProperties", schema},
+                                                         {"allOf", schema_list},
+                                                         {"anyOf", schema_list},
+                                                         {"oneOf", schema_list},
+                                                         {"not", schema},
+                                                         {"if", schema},
+                                                         {"then", schema},
+                                                         {"else", schema},
+                                                         {"$ref", reference},
+                                                         {"$defs", schema_map},
+                                                         // Annotations: accepted, not checked against documents.
+                                                         {"$schema", text},
+                                                         {"$id", text},
+                                                         {"$comment", text},
+                                                         {"title", text},
+                                                         {"description", text},
+                                                         {"default", any},
+                                                         {"examples", list},
+                                                         {"format", text},
+                                                         {"deprecated", flag},
+                                                         {"readOnly", flag},
+                                                         {"writeOnly", flag}};
   return table;
 }
 
@@ -81,26 +103,39 @@ std::string value_problem(KeywordValue kind, const Json& value) {
   using enum KeywordValue;
   const auto is_string = [](const Json& v) { return v.is_string(); };
   switch (kind) {
-    case schema: return is_schema(value) ? "" : "must be a schema (an object or a boolean)";
-    case schema_map: return value.is_object() ? "" : "must be an object of schemas";
-    case schema_list: return value.is_array() && !value.empty() ? "" : "must be a non-empty array of schemas";
-    case reference: return value.is_string() ? "" : "must be a string";
+    case schema:
+      return is_schema(value) ? "" : "must be a schema (an object or a boolean)";
+    case schema_map:
+      return value.is_object() ? "" : "must be an object of schemas";
+    case schema_list:
+      return value.is_array() && !value.empty() ? "" : "must be a non-empty array of schemas";
+    case reference:
+      return value.is_string() ? "" : "must be a string";
     case type_names:
       return is_type_name(value) || (value.is_array() && !value.empty() && distinct_strings(value, is_type_name))
                  ? ""
                  : "must be a type name (null, boolean, object, array, number, string, integer) or a non-empty "
                    "array of distinct type names";
-    case value_list: return value.is_array() && !value.empty() ? "" : "must be a non-empty array";
-    case name_list: return value.is_array() && distinct_strings(value, is_string) ? "" : "must be an array of distinct strings";
-    case number: return value.is_number() && std::isfinite(value.get<double>()) ? "" : "must be a finite number";
+    case value_list:
+      return value.is_array() && !value.empty() ? "" : "must be a non-empty array";
+    case name_list:
+      return value.is_array() && distinct_strings(value, is_string) ? "" : "must be an array of distinct strings";
+    case number:
+      return value.is_number() && std::isfinite(value.get<double>()) ? "" : "must be a finite number";
     case positive_number:
-      return value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() > 0 ? ""
-                                                                                                 : "must be a number > 0";
-    case count: return is_count(value) ? "" : "must be a non-negative integer";
-    case any: return "";
-    case list: return value.is_array() ? "" : "must be an array";
-    case text: return value.is_string() ? "" : "must be a string";
-    case flag: return value.is_boolean() ? "" : "must be a boolean";
+      return value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() > 0
+                 ? ""
+                 : "must be a number > 0";
+    case count:
+      return is_count(value) ? "" : "must be a non-negative integer";
+    case any:
+      return "";
+    case list:
+      return value.is_array() ? "" : "must be an array";
+    case text:
+      return value.is_string() ? "" : "must be a string";
+    case flag:
+      return value.is_boolean() ? "" : "must be a boolean";
   }
   return "";
 }
@@ -158,8 +193,10 @@ class SchemaWalk {
       const auto next = in_place_.find(place);
       if (next != in_place_.end()) {
         for (const auto& target : next->second) {
-          if (state[target] == 1) fail(place, "references lead back here without going into a member or item: "
-                                              "validation would never end");
+          if (state[target] == 1)
+            fail(place,
+                 "references lead back here without going into a member or item: "
+                 "validation would never end");
           if (state[target] == 0) visit_place(target);
         }
       }
@@ -218,7 +255,8 @@ class SchemaWalk {
         references_.emplace(value.get<std::string>(), where);
         in_place_[where].push_back(target_place(value.get<std::string>()));
         break;
-      default: break;
+      default:
+        break;
     }
   }
 

@@ -42,10 +42,14 @@ void measure(const std::vector<FragmentFate>& fragments, Classification& c) {
 
 std::string to_string(ImpactOutcome outcome) {
   switch (outcome) {
-    case ImpactOutcome::stick: return "stick";
-    case ImpactOutcome::bounce: return "bounce";
-    case ImpactOutcome::break_up: return "break-up";
-    case ImpactOutcome::undetermined: return "undetermined";
+    case ImpactOutcome::stick:
+      return "stick";
+    case ImpactOutcome::bounce:
+      return "bounce";
+    case ImpactOutcome::break_up:
+      return "break-up";
+    case ImpactOutcome::undetermined:
+      return "undetermined";
   }
   return "undetermined";
 }
@@ -69,8 +73,8 @@ Classification classify(const std::vector<FragmentFate>& fragments, bool settled
                            " left the wall with " + percent(c.reentrained_mass_fraction) + " of the mass";
   if (c.reentrained.empty()) {
     c.outcome = ImpactOutcome::stick;
-    c.reason = c.fractured_on_wall ? "nothing left the wall, which holds the cluster in pieces"
-                                   : "nothing left the wall";
+    c.reason =
+        c.fractured_on_wall ? "nothing left the wall, which holds the cluster in pieces" : "nothing left the wall";
   } else if (c.largest_reentrained_share >= thresholds.bounce_share) {
     c.outcome = ImpactOutcome::bounce;
     c.reason = left + "; the heaviest holds " + percent(c.largest_reentrained_share) + ", at least the bounce share " +

@@ -89,7 +89,7 @@ struct ImpactProgress {
   std::int64_t steps = 0;
   double steps_per_second = 0.0;
   double particle_steps_per_second = 0.0;
-  std::size_t contacts = 0;       // particle-particle
+  std::size_t contacts = 0;  // particle-particle
   std::size_t wall_contacts = 0;
   std::size_t fragments = 0;
   double kinetic_energy = 0.0;
@@ -101,8 +101,7 @@ ImpactProgress progress_of(const Simulation& simulation, double time_limit, doub
 class ProgressObserver final : public StepObserver {
  public:
   using Callback = std::function<void(const ImpactProgress&)>;
-  ProgressObserver(Callback callback, double seconds, double time_limit, std::int64_t interval,
-                   std::int64_t start = 0);
+  ProgressObserver(Callback callback, double seconds, double time_limit, std::int64_t interval, std::int64_t start = 0);
   std::int64_t next_step() const override { return last_step_ + interval_; }
   bool observe(const Simulation& simulation) override;
   bool looks_at_every_stop() const override { return true; }

@@ -13,8 +13,8 @@ namespace aerobreak {
 namespace {
 
 std::string describe_fragment(std::size_t k, const Fragment& f) {
-  return "fragment " + std::to_string(k + 1) + " (" + std::to_string(f.size) + " primar" +
-         (f.size == 1 ? "y" : "ies") + ")";
+  return "fragment " + std::to_string(k + 1) + " (" + std::to_string(f.size) + " primar" + (f.size == 1 ? "y" : "ies") +
+         ")";
 }
 
 std::string number(double x) {
@@ -35,8 +35,8 @@ std::uint64_t wall_events(const Simulation& simulation) {
 }  // namespace
 
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
-                             const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed, bool deposit_pairs) {
+                             const std::vector<double>& lowest_gap_before, const Vec3& wall_normal, double rest_speed,
+                             bool deposit_pairs) {
   const Vec3 n = wall_normal / norm(wall_normal);
   for (std::size_t k = 0; k < fragments.size(); ++k) {
     const Fragment& f = fragments[k];
@@ -92,16 +92,21 @@ std::string outcome_open_reason(const std::vector<Fragment>& fragments, const st
 
 std::string to_string(SettleRule rule) {
   switch (rule) {
-    case SettleRule::quiet: return "quiet";
-    case SettleRule::outcome_fixed: return "outcome_fixed";
-    case SettleRule::fates_fixed: return "fates_fixed";
+    case SettleRule::quiet:
+      return "quiet";
+    case SettleRule::outcome_fixed:
+      return "outcome_fixed";
+    case SettleRule::fates_fixed:
+      return "fates_fixed";
   }
   return "quiet";
 }
 
 SettleMonitor::SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds,
                              bool outcome_fixed_rule)
-    : quiet_window_(quiet_window), rest_speed_(rest_speed), thresholds_(thresholds),
+    : quiet_window_(quiet_window),
+      rest_speed_(rest_speed),
+      thresholds_(thresholds),
       outcome_fixed_rule_(outcome_fixed_rule) {
   if (!(quiet_window > 0.0)) throw std::invalid_argument("settle: quiet_window must be > 0");
   if (!(rest_speed >= 0.0)) throw std::invalid_argument("settle: rest_speed must be >= 0");
@@ -123,7 +128,8 @@ SettleMonitor::Window SettleMonitor::open_window(const Simulation& simulation, b
       w.deposit.push_back(i);
     }
   simulation.contacts().for_each([&](const ContactState& c) {
-    if (!c.with_wall && on_wall[c.i] && on_wall[c.j]) w.deposit_contacts.emplace_back(std::min(c.i, c.j), std::max(c.i, c.j));
+    if (!c.with_wall && on_wall[c.i] && on_wall[c.j])
+      w.deposit_contacts.emplace_back(std::min(c.i, c.j), std::max(c.i, c.j));
   });
   std::sort(w.deposit_contacts.begin(), w.deposit_contacts.end());
   return w;
@@ -147,7 +153,8 @@ SettleMonitor::Judgement SettleMonitor::judge(const Simulation& simulation, cons
         std::min(j.lowest_gap_before[k], dot(window.positions[i] - wall.point, j.wall_normal) - p.radius[i]);
   }
   const double elapsed = simulation.time() - window.start;
-  for (std::size_t k = 0; k < count; ++k) j.mean_velocity[k] = j.mean_velocity[k] / (j.fragments.fragments[k].mass * elapsed);
+  for (std::size_t k = 0; k < count; ++k)
+    j.mean_velocity[k] = j.mean_velocity[k] / (j.fragments.fragments[k].mass * elapsed);
   return j;
 }
 
@@ -161,7 +168,8 @@ void SettleMonitor::settle(const Simulation& simulation, SettleRule rule, const 
 bool SettleMonitor::judge_quiet(const Simulation& simulation) {
   ++judgements_;
   Judgement j = judge(simulation, quiet_);
-  last_reason_ = unsettled_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before, j.wall_normal, rest_speed_);
+  last_reason_ =
+      unsettled_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before, j.wall_normal, rest_speed_);
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.mean_velocity);
   since_ = quiet_.start;
@@ -175,9 +183,9 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
     return false;
   ++judgements_;
   Judgement j = judge(simulation, fixed_);
-  const std::string reason = outcome_open_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before,
-                                                 j.wall_normal, rest_speed_, thresholds_,
-                                                 now.bonds_broken == fixed_.bonds_broken);
+  const std::string reason =
+      outcome_open_reason(j.fragments.fragments, j.mean_velocity, j.lowest_gap_before, j.wall_normal, rest_speed_,
+                          thresholds_, now.bonds_broken == fixed_.bonds_broken);
   if (!reason.empty()) return false;
   // A state that is not a break-up stands on its fragments' staying off the wall: one tumbling
   // fast enough could still swing back and be pushed off again, with another restitution.

@@ -20,8 +20,8 @@ class Simulation;
 // Two fragments resting on the wall are not tested for meeting unless `deposit_pairs`: they may
 // still creep along it into each other.
 std::string unsettled_reason(const std::vector<Fragment>& fragments, const std::vector<Vec3>& mean_velocity,
-                             const std::vector<double>& lowest_gap_before, const Vec3& wall_normal,
-                             double rest_speed, bool deposit_pairs = false);
+                             const std::vector<double>& lowest_gap_before, const Vec3& wall_normal, double rest_speed,
+                             bool deposit_pairs = false);
 
 // The state judgement of the outcome-fixed rule (docs/IMPACT.md section 4): empty when the state
 // passes unsettled_reason and either is a break-up in which no fragment on the wall holds the
@@ -60,8 +60,8 @@ class SettleMonitor {
 
   bool settled() const { return settled_; }
   SettleRule rule() const { return rule_; }
-  double settled_at() const { return settled_at_; }        // time of the successful judgement
-  double quiet_since() const { return since_; }            // start of its window (else of the last quiet one)
+  double settled_at() const { return settled_at_; }                // time of the successful judgement
+  double quiet_since() const { return since_; }                    // start of its window (else of the last quiet one)
   const std::string& last_reason() const { return last_reason_; }  // why the last judgement failed
   // Why a run that ends now is not settled: contacts still changing, and the last objection.
   std::string open_reason(const Simulation& simulation) const;

@@ -28,8 +28,9 @@ void check_status(const std::filesystem::path& path, const struct stat& status, 
                   std::string_view what) {
   if (!S_ISREG(status.st_mode)) refuse(path, what, "is " + kind_of(status.st_mode) + ", not a regular file");
   if (static_cast<std::uintmax_t>(status.st_size) > max_bytes)
-    refuse(path, what, "has " + std::to_string(status.st_size) + " bytes, more than the " + std::to_string(max_bytes) +
-                           " read here");
+    refuse(
+        path, what,
+        "has " + std::to_string(status.st_size) + " bytes, more than the " + std::to_string(max_bytes) + " read here");
 }
 
 [[noreturn]] void cannot_open(const std::filesystem::path& path, std::string_view what) {

@@ -76,8 +76,8 @@ Hdf5Handle create_library_file(const std::filesystem::path& library) {
   const std::string path = library.string();
   const Hdf5Handle access = checked_handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create file properties", path);
   check_status(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), "select file format", path);
-  Hdf5Handle file = checked_handle(H5Fcreate(path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get()), H5Fclose,
-                                   "create file", path);
+  Hdf5Handle file =
+      checked_handle(H5Fcreate(path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get()), H5Fclose, "create file", path);
 
   const Hdf5Handle format = create_group(file.get(), "aerobreak");
   write_string_attribute(format.get(), "format", kFormatName);
@@ -100,12 +100,12 @@ void require_library_format(hid_t file, const std::string& where) {
   const Hdf5Handle format = open_group(file, "aerobreak");
   if (!has_attribute(format.get(), "format") || read_scalar_string(format.get(), "format") != kFormatName)
     fail(where, "not an aerobreak cluster library (/aerobreak has no format \"" + std::string(kFormatName) + "\")");
-  const std::vector<std::int64_t> format_version =
-      has_attribute(format.get(), "format_version") ? read_integer_attribute(format.get(), "format_version")
-                                                    : std::vector<std::int64_t>{};
+  const std::vector<std::int64_t> format_version = has_attribute(format.get(), "format_version")
+                                                       ? read_integer_attribute(format.get(), "format_version")
+                                                       : std::vector<std::int64_t>{};
   if (format_version.size() != 2 || format_version[0] != kFormatMajor)
-    fail(where, "unsupported cluster library format version (this aerobreak reads " + std::to_string(kFormatMajor) +
-                    ".x)");
+    fail(where,
+         "unsupported cluster library format version (this aerobreak reads " + std::to_string(kFormatMajor) + ".x)");
 }
 
 // `where` names the library (and the cluster) in error messages.
@@ -217,8 +217,7 @@ std::vector<std::string> cluster_names(hid_t file, const std::filesystem::path& 
         H5Lget_name_by_idx(clusters.get(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
     if (length < 0) throw_hdf5_error("list clusters", path);
     std::string name(static_cast<std::size_t>(length) + 1, '\0');
-    H5Lget_name_by_idx(clusters.get(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name.data(), name.size(),
-                       H5P_DEFAULT);
+    H5Lget_name_by_idx(clusters.get(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
     name.resize(static_cast<std::size_t>(length));
     names.push_back(std::move(name));
   }

@@ -28,11 +28,11 @@ namespace aerobreak {
 
 // How a cluster was made: what its producer knows and the library cannot measure.
 struct ClusterOrigin {
-  std::string generator;           // e.g. "bcca", "tunable", "xyz" (imported)
-  std::string parameters = "{}";   // the generator's parameters as a JSON object, verbatim
-  std::uint64_t seed = 0;          // the seed that reproduces the cluster with `generator`
+  std::string generator;                                        // e.g. "bcca", "tunable", "xyz" (imported)
+  std::string parameters = "{}";                                // the generator's parameters as a JSON object, verbatim
+  std::uint64_t seed = 0;                                       // the seed that reproduces the cluster with `generator`
   double prefactor = std::numeric_limits<double>::quiet_NaN();  // k_f of N = k_f (Rg/a)^D_f, if fixed
-  bool relaxed = false;            // brought to mechanical equilibrium (relax_cluster)
+  bool relaxed = false;                                         // brought to mechanical equilibrium (relax_cluster)
 };
 
 // Everything stored with a cluster: its origin, what the library measured when storing it, and

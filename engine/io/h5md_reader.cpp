@@ -21,8 +21,8 @@ struct OpenParticleGroup {
 OpenParticleGroup open_particle_group(const std::filesystem::path& path) {
   OpenParticleGroup opened;
   opened.path = path.string();
-  opened.file = checked_handle(H5Fopen(opened.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open file",
-                               opened.path);
+  opened.file =
+      checked_handle(H5Fopen(opened.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open file", opened.path);
   // H5MD 1.1, "H5MD metadata": h5md/version holds [major, minor].
   if (!link_exists(opened.file.get(), "h5md"))
     throw std::runtime_error("not an H5MD file (no h5md group): " + opened.path);
@@ -81,8 +81,8 @@ template <class T>
 void read_particle_element(const OpenParticleGroup& opened, const std::string& name, std::int64_t step,
                            std::size_t particle_count, std::vector<T>& out) {
   constexpr hsize_t components = sizeof(T) / sizeof(double);
-  const std::vector<hsize_t> per_frame = components == 1 ? std::vector<hsize_t>{particle_count}
-                                                         : std::vector<hsize_t>{particle_count, components};
+  const std::vector<hsize_t> per_frame =
+      components == 1 ? std::vector<hsize_t>{particle_count} : std::vector<hsize_t>{particle_count, components};
   const hid_t group = opened.group.get();
   if (!link_exists(group, name)) return;
 

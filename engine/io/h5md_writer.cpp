@@ -151,8 +151,8 @@ H5mdTrajectoryWriter::H5mdTrajectoryWriter(const std::filesystem::path& path, st
   // H5MD 1.1, "File format": HDF5 file format version 2 is recommended; it needs the 1.8 format.
   const Hdf5Handle access = checked_handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create file access list", s.path);
   check_status(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), "select file format", s.path);
-  s.file = checked_handle(H5Fcreate(s.path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose,
-                          "create file", s.path);
+  s.file = checked_handle(H5Fcreate(s.path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose, "create file",
+                          s.path);
 
   write_h5md_metadata(s.file.get(), creator_version, options.author);
   const Hdf5Handle particles = create_group(s.file.get(), "particles");

@@ -38,8 +38,8 @@ std::vector<hsize_t> select_row(hid_t space, const std::vector<hsize_t>& dims, h
   std::vector<hsize_t> count = dims;
   start[0] = index;
   count[0] = 1;
-  check_status(H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
-               "select row", file);
+  check_status(H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), "select row",
+               file);
   std::vector<hsize_t> row(dims.begin() + 1, dims.end());
   if (row.empty()) row.push_back(1);
   return row;
@@ -89,15 +89,14 @@ Hdf5Handle create_extendable_dataset(hid_t parent, const std::string& name, hid_
   std::vector<hsize_t> chunk = dims;
   chunk[0] = rows_per_chunk(H5Tget_size(file_type) * product(row_shape));
 
-  const Hdf5Handle space =
-      checked_handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()), H5Sclose,
-                     "create dataspace for " + name, file);
+  const Hdf5Handle space = checked_handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()),
+                                          H5Sclose, "create dataspace for " + name, file);
   const Hdf5Handle properties =
       checked_handle(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create properties for " + name, file);
   check_status(H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()), "chunk " + name, file);
   return checked_handle(
-      H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
-      H5Dclose, "create dataset " + name, file);
+      H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Dclose,
+      "create dataset " + name, file);
 }
 
 void append_row(hid_t dataset, hid_t memory_type, const void* row) {
@@ -108,8 +107,8 @@ void append_row(hid_t dataset, hid_t memory_type, const void* row) {
   check_status(H5Dset_extent(dataset, dims.data()), "extend dataset", file);
   const Hdf5Handle file_space = space_of(dataset, file);
   const Hdf5Handle memory_space = simple_space(select_row(file_space.get(), dims, index, file), file);
-  check_status(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, row),
-               "append row", file);
+  check_status(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, row), "append row",
+               file);
 }
 
 void read_row(hid_t dataset, hsize_t index, hid_t memory_type, void* row) {
@@ -118,8 +117,7 @@ void read_row(hid_t dataset, hsize_t index, hid_t memory_type, void* row) {
   if (dims.empty() || index >= dims[0]) throw_hdf5_error("row " + std::to_string(index) + " out of range", file);
   const Hdf5Handle file_space = space_of(dataset, file);
   const Hdf5Handle memory_space = simple_space(select_row(file_space.get(), dims, index, file), file);
-  check_status(H5Dread(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, row), "read row",
-               file);
+  check_status(H5Dread(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, row), "read row", file);
 }
 
 void write_dataset(hid_t parent, const std::string& name, hid_t file_type, hid_t memory_type,

@@ -23,7 +23,8 @@ constexpr std::size_t kMaxJsonDepth = 64;
 class JsonTextError : public std::runtime_error {
  public:
   JsonTextError(std::string problem, std::size_t offset)
-      : std::runtime_error(problem + " (at byte " + std::to_string(offset) + ")"), problem_(std::move(problem)),
+      : std::runtime_error(problem + " (at byte " + std::to_string(offset) + ")"),
+        problem_(std::move(problem)),
         offset_(offset) {}
   const std::string& problem() const { return problem_; }
   std::size_t offset() const { return offset_; }

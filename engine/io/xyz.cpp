@@ -76,7 +76,8 @@ class LineSource {
   std::size_t number() const { return number_; }
 
   [[noreturn]] void fail(const std::string& reason) const {
-    throw std::runtime_error(source_name_ + ":" + std::to_string(number_) + ": " + reason + ": '" + excerpt(line_) + "'");
+    throw std::runtime_error(source_name_ + ":" + std::to_string(number_) + ": " + reason + ": '" + excerpt(line_) +
+                             "'");
   }
   [[noreturn]] void fail_at_end(const std::string& reason) const {
     throw std::runtime_error(source_name_ + ": " + reason);
@@ -93,7 +94,7 @@ class LineSource {
 struct ColumnLayout {
   std::size_t min_fields;
   std::size_t max_fields;
-  std::size_t x_field;                    // y and z follow
+  std::size_t x_field;                      // y and z follow
   std::optional<std::size_t> radius_field;  // used if the line has that many fields
   std::string description;
 };

@@ -64,19 +64,22 @@ Covariate resolve(const StudyRecord& study, const std::vector<std::string>& axes
       const std::string axis = axis_setting(axes, known.pointer);
       if (axis.empty())
         throw CorrelationRequestError("covariate '" + name + "' is not an axis of study " + std::to_string(study.id) +
-                                          " (its axes: " + joined(axes) + ")", false);
+                                          " (its axes: " + joined(axes) + ")",
+                                      false);
       return {axis, known.logarithmic};
     }
   if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == kSpeedPointer)
-    throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " + std::to_string(study.id) +
-                                      " (its axes: " + joined(axes) + "; known covariates: gamma_over_kn, N, Df, angle)",
+    throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " +
+                                      std::to_string(study.id) + " (its axes: " + joined(axes) +
+                                      "; known covariates: gamma_over_kn, N, Df, angle)",
                                   false);
   return {name, false};
 }
 
 }  // namespace
 
-CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates) {
+CorrelationRequest correlation_request(const StudyRecord& study,
+                                       const std::optional<std::vector<std::string>>& covariates) {
   const auto axes = study_axes(study);
   CorrelationRequest request;
   request.speed_axis = axis_setting(axes, kSpeedPointer);
@@ -90,13 +93,15 @@ CorrelationRequest correlation_request(const StudyRecord& study, const std::opti
     return request;
   }
   // By default the pooled models model the size only: every other axis splits them.
-  if (!request.size_axis.empty() && sweeps_several(study, request.size_axis)) request.covariates.push_back({request.size_axis, true});
+  if (!request.size_axis.empty() && sweeps_several(study, request.size_axis))
+    request.covariates.push_back({request.size_axis, true});
   return request;
 }
 
 std::string request_key(const CorrelationRequest& request) {
   nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
-  for (const auto& covariate : request.covariates) covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});
+  for (const auto& covariate : request.covariates)
+    covariates.push_back({covariate.axis, covariate.logarithmic ? "log" : "linear"});
   return nlohmann::ordered_json{{"speed_axis", request.speed_axis},
                                 {"size_axis", request.size_axis},
                                 {"covariates", covariates},
@@ -104,15 +109,16 @@ std::string request_key(const CorrelationRequest& request) {
       .dump();
 }
 
-CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version, std::string* result_set_hash) {
+CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version,
+                                     std::string* result_set_hash) {
   StudyOutcomes outcomes = store.study_outcomes(study.id);
   if (outcomes.table.cases.empty())
     throw CorrelationRequestError("study " + std::to_string(study.id) + " has no results yet: nothing to fit", true);
   if (version) *version = outcomes.result_set_version;
   if (result_set_hash) *result_set_hash = sha256_hex(outcomes.identity);
   const std::string primaries_axis = axis_setting(study_axes(study), kPrimariesPointer);
-  const nlohmann::ordered_json base_primaries =
-      study.document.value(nlohmann::ordered_json::json_pointer("/base" + std::string(kPrimariesPointer)), nlohmann::ordered_json());
+  const nlohmann::ordered_json base_primaries = study.document.value(
+      nlohmann::ordered_json::json_pointer("/base" + std::string(kPrimariesPointer)), nlohmann::ordered_json());
   for (CaseOutcome& c : outcomes.table.cases) {
     const auto& point = outcomes.table.grid_points[c.grid_point];
     const auto& n = primaries_axis.empty() ? base_primaries : point.value(primaries_axis, nlohmann::ordered_json());
@@ -123,7 +129,8 @@ CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std
 
 CorrelationSet study_correlations(Store& store, const StudyRecord& study, const CorrelationRequest& request) {
   Provenance provenance{study.id, {}, 0, std::string(version())};
-  const CaseOutcomeTable table = study_outcome_table(store, study, &provenance.result_set_version, &provenance.result_set_hash);
+  const CaseOutcomeTable table =
+      study_outcome_table(store, study, &provenance.result_set_version, &provenance.result_set_hash);
   return compute_correlations(table, request, provenance);
 }
 
@@ -140,7 +147,7 @@ std::int64_t StudyFits::result_set_version(std::int64_t study_id) {
 }
 
 std::shared_ptr<const StoredCorrelations> StudyFits::current(const StudyRecord& study,
-                                                                   const CorrelationRequest& request) {
+                                                             const CorrelationRequest& request) {
   const std::string key = request_key(request);
   if (auto kept = remembered(study.id, key, result_set_version(study.id))) return kept;
   auto stored = store_.stored_correlations(study.id, key);
@@ -155,7 +162,7 @@ std::shared_ptr<const StoredCorrelations> StudyFits::current(const StudyRecord& 
 }
 
 std::shared_ptr<const StoredCorrelations> StudyFits::remembered(std::int64_t study_id, const std::string& key,
-                                                                       std::int64_t version) const {
+                                                                std::int64_t version) const {
   std::lock_guard guard(memory_mutex_);
   const auto found = memory_.find({study_id, key});
   if (found == memory_.end() || found->second->result_set_version != version) return nullptr;
@@ -163,7 +170,7 @@ std::shared_ptr<const StoredCorrelations> StudyFits::remembered(std::int64_t stu
 }
 
 std::shared_ptr<const StoredCorrelations> StudyFits::remember(std::int64_t study_id, const std::string& key,
-                                                                    StoredCorrelations set) {
+                                                              StoredCorrelations set) {
   auto kept = std::make_shared<const StoredCorrelations>(std::move(set));
   std::lock_guard guard(memory_mutex_);
   if (memory_.size() >= kMaxRemembered) memory_.clear();
@@ -171,16 +178,22 @@ std::shared_ptr<const StoredCorrelations> StudyFits::remember(std::int64_t study
   return kept;
 }
 
-StoredCorrelations StudyFits::refit(const StudyRecord& study, const CorrelationRequest& request,
-                                           const std::string& key, const std::optional<StoredCorrelations>& stored) {
+StoredCorrelations StudyFits::refit(const StudyRecord& study, const CorrelationRequest& request, const std::string& key,
+                                    const std::optional<StoredCorrelations>& stored) {
   Provenance provenance{study.id, {}, 0, std::string(version())};
-  const CaseOutcomeTable table = study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
+  const CaseOutcomeTable table =
+      study_outcome_table(store_, study, &provenance.result_set_version, &provenance.result_set_hash);
   if (stored && stored->result_set_hash == provenance.result_set_hash &&
       store_.confirm_correlations(study.id, key, provenance.result_set_hash, provenance.result_set_version))
     return *store_.stored_correlations(study.id, key);
   const CorrelationSet set = compute_correlations(table, request, provenance);
-  StoredCorrelations saved{0, provenance.result_set_version, provenance.result_set_hash, provenance.aerobreak_version,
-                           unix_seconds(), set.seconds, correlation_summary_json(set).dump()};
+  StoredCorrelations saved{0,
+                           provenance.result_set_version,
+                           provenance.result_set_hash,
+                           provenance.aerobreak_version,
+                           unix_seconds(),
+                           set.seconds,
+                           correlation_summary_json(set).dump()};
   std::vector<StoredFit> fits;
   for (const auto& name : fit_names(set)) {
     const auto document = *fit_json(set, name);
@@ -197,7 +210,8 @@ namespace aerobreak {
 std::shared_ptr<const CorrelationSet> StudyFits::logistic_fits(const StudyRecord& study) {
   const CorrelationRequest request = correlation_request(study, std::nullopt);
   const auto stored = current(study, request);
-  if (!stored) return std::make_shared<const CorrelationSet>(study_correlations(store_, study, request));  // read_only, stale
+  if (!stored)
+    return std::make_shared<const CorrelationSet>(study_correlations(store_, study, request));  // read_only, stale
   {
     std::lock_guard guard(memory_mutex_);
     const auto found = read_back_.find({stored->set_id, stored->computed_at});
@@ -210,7 +224,8 @@ std::shared_ptr<const CorrelationSet> StudyFits::logistic_fits(const StudyRecord
   return set;
 }
 
-std::shared_ptr<const CorrelationSet> StudyFits::read_back(const StoredCorrelations& stored, const CorrelationRequest& request) {
+std::shared_ptr<const CorrelationSet> StudyFits::read_back(const StoredCorrelations& stored,
+                                                           const CorrelationRequest& request) {
   auto set = std::make_shared<CorrelationSet>();
   set->request = request;
   const auto summary = nlohmann::ordered_json::parse(stored.summary);
@@ -218,7 +233,8 @@ std::shared_ptr<const CorrelationSet> StudyFits::read_back(const StoredCorrelati
                      stored.aerobreak_version};
   for (const auto& line : summary.at("fits"))
     if (line.at("kind") == "logistic")
-      set->logistic.push_back(logistic_fit_from_json(nlohmann::ordered_json::parse(*store_.stored_fit(stored.set_id, line.at("name")))));
+      set->logistic.push_back(
+          logistic_fit_from_json(nlohmann::ordered_json::parse(*store_.stored_fit(stored.set_id, line.at("name")))));
   return set;
 }
 

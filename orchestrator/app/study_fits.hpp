@@ -31,7 +31,8 @@ struct CorrelationRequestError : std::runtime_error {
 // than one value, so that a pooled model pools along the size only and every other axis (wall,
 // gamma/k_n, generator, ...) splits it. gamma/k_n and N enter as logarithms, the others as they are.
 // The lookup-table export uses the default.
-CorrelationRequest correlation_request(const StudyRecord& study, const std::optional<std::vector<std::string>>& covariates);
+CorrelationRequest correlation_request(const StudyRecord& study,
+                                       const std::optional<std::vector<std::string>>& covariates);
 
 // The canonical text of a whole request (speed and size axes, covariates, levels): the key its fits
 // are stored and cached under, so that two different requests never share an answer.
@@ -39,7 +40,7 @@ std::string request_key(const CorrelationRequest& request);
 
 // A study's outcomes with each case's N filled in (from the primaries axis or the study's base).
 CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
-                                 std::string* result_set_hash = nullptr);
+                                     std::string* result_set_hash = nullptr);
 
 // A study's fits as the table model, fitted now (neither stored nor cached). Throws
 // CorrelationRequestError for a study without results.
@@ -75,7 +76,8 @@ class StudyFits {
   // The set kept in memory for (study, request) if it was fitted to result-set version `version`.
   std::shared_ptr<const StoredCorrelations> remembered(std::int64_t study_id, const std::string& key,
                                                        std::int64_t version) const;
-  std::shared_ptr<const StoredCorrelations> remember(std::int64_t study_id, const std::string& key, StoredCorrelations set);
+  std::shared_ptr<const StoredCorrelations> remember(std::int64_t study_id, const std::string& key,
+                                                     StoredCorrelations set);
 
   // The stored set's logistic fits parsed back, or fitted now (read_only without a current set).
   std::shared_ptr<const CorrelationSet> read_back(const StoredCorrelations& stored, const CorrelationRequest& request);

@@ -26,7 +26,8 @@ LookupTable export_lookup_table(Store& store, StudyFits& fits, const StudyRecord
 }
 
 RenderedTable export_file(Store& store, StudyFits& fits, const StudyRecord& study, const ExportRequest& request) {
-  if (request.kind == TableKind::correlations) return correlation_code_file(store, study.id, request, *fits_of(fits, study));
+  if (request.kind == TableKind::correlations)
+    return correlation_code_file(store, study.id, request, *fits_of(fits, study));
   return render_table(export_lookup_table(store, fits, study, request), request, study.id);
 }
 
@@ -45,7 +46,8 @@ std::shared_ptr<const KeptFile> StudyTables::file(const StudyRecord& study, cons
   return make(study, request, key);
 }
 
-std::shared_ptr<const KeptFile> StudyTables::make(const StudyRecord& study, const ExportRequest& request, const Key& key) {
+std::shared_ptr<const KeptFile> StudyTables::make(const StudyRecord& study, const ExportRequest& request,
+                                                  const Key& key) {
   // The version was read before the table: a file may be newer than its tag, never older.
   auto file = std::make_shared<KeptFile>();
   file->file = export_file(store_, fits_, study, request);

@@ -40,7 +40,8 @@ class StudyTables {
   // `fits` outlives the tables: the study's fits the fit tables and the code read.
   StudyTables(Store& store, StudyFits& fits);
   // `request_key`: the request's canonical text (its parameters, sorted).
-  std::shared_ptr<const KeptFile> file(const StudyRecord& study, const ExportRequest& request, const std::string& request_key);
+  std::shared_ptr<const KeptFile> file(const StudyRecord& study, const ExportRequest& request,
+                                       const std::string& request_key);
 
  private:
   using Key = std::tuple<std::int64_t, std::int64_t, std::string>;  // study, result-set version, request

@@ -61,11 +61,20 @@ void export_case(const BenchOptions& o, const Simulation& sim, std::size_t n) {
   std::filesystem::create_directories(dir);
   const std::string stem = "bench_N" + std::to_string(n);
   write_xyz_cluster(dir / (stem + ".xyz"), cluster_from_particles(sim.particles()));
-  const nlohmann::json params = {
-      {"primaries", n},          {"time_step", sim.time_step()},         {"speed", o.speed},
-      {"gamma_over_kn", o.gamma_over_kn}, {"poisson_ratio", o.poisson},  {"friction", o.friction},
-      {"critical_rolling", o.critical_rolling}, {"dissipative_time", o.dissipative_time},
-      {"wall_adhesion", o.wall_adhesion}, {"rolling", o.rolling}, {"twisting", o.twisting}, {"separation", o.separation == JkrSeparation::force ? "force" : "displacement"},       {"steps", o.steps},      {"seed", o.seed}};
+  const nlohmann::json params = {{"primaries", n},
+                                 {"time_step", sim.time_step()},
+                                 {"speed", o.speed},
+                                 {"gamma_over_kn", o.gamma_over_kn},
+                                 {"poisson_ratio", o.poisson},
+                                 {"friction", o.friction},
+                                 {"critical_rolling", o.critical_rolling},
+                                 {"dissipative_time", o.dissipative_time},
+                                 {"wall_adhesion", o.wall_adhesion},
+                                 {"rolling", o.rolling},
+                                 {"twisting", o.twisting},
+                                 {"separation", o.separation == JkrSeparation::force ? "force" : "displacement"},
+                                 {"steps", o.steps},
+                                 {"seed", o.seed}};
   std::ofstream(dir / (stem + ".json")) << params.dump(2) << "\n";
 }
 
@@ -87,8 +96,7 @@ void run_bench(const BenchOptions& o) {
   std::printf("aerobreak %s bench: BCCA cluster, relaxed, hitting a wall at %.3g d/tau; %s; gamma/k_n = %g; one core\n",
               std::string(version()).c_str(), o.speed, model_summary(o).c_str(), o.gamma_over_kn);
   std::printf("%9s %9s %10s %12s %10s %14s %12s %10s %10s %10s %10s %14s\n", "N", "contacts", "steps", "dt [tau]",
-              "seconds", "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront", "CPU s",
-              "p-steps/CPU s");
+              "seconds", "particle-steps/s", "ns/p-step", "pairs/N", "rebuilds", "wavefront", "CPU s", "p-steps/CPU s");
   for (std::size_t n : o.sizes) {
     const Cluster cluster = ballistic_cluster_cluster_aggregation({n, 1.0, 1.0}, o.seed);
     const RelaxationResult relaxed =
@@ -134,31 +142,47 @@ void add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
   auto* bench = app.add_subcommand("bench", "Measure engine speed in particle-steps per second");
   bench->add_option("--sizes", options->sizes, "Cluster sizes (primaries)")->delimiter(',')->capture_default_str();
-  bench->add_option("--steps", options->steps, "Time steps per size (the same impact window for every size)")->check(CLI::PositiveNumber)->capture_default_str();
-  bench->add_option("--speed", options->speed, "Impact speed, d/tau (tau = sqrt(m/k_n))")->check(CLI::PositiveNumber)->capture_default_str();
-  bench->add_option("--gamma-over-kn", options->gamma_over_kn, "Surface energy over normal stiffness (eq 7)")->check(CLI::PositiveNumber)->capture_default_str();
-  bench->add_option("--friction", options->friction, "Friction coefficient mu")->check(CLI::NonNegativeNumber)->capture_default_str();
-  bench->add_option("--xi-crit", options->critical_rolling, "Critical rolling displacement, d")->check(CLI::PositiveNumber)->capture_default_str();
-  bench->add_option("--damping", options->dissipative_time, "Visco-elastic dissipative time A, tau")->check(CLI::NonNegativeNumber)->capture_default_str();
+  bench->add_option("--steps", options->steps, "Time steps per size (the same impact window for every size)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  bench->add_option("--speed", options->speed, "Impact speed, d/tau (tau = sqrt(m/k_n))")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  bench->add_option("--gamma-over-kn", options->gamma_over_kn, "Surface energy over normal stiffness (eq 7)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  bench->add_option("--friction", options->friction, "Friction coefficient mu")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  bench->add_option("--xi-crit", options->critical_rolling, "Critical rolling displacement, d")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  bench->add_option("--damping", options->dissipative_time, "Visco-elastic dissipative time A, tau")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   bench->add_flag("!--no-wall-adhesion", options->wall_adhesion, "Wall without adhesion (Hertz)");
   bench->add_flag("!--no-rolling", options->rolling, "No rolling resistance");
   bench->add_flag("!--no-twisting", options->twisting, "No twisting resistance");
   bench->add_option("--time-step", options->time_step, "Fixed time step, tau (default: automatic)")
       ->check(CLI::PositiveNumber);
-  bench->add_option("--separation", options->separation,
-                    "Where JKR contacts let go: displacement (at -delta_c, eq 3) or force (at F = -F_c, as LAMMPS)")
+  bench
+      ->add_option("--separation", options->separation,
+                   "Where JKR contacts let go: displacement (at -delta_c, eq 3) or force (at F = -F_c, as LAMMPS)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, JkrSeparation>{
           {"displacement", JkrSeparation::displacement}, {"force", JkrSeparation::force}}))
       ->capture_default_str();
-  bench->add_option("--wavefront-depth", options->wavefront_depth,
-                    "Steps whose force passes run together (1: one step at a time; the results are the same)")
+  bench
+      ->add_option("--wavefront-depth", options->wavefront_depth,
+                   "Steps whose force passes run together (1: one step at a time; the results are the same)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  bench->add_option("--wavefront-from", options->wavefront_min_particles,
-                    "Fewest particles for which steps run in wavefronts")
+  bench
+      ->add_option("--wavefront-from", options->wavefront_min_particles,
+                   "Fewest particles for which steps run in wavefronts")
       ->capture_default_str();
   bench->add_option("--seed", options->seed, "Seed of the cluster and its orientation")->capture_default_str();
-  bench->add_option("--export", options->export_dir, "Write each placed cluster (XYZ) and its parameters (JSON) here, for the LAMMPS peer run");
+  bench->add_option("--export", options->export_dir,
+                    "Write each placed cluster (XYZ) and its parameters (JSON) here, for the LAMMPS peer run");
   bench->callback([options] { run_bench(*options); });
 }
 

@@ -111,8 +111,12 @@ std::vector<std::string> given_fields(const GenerateOptions& o) {
 // The option that sets a field of the registry's request.
 std::string option_of(const std::string& field) {
   static const std::array<std::pair<std::string_view, std::string_view>, 7> options{{
-      {"method", "--generator"}, {"primaries", "--primaries"}, {"geometric_mean_diameter", "--diameter"},
-      {"geometric_standard_deviation", "--gsd"}, {"fractal_dimension", "--df"}, {"prefactor", "--kf"},
+      {"method", "--generator"},
+      {"primaries", "--primaries"},
+      {"geometric_mean_diameter", "--diameter"},
+      {"geometric_standard_deviation", "--gsd"},
+      {"fractal_dimension", "--df"},
+      {"prefactor", "--kf"},
       {"sintering", "--sintering"},
   }};
   for (const auto& [name, option] : options)
@@ -137,7 +141,8 @@ void check_output(const GenerateOptions& o) {
   if (o.relax && !(o.poisson_ratio >= 0.0 && o.poisson_ratio < 0.5))
     throw std::runtime_error("--poisson must lie in [0, 0.5)");
   if (o.output.empty() == o.xyz.empty())
-    throw std::runtime_error("give either --output FILE (.h5 or .hdf5: a cluster library; otherwise XYZ) or --xyz FILE");
+    throw std::runtime_error(
+        "give either --output FILE (.h5 or .hdf5: a cluster library; otherwise XYZ) or --xyz FILE");
   if (!o.to_library() && o.count != 1)
     throw std::runtime_error("an XYZ file holds one cluster; use --output FILE.h5 for --count " +
                              std::to_string(o.count));
@@ -175,8 +180,8 @@ void report_progress(std::size_t done, std::size_t total, const std::string& nam
                      const std::optional<RelaxationResult>& relaxation, double seconds) {
   std::cerr << "[" << done << "/" << total << "] " << name << ": N = " << cluster.size()
             << ", Rg = " << format_number(radius_of_gyration(cluster))
-            << (relaxation ? ", relaxed in " + std::to_string(relaxation->steps) + " steps" : ", not relaxed")
-            << ", " << format_number(seconds, 3) << " s\n";
+            << (relaxation ? ", relaxed in " + std::to_string(relaxation->steps) + " steps" : ", not relaxed") << ", "
+            << format_number(seconds, 3) << " s\n";
 }
 
 // The engine's description of the run (engine/impact/cluster_generation.hpp).
@@ -243,8 +248,9 @@ void add_generate(CLI::App& cluster) {
   generate->add_option("--count", o->count, "Number of clusters")->capture_default_str();
   generate->add_option("--seed", o->seed, "Base seed S")->capture_default_str();
   generate->add_option("--diameter", o->diameter, "Geometric mean primary diameter, d")->capture_default_str();
-  generate->add_option("--gsd", o->geometric_standard_deviation,
-                       "Geometric standard deviation of lognormal diameters (1: monodisperse; ballistic, tunable)")
+  generate
+      ->add_option("--gsd", o->geometric_standard_deviation,
+                   "Geometric standard deviation of lognormal diameters (1: monodisperse; ballistic, tunable)")
       ->capture_default_str();
   generate->add_option("--df", o->fractal_dimension, "Fractal dimension D_f of the tunable generator (1.5 to 2.8)");
   generate->add_option("--kf", o->prefactor,
@@ -262,7 +268,8 @@ void add_generate(CLI::App& cluster) {
                                       ".hdf5, else an XYZ file (one cluster)");
   generate->add_option("--name", o->name_prefix, "Name prefix in a library (default GENERATOR-N<primaries>-seed<S>)");
   generate->add_flag("--overwrite", o->overwrite, "Replace clusters of the same name in a library");
-  auto* xyz = generate->add_option("--xyz", o->xyz, "Write the (single) cluster to this XYZ file (as --output FILE.xyz)");
+  auto* xyz =
+      generate->add_option("--xyz", o->xyz, "Write the (single) cluster to this XYZ file (as --output FILE.xyz)");
   xyz->excludes(output);
   generate->callback([o, sintering] {
     o->sintering_given = sintering->count() > 0;
@@ -279,7 +286,7 @@ struct AnalyzeOptions {
 };
 
 void print_table(const std::vector<NamedCluster>& clusters, const std::vector<ClusterAnalysis>& analyses) {
-  const std::vector<std::string> header{"name",      "N",          "Rg",      "extent",   "contacts",
+  const std::vector<std::string> header{"name",  "N",          "Rg",      "extent",   "contacts",
                                         "coord", "components", "filling", "porosity", "Df(m-r)"};
   std::vector<std::vector<std::string>> rows{header};
   for (std::size_t i = 0; i < clusters.size(); ++i) {
@@ -311,9 +318,9 @@ void print_ensemble(const EnsembleFractalFit& ensemble) {
   }
   const FractalScalingFit& f = *ensemble.fit;
   std::cout << "\nensemble fit N = kf (Rg/a)^Df over " << f.sample_count << " clusters (N " << f.min_primary_count
-            << " to " << f.max_primary_count << ", a = " << format_number(ensemble.primary_radius) << "): Df = "
-            << format_number(f.fractal_dimension) << " +- " << format_number(f.fractal_dimension_standard_error, 2)
-            << ", kf = " << format_number(f.prefactor) << "\n";
+            << " to " << f.max_primary_count << ", a = " << format_number(ensemble.primary_radius)
+            << "): Df = " << format_number(f.fractal_dimension) << " +- "
+            << format_number(f.fractal_dimension_standard_error, 2) << ", kf = " << format_number(f.prefactor) << "\n";
 }
 
 json analysis_json(const NamedCluster& each, const ClusterAnalysis& a) {

@@ -158,8 +158,9 @@ std::string format_fit_list(const Json& summary) {
   std::string text = aligned_columns(rows);
   const auto& fragments = summary.at("fragment_sizes");
   if (!fragments.empty())
-    text += "fragment-size fits (power law and lognormal) at " + std::to_string(fragments.size()) + " grid point(s): " +
-            fragments.front().get<std::string>() + (fragments.size() > 1 ? " ... " + fragments.back().get<std::string>() : "") + "\n";
+    text += "fragment-size fits (power law and lognormal) at " + std::to_string(fragments.size()) +
+            " grid point(s): " + fragments.front().get<std::string>() +
+            (fragments.size() > 1 ? " ... " + fragments.back().get<std::string>() : "") + "\n";
   return text;
 }
 

@@ -47,7 +47,8 @@ constexpr const char* kParameters[][2] = {
 std::int64_t only_study(Store& store) {
   const auto studies = store.studies({2, 0});
   if (studies.total != 1)
-    throw ExportError(400, "study", "the store holds " + std::to_string(studies.total) + " studies: choose one with --study");
+    throw ExportError(400, "study",
+                      "the store holds " + std::to_string(studies.total) + " studies: choose one with --study");
   return studies.items.front().id;
 }
 
@@ -88,12 +89,14 @@ int run_export(const ExportOptions& options) {
       std::cout << rendered.content;
       return 0;
     }
-    const std::filesystem::path path = std::filesystem::path(options.output.empty() ? rendered.file_name : options.output);
+    const std::filesystem::path path =
+        std::filesystem::path(options.output.empty() ? rendered.file_name : options.output);
     write_file(path, rendered.content);
     std::cerr << "aerobreak export: wrote " << path.string() << "\n";
     return 0;
   } catch (const ExportError& error) {
-    std::cerr << "aerobreak export: " << error.what() << (error.field.empty() ? "" : " [parameter " + error.field + "]") << "\n";
+    std::cerr << "aerobreak export: " << error.what() << (error.field.empty() ? "" : " [parameter " + error.field + "]")
+              << "\n";
     return kExitInvalidInput;
   } catch (const std::runtime_error& error) {
     std::cerr << "aerobreak export: " << error.what() << "\n";
@@ -107,9 +110,12 @@ std::vector<std::filesystem::path> write_default_tables(Store& store, StudyFits&
                                                         const std::filesystem::path& directory) {
   const auto study = store.study(study_id);
   if (!study) throw ExportError(404, "study", "no study " + std::to_string(study_id));
-  const std::vector<TableFormat> tables{TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5, TableFormat::melcor};
+  const std::vector<TableFormat> tables{TableFormat::csv, TableFormat::dat, TableFormat::json, TableFormat::hdf5,
+                                        TableFormat::melcor};
   std::vector<std::pair<ExportRequest, std::vector<TableFormat>>> files;
-  const auto add = [&files](ExportRequest request, std::vector<TableFormat> formats) { files.emplace_back(request, formats); };
+  const auto add = [&files](ExportRequest request, std::vector<TableFormat> formats) {
+    files.emplace_back(request, formats);
+  };
   const auto of_kind = [](TableKind kind) {
     ExportRequest request;
     request.kind = kind;
@@ -144,12 +150,14 @@ void add_export_command(CLI::App& app, int& exit_code) {
   command->add_option("--store", options->store, "SQLite store file")->required();
   command->add_option("--study", options->study, "Study id [default: the store's only study]")
       ->check(CLI::Range(std::int64_t{1}, std::numeric_limits<std::int64_t>::max()));
-  command->add_option("-o,--output", options->output, "Output file ('-': stdout) [default: the table's file name, here]");
+  command->add_option("-o,--output", options->output,
+                      "Output file ('-': stdout) [default: the table's file name, here]");
   for (const auto& [name, description] : kParameters) {
     std::string flag = std::string("--") + name;
     std::replace(flag.begin(), flag.end(), '_', '-');
     command->add_option_function<std::string>(
-        flag, [options, key = std::string(name)](const std::string& value) { options->parameters[key] = value; }, description);
+        flag, [options, key = std::string(name)](const std::string& value) { options->parameters[key] = value; },
+        description);
   }
   command->callback([options, &exit_code] {
     try {

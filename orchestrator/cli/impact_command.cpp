@@ -112,9 +112,8 @@ void print_progress(const ImpactProgress& p) {
   std::fprintf(stderr,
                "impact: t = %.6g / %.6g tau (%4.1f%%)  %lld steps  %.3g steps/s  %.3g particle-steps/s  "
                "contacts %zu  wall %zu  fragments %zu  kinetic %.4g\n",
-               p.time, p.time_limit, 100.0 * p.time / p.time_limit, static_cast<long long>(p.steps),
-               p.steps_per_second, p.particle_steps_per_second, p.contacts, p.wall_contacts, p.fragments,
-               p.kinetic_energy);
+               p.time, p.time_limit, 100.0 * p.time / p.time_limit, static_cast<long long>(p.steps), p.steps_per_second,
+               p.particle_steps_per_second, p.contacts, p.wall_contacts, p.fragments, p.kinetic_energy);
 }
 
 // Each line of `text` on stderr, after "impact: ".

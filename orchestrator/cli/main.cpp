@@ -38,17 +38,19 @@ int exit_status(const CLI::App& app, const CLI::ParseError& error) {
 int main(int argc, char** argv) {
   CLI::App app{kAbout, "aerobreak"};
   app.footer("Run 'aerobreak SUBCOMMAND --help' for the options of each subcommand.\n");
-  app.set_version_flag("--version",
-                       [] {
-                         return "aerobreak " + std::string(aerobreak::version()) + " (commit " +
-                                std::string(aerobreak::git_commit()) + ")";
-                       },
-                       "Print the version and the git commit this binary was built from");
+  app.set_version_flag(
+      "--version",
+      [] {
+        return "aerobreak " + std::string(aerobreak::version()) + " (commit " + std::string(aerobreak::git_commit()) +
+               ")";
+      },
+      "Print the version and the git commit this binary was built from");
 
   int exit_code = 0;
   aerobreak::add_run_command(app, exit_code);
   aerobreak::add_serve_command(app, exit_code);
-  auto* study = app.add_subcommand("study", "Submit, inspect or cancel studies on a running service; expand a study offline");
+  auto* study =
+      app.add_subcommand("study", "Submit, inspect or cancel studies on a running service; expand a study offline");
   study->require_subcommand(1);
   aerobreak::add_study_client_subcommands(*study, exit_code);
   aerobreak::add_study_expand_subcommand(*study);

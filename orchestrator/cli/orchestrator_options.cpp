@@ -22,21 +22,24 @@ void OrchestratorOptions::add_to(CLI::App& command) {
       ->capture_default_str();
   command.add_option("--ranks", ranks, "MPI ranks of a worker job [default: the machine's cores]")
       ->check(CLI::Range(1, 100000));
-  command.add_option("--launcher-arg", launcher_arguments,
-                     "An argument for the launcher before the program, e.g. --launcher-arg=--hostfile "
-                     "--launcher-arg=hosts (repeatable)")
+  command
+      .add_option("--launcher-arg", launcher_arguments,
+                  "An argument for the launcher before the program, e.g. --launcher-arg=--hostfile "
+                  "--launcher-arg=hosts (repeatable)")
       ->allow_extra_args(false);
   command.add_option("--idle-shutdown", idle_shutdown, "Seconds an idle worker job waits for work before it stops")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command.add_option("--silence-limit", silence_limit,
-                     "Seconds a worker job, or a rank running a case, may send nothing before it is taken for lost "
-                     "(a lost node, a stopped process): its cases go back to the queue")
+  command
+      .add_option("--silence-limit", silence_limit,
+                  "Seconds a worker job, or a rank running a case, may send nothing before it is taken for lost "
+                  "(a lost node, a stopped process): its cases go back to the queue")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command.add_option("--worker-program", worker_program,
-                     "The program worker jobs run as PROGRAM worker [default: this aerobreak]; the tests' engine "
-                     "double build/tests/aerobreak_synthetic_worker answers from a synthetic law (docs/ADAPTIVE.md)")
+  command
+      .add_option("--worker-program", worker_program,
+                  "The program worker jobs run as PROGRAM worker [default: this aerobreak]; the tests' engine "
+                  "double build/tests/aerobreak_synthetic_worker answers from a synthetic law (docs/ADAPTIVE.md)")
       ->check(CLI::ExistingFile);
   web_directory = default_web_directory().string();
   command.add_option("--web-dir", web_directory, "The dashboard's folder, served at / (empty: the API only)")
@@ -58,7 +61,8 @@ SchedulerOptions OrchestratorOptions::scheduler_options(std::function<void(const
   SchedulerOptions options;
   options.launcher.kind = launcher;
   options.launcher.ranks =
-      ranks > 0 ? ranks : (launcher == "direct" ? 1 : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+      ranks > 0 ? ranks
+                : (launcher == "direct" ? 1 : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   options.launcher.arguments = launcher_arguments;
   options.launcher.program = worker_program.empty() ? current_executable() : std::filesystem::absolute(worker_program);
   options.data_directory = std::filesystem::absolute(data_directory());

@@ -19,12 +19,12 @@ struct OrchestratorOptions {
   std::string store;
   std::string data;  // default: STORE without its extension + ".data"
   std::string launcher = "mpirun";
-  int ranks = 0;     // 0: the machine's cores
+  int ranks = 0;  // 0: the machine's cores
   std::vector<std::string> launcher_arguments;
-  double idle_shutdown = 10.0;  // seconds
+  double idle_shutdown = 10.0;                                               // seconds
   double silence_limit = static_cast<double>(kDefaultSilenceLimit.count());  // seconds
-  std::string web_directory;    // the dashboard's folder; default: default_web_directory()
-  std::string worker_program;   // what worker jobs run as `PROGRAM worker`; default: this executable
+  std::string web_directory;   // the dashboard's folder; default: default_web_directory()
+  std::string worker_program;  // what worker jobs run as `PROGRAM worker`; default: this executable
 
   void add_to(CLI::App& command);
   std::filesystem::path data_directory() const;

@@ -46,9 +46,12 @@ std::string lost_files_text(const SubmissionReceipt& receipt) {
 
 std::string duration_text(double seconds) {
   char text[32];
-  if (seconds < 90.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
-  else if (seconds < 5400.0) std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
-  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600.0);
+  if (seconds < 90.0)
+    std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 5400.0)
+    std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+  else
+    std::snprintf(text, sizeof text, "%.1f h", seconds / 3600.0);
   return text;
 }
 
@@ -222,7 +225,8 @@ int run(RunOptions options) {
   print_critical_speeds(store, fits, receipt.study_id);
   print_failures(store, receipt.study_id);
   print_tables(store, fits, receipt.study_id);
-  std::cout << "\n" << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
+  std::cout << "\n"
+            << progress.by_status.at("done") << " done, " << progress.by_status.at("failed") << " failed in "
             << duration_text(seconds) << "; store " << store.file().string() << "\n";
   scheduler.stop();
   if (options.keep_serving) {
@@ -247,7 +251,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
   command->add_option("--port", options->port, "Loopback port of the service while the study runs (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  command->add_flag("--keep-serving", options->keep_serving, "Keep the service up after the study finished, until Ctrl-C");
+  command->add_flag("--keep-serving", options->keep_serving,
+                    "Keep the service up after the study finished, until Ctrl-C");
   command->add_flag("--recompute-data-files", options->recompute_data_files,
                     "Compute again the done cases whose HDF5 data file is missing or damaged (without it they are "
                     "reported, and their results kept and served)");

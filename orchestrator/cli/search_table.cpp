@@ -35,7 +35,8 @@ std::string format_search_table(const nlohmann::ordered_json& groups, const std:
       "Adaptive search of " + axis + (unit.empty() ? "" : " in " + unit) + " (95 % profile-likelihood intervals):\n";
   for (const auto& g : groups) {
     text += "  " + group_label(g.at("group")) + ": " + g.at("state").get<std::string>() + " after " +
-            std::to_string(g.at("rounds").get<int>()) + " rounds, " + std::to_string(g.at("cases").get<int>()) + " cases\n";
+            std::to_string(g.at("rounds").get<int>()) + " rounds, " + std::to_string(g.at("cases").get<int>()) +
+            " cases\n";
     for (const auto& e : g.at("estimates")) {
       char level[16];
       std::snprintf(level, sizeof level, "%.2g", e.at("level").get<double>());

@@ -54,7 +54,8 @@ void write_port_file(const std::string& path, int port) {
   if (!out || error) {
     std::filesystem::remove(partial, error);
     throw std::runtime_error("cannot write the port file " + path + " (" +
-                             (out ? error.message() : std::string(std::strerror(errno))) + "): --port-file must name a "
+                             (out ? error.message() : std::string(std::strerror(errno))) +
+                             "): --port-file must name a "
                              "file in a folder this user can write");
   }
 }
@@ -68,9 +69,9 @@ int serve(const ServeOptions& options) {
   service_options.host = options.host;
   service_options.port = options.port;
   service_options.connections.max_connections = options.max_connections;
-  service_options.connections.max_connections_per_client =
-      options.max_connections_per_client > 0 ? options.max_connections_per_client
-                                             : std::max<std::size_t>(1, options.max_connections / 2);
+  service_options.connections.max_connections_per_client = options.max_connections_per_client > 0
+                                                               ? options.max_connections_per_client
+                                                               : std::max<std::size_t>(1, options.max_connections / 2);
   if (!options.quiet) service_options.access_log = log;
   if (!options.token_file.empty()) service_options.token = read_token(options.token_file);
   service_options.study_limits.max_cases = options.max_cases;
@@ -107,13 +108,15 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--max-primaries", options->max_primaries, "Largest cluster a client may ask for")
       ->capture_default_str();
-  command->add_option("--max-connections", options->max_connections,
-                      "Connections served at once; beyond, a newcomer takes the slot of one that awaits its "
-                      "request, or one of 4 kept for /api/health, or is answered 503")
+  command
+      ->add_option("--max-connections", options->max_connections,
+                   "Connections served at once; beyond, a newcomer takes the slot of one that awaits its "
+                   "request, or one of 4 kept for /api/health, or is answered 503")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  command->add_option("--max-connections-per-client", options->max_connections_per_client,
-                      "Of them, the most one client address holds [default: half of --max-connections]")
+  command
+      ->add_option("--max-connections-per-client", options->max_connections_per_client,
+                   "Of them, the most one client address holds [default: half of --max-connections]")
       ->check(CLI::Range(1, 10000));
   command->add_flag("--quiet", options->quiet, "No access log (one line per request on stderr)");
   command->callback([options, &exit_code] {

@@ -98,7 +98,9 @@ class ApiClient {
   httplib::Headers headers_;
 };
 
-std::string study_path(long long id, const std::string& tail = {}) { return "/api/studies/" + std::to_string(id) + tail; }
+std::string study_path(long long id, const std::string& tail = {}) {
+  return "/api/studies/" + std::to_string(id) + tail;
+}
 
 void print_progress(const nlohmann::ordered_json& progress) {
   const auto& counts = progress.at("counts");
@@ -149,30 +151,33 @@ int run_client(const std::string& action, const ClientOptions& options) {
     if (options.json) {
       std::cout << receipt.dump(2) << "\n";
     } else {
-      std::cout << "study " << receipt.at("id") << (receipt.at("existing_study").get<bool>() ? " (submitted before)" : "")
-                << ": " << receipt.at("cases") << " cases, " << receipt.at("new_cases") << " new, "
+      std::cout << "study " << receipt.at("id")
+                << (receipt.at("existing_study").get<bool>() ? " (submitted before)" : "") << ": "
+                << receipt.at("cases") << " cases, " << receipt.at("new_cases") << " new, "
                 << receipt.at("already_done") << " already done\n";
     }
   } else if (action == "list") {
-    const auto page = api.get("/api/studies?limit=" + std::to_string(options.limit) +
-                              "&offset=" + std::to_string(options.offset));
-    if (options.json) std::cout << page.dump(2) << "\n";
+    const auto page =
+        api.get("/api/studies?limit=" + std::to_string(options.limit) + "&offset=" + std::to_string(options.offset));
+    if (options.json)
+      std::cout << page.dump(2) << "\n";
     else
       for (const auto& study : page.at("items"))
         std::cout << study.at("id") << "  " << study.at("status").get<std::string>() << "  " << study.at("cases")
                   << " cases  " << study.at("name").get<std::string>() << "\n";
   } else if (action == "status") {
     const auto progress = api.get(study_path(options.study_id, "/progress"));
-    if (options.json) std::cout << progress.dump(2) << "\n";
-    else print_progress(progress);
+    if (options.json)
+      std::cout << progress.dump(2) << "\n";
+    else
+      print_progress(progress);
   } else if (action == "results") {
     if (options.json) {
       std::string query = "?limit=" + std::to_string(options.limit) + "&offset=" + std::to_string(options.offset);
       if (!options.outcome.empty()) query += "&outcome=" + options.outcome;
       std::cout << api.get(study_path(options.study_id, "/results") + query).dump(2) << "\n";
     } else {
-      std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")),
-                                        unit_system(api, options));
+      std::cout << format_outcome_table(api.get(study_path(options.study_id, "/outcomes")), unit_system(api, options));
     }
   } else if (action == "correlations") {
     print_correlations(api, options);
@@ -189,7 +194,8 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
   const auto add = [&](const std::string& name, const std::string& summary) {
     auto* command = study.add_subcommand(name, summary);
     command->add_option("--url", options->url, "Service URL [default: AEROBREAK_URL or http://127.0.0.1:8080]");
-    command->add_option("--token-file", options->token_file, "File whose first line is the bearer token [AEROBREAK_TOKEN]");
+    command->add_option("--token-file", options->token_file,
+                        "File whose first line is the bearer token [AEROBREAK_TOKEN]");
     command->add_flag("--json", options->json, "Print the service's JSON answer");
     command->callback([name, options, &exit_code] {
       try {
@@ -201,8 +207,9 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
                   << "\n";
         if (refusal.body.is_object() && refusal.body.contains("violations"))
           for (const auto& violation : refusal.body.at("violations"))
-            std::cerr << "  " << (violation.value("pointer", std::string()).empty() ? "(document)"
-                                                                                     : violation.value("pointer", std::string()))
+            std::cerr << "  "
+                      << (violation.value("pointer", std::string()).empty() ? "(document)"
+                                                                            : violation.value("pointer", std::string()))
                       << ": " << violation.value("message", std::string()) << "\n";
         exit_code = kExitInvalidInput;
       } catch (const ServiceUnreachable& unreachable) {
@@ -231,13 +238,18 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
       ->check(CLI::IsMember({"stick", "bounce", "break-up", "undetermined"}));
   results->add_option("--limit", options->limit, "With --json: results per page")->capture_default_str();
   results->add_option("--offset", options->offset, "With --json: results to skip")->capture_default_str();
-  auto* correlations = add("correlations", "A study's fitted correlations: critical speeds and energies, and every fit");
+  auto* correlations =
+      add("correlations", "A study's fitted correlations: critical speeds and energies, and every fit");
   correlations->add_option("id", options->study_id, "Study id")->required();
   correlations->add_option("--fit", options->fit, "One fit in full, as JSON (a name from the list)");
-  correlations->add_option("--covariates", options->covariates, "Covariates of the pooled models, e.g. gamma_over_kn,N "
-                           "(default: every one of gamma_over_kn, N, Df, angle the study sweeps)")
+  correlations
+      ->add_option("--covariates", options->covariates,
+                   "Covariates of the pooled models, e.g. gamma_over_kn,N "
+                   "(default: every one of gamma_over_kn, N, Df, angle the study sweeps)")
       ->each([options](const std::string&) { options->default_covariates = false; });
-  add("cancel", "Cancel a study: its queued cases will not run")->add_option("id", options->study_id, "Study id")->required();
+  add("cancel", "Cancel a study: its queued cases will not run")
+      ->add_option("id", options->study_id, "Study id")
+      ->required();
 }
 
 }  // namespace aerobreak

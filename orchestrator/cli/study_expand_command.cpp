@@ -28,7 +28,8 @@ void print_table(const Study& study, const std::vector<StudyCase>& cases) {
 void print_json(const std::vector<StudyCase>& cases) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const auto& c : cases)
-    out.push_back({{"hash", c.hash}, {"grid_point", c.grid_point}, {"replicate", c.replicate}, {"document", c.document}});
+    out.push_back(
+        {{"hash", c.hash}, {"grid_point", c.grid_point}, {"replicate", c.replicate}, {"document", c.document}});
   std::cout << out.dump(2) << "\n";
 }
 

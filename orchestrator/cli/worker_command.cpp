@@ -18,9 +18,8 @@ void add_worker_command(CLI::App& app) {
                    "failed, kind lost)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  worker->callback([silence_limit] {
-    run_worker_job(std::chrono::milliseconds(static_cast<long>(*silence_limit * 1000.0)));
-  });
+  worker->callback(
+      [silence_limit] { run_worker_job(std::chrono::milliseconds(static_cast<long>(*silence_limit * 1000.0))); });
 }
 
 }  // namespace aerobreak

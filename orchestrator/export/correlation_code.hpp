@@ -16,24 +16,24 @@ namespace aerobreak {
 
 // One condition's fit of one outcome, as the code evaluates it.
 struct CodeFunction {
-  std::string condition;          // c1, c2, ... (pooled over N) or g1, ... (one group's own fit)
-  nlohmann::ordered_json group;   // the condition's axis values
+  std::string condition;         // c1, c2, ... (pooled over N) or g1, ... (one group's own fit)
+  nlohmann::ordered_json group;  // the condition's axis values
   Outcome outcome = Outcome::break_up;
-  std::string fit;                // the fit's name in the study's correlations ("" without one)
+  std::string fit;  // the fit's name in the study's correlations ("" without one)
   PredictionSource source = PredictionSource::none;
-  bool size_term = false;         // logit P = b0 + b1 ln v + b2 ln n (else b0 + b1 ln v)
+  bool size_term = false;  // logit P = b0 + b1 ln v + b2 ln n (else b0 + b1 ln v)
   std::vector<double> coefficients;
   std::vector<std::vector<double>> covariance;
   std::array<double, 2> speed_box{0.0, 0.0};  // the validity box, as predict widens it (1e-12)
   std::array<double, 2> size_box{0.0, 0.0};
-  BandPoint observed{};           // a no-transition fit's 0 or 1 with its Wilson band
+  BandPoint observed{};                 // a no-transition fit's 0 or 1 with its Wilson band
   std::vector<CriticalValue> critical;  // a group's own fit: its profile-likelihood values (constants)
 };
 
 struct CorrelationCode {
   std::int64_t study = 0;
-  std::string prefix;             // "ab<study>_": of every name
-  std::string speed_unit;         // "m/s" or "d/tau": the unit of v
+  std::string prefix;               // "ab<study>_": of every name
+  std::string speed_unit;           // "m/s" or "d/tau": the unit of v
   std::vector<std::string> header;  // comment lines: provenance, units, status codes
   std::vector<CodeFunction> functions;
 };

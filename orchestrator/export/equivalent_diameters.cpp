@@ -38,11 +38,15 @@ double aerodynamic_diameter(double primaries, double primary_diameter, double de
 
 double primaries_of_diameter(DiameterType type, double diameter, double primary_diameter, double density) {
   switch (type) {
-    case DiameterType::volume: return diameter * diameter * diameter;
-    case DiameterType::mobility: return kProjectedAreaPrefactor * std::pow(diameter, 2.0 * kProjectedAreaExponent);
-    case DiameterType::aerodynamic: break;
+    case DiameterType::volume:
+      return diameter * diameter * diameter;
+    case DiameterType::mobility:
+      return kProjectedAreaPrefactor * std::pow(diameter, 2.0 * kProjectedAreaExponent);
+    case DiameterType::aerodynamic:
+      break;
   }
-  return solve_increasing([&](double n) { return aerodynamic_diameter(n, primary_diameter, density); }, diameter, 1e-6, 1e18);
+  return solve_increasing([&](double n) { return aerodynamic_diameter(n, primary_diameter, density); }, diameter, 1e-6,
+                          1e18);
 }
 
 }  // namespace aerobreak

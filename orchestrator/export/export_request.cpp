@@ -14,12 +14,14 @@ const std::map<std::string, TableKind> kKinds{{"grid", TableKind::grid},
                                               {"fit", TableKind::fit},
                                               {"sections", TableKind::sections},
                                               {"correlations", TableKind::correlations}};
-const std::map<std::string, TableFormat> kFormats{{"csv", TableFormat::csv},       {"dat", TableFormat::dat},
-                                                  {"json", TableFormat::json},     {"hdf5", TableFormat::hdf5},
-                                                  {"melcor", TableFormat::melcor}, {"openfoam", TableFormat::openfoam},
-                                                  {"fortran", TableFormat::fortran}, {"c", TableFormat::c}};
+const std::map<std::string, TableFormat> kFormats{
+    {"csv", TableFormat::csv},         {"dat", TableFormat::dat},
+    {"json", TableFormat::json},       {"hdf5", TableFormat::hdf5},
+    {"melcor", TableFormat::melcor},   {"openfoam", TableFormat::openfoam},
+    {"fortran", TableFormat::fortran}, {"c", TableFormat::c}};
 const std::set<std::string> kQuantities{"p_stick", "p_bounce", "p_break_up", "retained_mass_fraction", "restitution"};
-const std::vector<std::string> kMaterialFields{"youngs_modulus", "poisson_ratio", "density", "surface_energy", "diameter"};
+const std::vector<std::string> kMaterialFields{"youngs_modulus", "poisson_ratio", "density", "surface_energy",
+                                               "diameter"};
 
 double number(const std::string& name, const std::string& text) {
   double value = 0.0;
@@ -53,7 +55,8 @@ std::vector<std::pair<std::string, double>> selections(const std::string& name, 
     const std::string column = item.substr(0, colon);
     if (colon == std::string::npos || column.empty() ||
         column.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
-      throw ExportError(400, name, "parameter 'select' must list NAME:VALUE pairs, NAME a column name (got '" + item + "')");
+      throw ExportError(400, name,
+                        "parameter 'select' must list NAME:VALUE pairs, NAME a column name (got '" + item + "')");
     selected.emplace_back(column, number(name, item.substr(colon + 1)));
   }
   if (selected.empty()) throw ExportError(400, name, "parameter 'select' must list at least one NAME:VALUE pair");
@@ -76,8 +79,10 @@ bool flag(const std::string& name, const std::string& text) {
 ExportMaterial material_from(const std::map<std::string, std::string>& given) {
   for (const auto& field : kMaterialFields)
     if (!given.count(field))
-      throw ExportError(400, field, "a material needs all of youngs_modulus, poisson_ratio, density, surface_energy and diameter; '" +
-                                        field + "' is missing");
+      throw ExportError(
+          400, field,
+          "a material needs all of youngs_modulus, poisson_ratio, density, surface_energy and diameter; '" + field +
+              "' is missing");
   ExportMaterial material;
   material.material.youngs_modulus = positive("youngs_modulus", given.at("youngs_modulus"));
   material.material.poisson_ratio = number("poisson_ratio", given.at("poisson_ratio"));
@@ -90,34 +95,46 @@ ExportMaterial material_from(const std::map<std::string, std::string>& given) {
 }
 
 void apply(ExportRequest& request, const std::string& name, const std::string& value) {
-  if (name == "format") request.format = choice(kFormats, name, value);
-  else if (name == "kind") request.kind = choice(kKinds, name, value);
+  if (name == "format")
+    request.format = choice(kFormats, name, value);
+  else if (name == "kind")
+    request.kind = choice(kKinds, name, value);
   else if (name == "interpolate")
-    request.interpolate_gamma = choice(std::map<std::string, bool>{{"gamma_over_kn", true}, {"none", false}}, name, value);
+    request.interpolate_gamma =
+        choice(std::map<std::string, bool>{{"gamma_over_kn", true}, {"none", false}}, name, value);
   else if (name == "section_ratio") {
     request.section_ratio = number(name, value);
     if (!(request.section_ratio >= 1.1 && request.section_ratio <= 1000.0))
       throw ExportError(400, name, "parameter 'section_ratio' must lie in [1.1, 1000] (got " + value + ")");
   } else if (name == "quantity") {
     if (!kQuantities.count(value))
-      throw ExportError(400, name, "parameter 'quantity' must be one of p_stick, p_bounce, p_break_up, retained_mass_fraction, restitution");
+      throw ExportError(
+          400, name,
+          "parameter 'quantity' must be one of p_stick, p_bounce, p_break_up, retained_mass_fraction, restitution");
     request.quantity = value;
   } else if (name == "layout") {
     if (value != "table2d" && value != "csv" && value != "dict")
       throw ExportError(400, name, "parameter 'layout' must be table2d, csv or dict");
     request.layout = value;
-  } else if (name == "gamma_over_kn") request.gamma_over_kn = positive(name, value);
-  else if (name == "speeds") request.speeds = positive_list(name, value);
-  else if (name == "sizes") request.sizes = positive_list(name, value);
-  else if (name == "diameters") request.diameters = positive_list(name, value);
+  } else if (name == "gamma_over_kn")
+    request.gamma_over_kn = positive(name, value);
+  else if (name == "speeds")
+    request.speeds = positive_list(name, value);
+  else if (name == "sizes")
+    request.sizes = positive_list(name, value);
+  else if (name == "diameters")
+    request.diameters = positive_list(name, value);
   else if (name == "diameter_type")
     request.diameter_type = choice(std::map<std::string, DiameterType>{{"mobility", DiameterType::mobility},
                                                                        {"volume", DiameterType::volume},
                                                                        {"aerodynamic", DiameterType::aerodynamic}},
                                    name, value);
-  else if (name == "strict") request.strict = flag(name, value);
-  else if (name == "select") request.select = selections(name, value);
-  else throw ExportError(400, name, "unknown parameter '" + name + "'");
+  else if (name == "strict")
+    request.strict = flag(name, value);
+  else if (name == "select")
+    request.select = selections(name, value);
+  else
+    throw ExportError(400, name, "unknown parameter '" + name + "'");
 }
 
 }  // namespace
@@ -132,21 +149,26 @@ ExportRequest parse_export_request(const std::vector<std::pair<std::string, std:
     if (name.size() > 64 || value.size() > kMaxExportParameterLength)
       throw ExportError(400, name.substr(0, 64), "parameter '" + name.substr(0, 64) + "' is too long");
     if (!seen.insert(name).second) throw ExportError(400, name, "parameter '" + name + "' is given twice");
-    if (std::find(kMaterialFields.begin(), kMaterialFields.end(), name) != kMaterialFields.end()) material[name] = value;
-    else apply(request, name, value);
+    if (std::find(kMaterialFields.begin(), kMaterialFields.end(), name) != kMaterialFields.end())
+      material[name] = value;
+    else
+      apply(request, name, value);
   }
   if (!material.empty()) request.material = material_from(material);
   const bool code = request.format == TableFormat::fortran || request.format == TableFormat::c;
   if (code && request.kind != TableKind::correlations)
     throw ExportError(400, "format", "formats fortran and c are the code of kind=correlations");
   if (request.kind == TableKind::correlations && !code && request.format != TableFormat::json)
-    throw ExportError(400, "format", "kind=correlations is written as fortran, c or json (got format " + to_string(request.format) + ")");
+    throw ExportError(
+        400, "format",
+        "kind=correlations is written as fortran, c or json (got format " + to_string(request.format) + ")");
   if (!request.diameters.empty() && !request.sizes.empty())
     throw ExportError(400, "diameters", "give sizes as primaries (sizes) or as diameters (diameters), not both");
   if (!request.diameters.empty() && request.kind != TableKind::fit)
     throw ExportError(400, "diameters", "diameters are evaluated from the fits: kind=fit");
   if (request.material && request.gamma_over_kn)
-    throw ExportError(400, "gamma_over_kn", "give either a material or gamma_over_kn, not both (a material fixes gamma/k_n)");
+    throw ExportError(400, "gamma_over_kn",
+                      "give either a material or gamma_over_kn, not both (a material fixes gamma/k_n)");
   return request;
 }
 

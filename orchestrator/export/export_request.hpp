@@ -27,10 +27,11 @@ struct ExportRequest {
   TableFormat format = TableFormat::csv;
   std::optional<ExportMaterial> material;
   std::optional<double> gamma_over_kn;  // reduced rows of this study value only (not with a material)
-  bool interpolate_gamma = false;  // interpolate=gamma_over_kn
-  double section_ratio = 2.0;      // sections: ratio of the upper to the lower mass of a section
+  bool interpolate_gamma = false;       // interpolate=gamma_over_kn
+  double section_ratio = 2.0;           // sections: ratio of the upper to the lower mass of a section
   std::string quantity = "p_stick";  // openfoam: p_stick | p_bounce | p_break_up | retained_mass_fraction | restitution
-  std::string layout = "table2d";    // openfoam: table2d (interpolation2DTable) | csv (its data) | dict (Function1 csvFile entries)
+  std::string layout =
+      "table2d";  // openfoam: table2d (interpolation2DTable) | csv (its data) | dict (Function1 csvFile entries)
   // kind=fit: the grid to evaluate (absent: the fit's own axes) and whether to refuse extrapolation.
   std::vector<double> speeds;
   std::vector<double> sizes;

@@ -21,14 +21,18 @@ struct FitSet {
   std::array<const LogisticFit*, 3> fits{};
 };
 
-std::size_t outcome_index(Outcome outcome) { return outcome == Outcome::stick ? 0 : outcome == Outcome::bounce ? 1 : 2; }
+std::size_t outcome_index(Outcome outcome) {
+  return outcome == Outcome::stick ? 0 : outcome == Outcome::bounce ? 1 : 2;
+}
 
 bool speed_fit(const LogisticFit& fit) { return fit.dose == "impact_speed" && fit.response != Outcome::undetermined; }
 
 // One group's own fit (a pooled model has its covariates).
 bool per_group_fit(const LogisticFit& fit) { return speed_fit(fit) && fit.covariates.empty(); }
 
-std::string size_axis_of(const CorrelationSet& set) { return set.request.size_axis.empty() ? "primaries" : set.request.size_axis; }
+std::string size_axis_of(const CorrelationSet& set) {
+  return set.request.size_axis.empty() ? "primaries" : set.request.size_axis;
+}
 
 // A fit pooled along the size alone (ln N its one covariate), one per condition of the other axes.
 bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
@@ -39,7 +43,8 @@ bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
 bool gives_values(const LogisticFit& fit) {
   return fit.common.status == FitStatus::no_transition ||
          (fit.common.coefficients.size() == static_cast<Eigen::Index>(2 + fit.covariates.size()) &&
-          (fit.common.status == FitStatus::ok || (fit.common.status == FitStatus::separation && fit.covariates.empty())));
+          (fit.common.status == FitStatus::ok ||
+           (fit.common.status == FitStatus::separation && fit.covariates.empty())));
 }
 
 template <typename Wanted>
@@ -56,7 +61,8 @@ std::vector<FitSet> fit_sets(const std::vector<LogisticFit>& fits, Wanted wanted
 }
 
 bool any_values(const FitSet& set) {
-  return std::any_of(set.fits.begin(), set.fits.end(), [](const LogisticFit* fit) { return fit && gives_values(*fit); });
+  return std::any_of(set.fits.begin(), set.fits.end(),
+                     [](const LogisticFit* fit) { return fit && gives_values(*fit); });
 }
 
 // A group's axes without N: the condition of the fits pooled over the sizes.
@@ -73,10 +79,15 @@ FitBlock block_of(const FitSet& set, const std::string& size_axis, FitModel mode
 std::string no_pooled_fit(const CorrelationSet& set, const std::string& key, double size) {
   std::string why = "clusters of " + number_text(size) + " primaries were not run";
   const std::string size_axis = size_axis_of(set);
-  if (std::none_of(set.logistic.begin(), set.logistic.end(), [&](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
-    return why + ", and the study does not sweep the cluster size over several values: a size it did not run needs a fit pooled "
-                 "over several sizes (logit P = b0 + b1 ln v + b2 ln N)";
-  why += "; the fit pooled over the study's sizes (logit P = b0 + b1 ln v + b2 ln N) cannot be used for the condition " + key + ":";
+  if (std::none_of(set.logistic.begin(), set.logistic.end(),
+                   [&](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
+    return why +
+           ", and the study does not sweep the cluster size over several values: a size it did not run needs a fit "
+           "pooled "
+           "over several sizes (logit P = b0 + b1 ln v + b2 ln N)";
+  why +=
+      "; the fit pooled over the study's sizes (logit P = b0 + b1 ln v + b2 ln N) cannot be used for the condition " +
+      key + ":";
   for (const auto& fit : set.logistic)
     if (pooled_over_size(fit, size_axis) && fit.common.group.dump() == key)
       why += " " + fit.common.name + " " + std::string(to_string(fit.common.status)) +
@@ -90,14 +101,16 @@ std::vector<double> sorted_sizes(const std::vector<double>& sizes) {
 }
 
 // The blocks of the asked sizes, per combination of the other axes (in grid order).
-std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<FitSet>& per_size, const std::vector<double>& sizes) {
+std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<FitSet>& per_size,
+                                   const std::vector<double>& sizes) {
   const std::string size_axis = size_axis_of(set);
   std::set<std::pair<std::string, double>> run;  // every size that has a per-size fit, usable or not
   for (const auto& fit : set.logistic)
     if (per_group_fit(fit))
       run.insert({other_axes(fit.common.group, size_axis), key_value(fit.common.group.value(size_axis, kMissing))});
   std::map<std::string, FitSet> pooled;
-  for (auto& fits : fit_sets(set.logistic, [&size_axis](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
+  for (auto& fits :
+       fit_sets(set.logistic, [&size_axis](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
     if (any_values(fits)) pooled.emplace(fits.group.dump(), fits);
   std::vector<std::string> combinations;
   for (const auto& fits : per_size)
@@ -109,8 +122,10 @@ std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<
       const auto own = std::find_if(per_size.begin(), per_size.end(), [&](const FitSet& fits) {
         return other_axes(fits.group, size_axis) == key && fits.group.value(size_axis, kMissing) == size;
       });
-      if (own != per_size.end()) blocks.push_back(block_of(*own, size_axis, FitModel::per_size));
-      else if (run.count({key, size})) continue;  // run, but none of its fits gives a value: no rows, as without `sizes`
+      if (own != per_size.end())
+        blocks.push_back(block_of(*own, size_axis, FitModel::per_size));
+      else if (run.count({key, size}))
+        continue;  // run, but none of its fits gives a value: no rows, as without `sizes`
       else if (const auto found = pooled.find(key); found != pooled.end()) {
         FitSet at_size = found->second;
         at_size.group = std::find_if(per_size.begin(), per_size.end(), [&](const FitSet& fits) {
@@ -140,8 +155,9 @@ std::vector<FitBlock> fit_blocks(const CorrelationSet& set, const ExportRequest&
   auto blocks = asked_blocks(set, per_size, sizes);
   for (const double size : sizes)
     if (std::none_of(blocks.begin(), blocks.end(), [size](const FitBlock& block) { return block.size == size; }))
-      throw ExportError(422, "sizes", "no fit for clusters of " + number_text(size) + " primaries: the study ran them, but " +
-                                          "no outcome could be fitted (see its correlations)");
+      throw ExportError(422, "sizes",
+                        "no fit for clusters of " + number_text(size) + " primaries: the study ran them, but " +
+                            "no outcome could be fitted (see its correlations)");
   return blocks;
 }
 

@@ -105,12 +105,14 @@ Evaluator prediction_of(std::size_t k, int part) {
 nlohmann::ordered_json model_metadata() {
   return {{"column", "model: 0 = per_size, 1 = pooled_ln_n"},
           {"per_size", "a size the study ran: that size's own fit per group of the other axes, logit P = b0 + b1 ln v"},
-          {"pooled_ln_n", "a size the study did not run: the fit over all the study's sizes per condition of the other axes, "
-                          "logit P = b0 + b1 ln v + b2 ln N (inside the box between the sizes run, extrapolated outside)"},
+          {"pooled_ln_n",
+           "a size the study did not run: the fit over all the study's sizes per condition of the other axes, "
+           "logit P = b0 + b1 ln v + b2 ln N (inside the box between the sizes run, extrapolated outside)"},
           {"band", "95 %: eta +- 1.96 sqrt(x' Cov x) on the linear predictor eta = x' b, then P = 1 / (1 + exp(-eta))"},
-          {"status", "p_OUTCOME_status: 0 = fitted (maximum likelihood); 1 = fitted under separation (Firth); 2 = no "
-                     "transition in the fit's data: the observed 0 or 1, band the Wilson interval of all its cases; "
-                     "3 = no value (too few data, not converged, or a pooled fit under separation)"},
+          {"status",
+           "p_OUTCOME_status: 0 = fitted (maximum likelihood); 1 = fitted under separation (Firth); 2 = no "
+           "transition in the fit's data: the observed 0 or 1, band the Wilson interval of all its cases; "
+           "3 = no value (too few data, not converged, or a pooled fit under separation)"},
           {"outcomes", "each outcome is its own binomial fit: the three probabilities need not sum to 1"}};
 }
 
@@ -133,7 +135,8 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
   for (const auto& block : blocks) groups.push_back(&block.group);
   const auto axes = axis_columns(groups, {}, speed_unit_of_study != 1.0);
   for (const auto& axis : axes)
-    add(axis.name, axis.unit(), axis.description(), ColumnRole::input, [&axis](const FitRow& row) { return axis.value(row.block->group); });
+    add(axis.name, axis.unit(), axis.description(), ColumnRole::input,
+        [&axis](const FitRow& row) { return axis.value(row.block->group); });
   add_axis_labels(table.metadata, axes);
   if (table.find("primaries")) {
     add("d_ve", "d", "volume-equivalent diameter d N^(1/3)", ColumnRole::derived,
@@ -146,14 +149,20 @@ LookupTable fit_table(const CorrelationSet& set, const ExportRequest& request, d
     add(name, "1", what + " from the fit", ColumnRole::output, prediction_of(k, 0));
     add(name + "_lo", "1", what + ", 95 % band, lower end", ColumnRole::output, prediction_of(k, -1));
     add(name + "_hi", "1", what + ", 95 % band, upper end", ColumnRole::output, prediction_of(k, 1));
-    add(name + "_status", "1", "where " + what + " comes from: 0 fitted, 1 fitted under separation (Firth), 2 no transition "
-        "in the fit's data (the observed 0 or 1), 3 no value", ColumnRole::output, prediction_of(k, 2));
+    add(name + "_status", "1",
+        "where " + what +
+            " comes from: 0 fitted, 1 fitted under separation (Firth), 2 no transition "
+            "in the fit's data (the observed 0 or 1), 3 no value",
+        ColumnRole::output, prediction_of(k, 2));
   }
-  add("inside_validity", "1", "1: the speed (and for model 1 the size) lies in the validity boxes of the fits that give a "
-      "value; 0: extrapolated", ColumnRole::output, [](const FitRow& row) { return inside(row) ? 1.0 : 0.0; });
-  add("model", "1", "the fit of the row: 0 = per_size (the size's own fit, logit P = b0 + b1 ln v), 1 = pooled_ln_n (pooled over "
-      "the study's sizes, logit P = b0 + b1 ln v + b2 ln N)", ColumnRole::input,
-      [](const FitRow& row) { return static_cast<double>(row.block->model); });
+  add("inside_validity", "1",
+      "1: the speed (and for model 1 the size) lies in the validity boxes of the fits that give a "
+      "value; 0: extrapolated",
+      ColumnRole::output, [](const FitRow& row) { return inside(row) ? 1.0 : 0.0; });
+  add("model", "1",
+      "the fit of the row: 0 = per_size (the size's own fit, logit P = b0 + b1 ln v), 1 = pooled_ln_n (pooled over "
+      "the study's sizes, logit P = b0 + b1 ln v + b2 ln N)",
+      ColumnRole::input, [](const FitRow& row) { return static_cast<double>(row.block->model); });
   return table;
 }
 

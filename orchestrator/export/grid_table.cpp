@@ -13,8 +13,8 @@ namespace {
 
 struct GridRow {
   const GridRowInputs& inputs;
-  const GridPointStatistics* statistics;      // nullptr: no result
-  const GridPointFragmentMasses* fragments;   // nullptr: no determined result
+  const GridPointStatistics* statistics;     // nullptr: no result
+  const GridPointFragmentMasses* fragments;  // nullptr: no determined result
 };
 
 struct ColumnSpec {
@@ -54,7 +54,8 @@ std::function<double(const GridRow&)> reentrained_moment(int k) {
     double sum = 0.0;
     for (const auto& fragment_class : row.fragments->classes)
       if (!fragment_class.on_wall)
-        sum += static_cast<double>(fragment_class.fragments) * std::pow(static_cast<double>(fragment_class.primaries), k);
+        sum +=
+            static_cast<double>(fragment_class.fragments) * std::pow(static_cast<double>(fragment_class.primaries), k);
     return sum / static_cast<double>(row.fragments->results);
   };
 }
@@ -75,22 +76,26 @@ double share_of_results(const GridRow& row, std::size_t GridPointOutcomes::*coun
 }
 
 double lambda(const GridRow& row) {
-  return adhesion_energy_ratio(reduced_material(row.inputs.gamma_over_kn, row.inputs.poisson_ratio), 1.0, row.inputs.speed);
+  return adhesion_energy_ratio(reduced_material(row.inputs.gamma_over_kn, row.inputs.poisson_ratio), 1.0,
+                               row.inputs.speed);
 }
 
 std::vector<ColumnSpec> input_columns() {
   return {
-      {"impact_speed", "d/tau", "normal impact speed v0", ColumnRole::speed, [](const GridRow& r) { return r.inputs.speed; }},
-      {"primaries", "1", "primaries N in the cluster", ColumnRole::input, [](const GridRow& r) { return r.inputs.primaries; }},
+      {"impact_speed", "d/tau", "normal impact speed v0", ColumnRole::speed,
+       [](const GridRow& r) { return r.inputs.speed; }},
+      {"primaries", "1", "primaries N in the cluster", ColumnRole::input,
+       [](const GridRow& r) { return r.inputs.primaries; }},
       {"d_ve", "d", "volume-equivalent diameter d N^(1/3)", ColumnRole::derived,
        [](const GridRow& r) { return volume_equivalent_diameter(r.inputs.primaries); }},
-      {"d_mob", "d", "mobility-equivalent diameter, free-molecular regime, d N^(1/(2*1.08)) (docs/EXPORT.md)", ColumnRole::derived,
-       [](const GridRow& r) { return mobility_equivalent_diameter(r.inputs.primaries); }},
+      {"d_mob", "d", "mobility-equivalent diameter, free-molecular regime, d N^(1/(2*1.08)) (docs/EXPORT.md)",
+       ColumnRole::derived, [](const GridRow& r) { return mobility_equivalent_diameter(r.inputs.primaries); }},
       {"gamma_over_kn", "1", "adhesion-to-stiffness ratio gamma/k_n", ColumnRole::input,
        [](const GridRow& r) { return r.inputs.gamma_over_kn; }},
-      {"impact_angle", "deg", "impact angle from head-on", ColumnRole::input, [](const GridRow& r) { return r.inputs.angle; }},
-      {"fractal_dimension", "1", "the generator's target fractal dimension Df (missing: not set, e.g. ballistic)", ColumnRole::input,
-       [](const GridRow& r) { return r.inputs.fractal_dimension; }},
+      {"impact_angle", "deg", "impact angle from head-on", ColumnRole::input,
+       [](const GridRow& r) { return r.inputs.angle; }},
+      {"fractal_dimension", "1", "the generator's target fractal dimension Df (missing: not set, e.g. ballistic)",
+       ColumnRole::input, [](const GridRow& r) { return r.inputs.fractal_dimension; }},
       {"lambda", "1", "adhesion over kinetic energy of one primary, report eq 19", ColumnRole::derived, lambda},
   };
 }
@@ -110,13 +115,14 @@ std::vector<ColumnSpec> output_columns() {
       {"p_break_up", "1", "P(break-up)", ColumnRole::output, probability("break-up", 0)},
       {"p_break_up_lo", "1", "P(break-up), Wilson 95 % lower bound", ColumnRole::output, probability("break-up", -1)},
       {"p_break_up_hi", "1", "P(break-up), Wilson 95 % upper bound", ColumnRole::output, probability("break-up", 1)},
-      {"p_undetermined", "1", "share of results that reached the time limit unsettled", ColumnRole::output, probability("undetermined", 0)},
+      {"p_undetermined", "1", "share of results that reached the time limit unsettled", ColumnRole::output,
+       probability("undetermined", 0)},
       {"retained_mass_fraction", "1", "mean mass fraction retained on the wall", ColumnRole::output,
        moment_mean(&GridPointStatistics::retained_mass_fraction, false)},
       {"retained_mass_fraction_sd", "1", "its standard deviation over the results", ColumnRole::output,
        moment_mean(&GridPointStatistics::retained_mass_fraction, true)},
-      {"restitution", "1", "mean normal restitution e_n of the bounces (missing where none bounced)", ColumnRole::output,
-       moment_mean(&GridPointStatistics::restitution, false)},
+      {"restitution", "1", "mean normal restitution e_n of the bounces (missing where none bounced)",
+       ColumnRole::output, moment_mean(&GridPointStatistics::restitution, false)},
       {"restitution_sd", "1", "its standard deviation over the bounces", ColumnRole::output,
        moment_mean(&GridPointStatistics::restitution, true)},
       {"restitution_bounces", "1", "bounces the restitution is averaged over", ColumnRole::output,
@@ -125,14 +131,20 @@ std::vector<ColumnSpec> output_columns() {
        moment_mean(&GridPointStatistics::damage_ratio, false)},
       {"largest_fragment_share", "1", "mean share of the primaries in the largest fragment", ColumnRole::output,
        moment_mean(&GridPointStatistics::largest_fragment_share, false)},
-      {"reentrained_m0", "1", "re-entrained fragments per impact, sum of N_f^0 (determined results)", ColumnRole::output, reentrained_moment(0)},
-      {"reentrained_m1", "1", "re-entrained primaries per impact, sum of N_f", ColumnRole::output, reentrained_moment(1)},
-      {"reentrained_m2", "1", "sum of N_f^2 over the re-entrained fragments, per impact", ColumnRole::output, reentrained_moment(2)},
-      {"reentrained_m3", "1", "sum of N_f^3 over the re-entrained fragments, per impact", ColumnRole::output, reentrained_moment(3)},
-      {"monomer_mass_fraction", "1", "mass fraction re-entrained as single primaries", ColumnRole::output, monomer_mass_fraction},
+      {"reentrained_m0", "1", "re-entrained fragments per impact, sum of N_f^0 (determined results)",
+       ColumnRole::output, reentrained_moment(0)},
+      {"reentrained_m1", "1", "re-entrained primaries per impact, sum of N_f", ColumnRole::output,
+       reentrained_moment(1)},
+      {"reentrained_m2", "1", "sum of N_f^2 over the re-entrained fragments, per impact", ColumnRole::output,
+       reentrained_moment(2)},
+      {"reentrained_m3", "1", "sum of N_f^3 over the re-entrained fragments, per impact", ColumnRole::output,
+       reentrained_moment(3)},
+      {"monomer_mass_fraction", "1", "mass fraction re-entrained as single primaries", ColumnRole::output,
+       monomer_mass_fraction},
       {"fractured_on_wall", "1", "share of results whose deposit is in pieces", ColumnRole::output,
        [](const GridRow& r) { return share_of_results(r, &GridPointOutcomes::fractured_on_wall); }},
-      {"small_strain_exceeded", "1", "share of results flagged outside the contact laws' small-strain range", ColumnRole::output,
+      {"small_strain_exceeded", "1", "share of results flagged outside the contact laws' small-strain range",
+       ColumnRole::output,
        [](const GridRow& r) { return share_of_results(r, &GridPointOutcomes::small_strain_exceeded); }},
   };
 }
@@ -170,7 +182,8 @@ LookupTable grid_table(const StudyExportData& data) {
   // An input that no grid point has (e.g. the target fractal dimension of a ballistic generator)
   // does not apply: no column.
   std::erase_if(table.columns, [](const TableColumn& column) {
-    return column.role == ColumnRole::input && std::all_of(column.values.begin(), column.values.end(), [](double v) { return std::isnan(v); });
+    return column.role == ColumnRole::input &&
+           std::all_of(column.values.begin(), column.values.end(), [](double v) { return std::isnan(v); });
   });
   return table;
 }

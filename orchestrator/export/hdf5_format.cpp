@@ -15,7 +15,10 @@ namespace {
 std::mutex hdf5_mutex;
 
 const char* role_text(ColumnRole role) {
-  return role == ColumnRole::speed ? "speed" : role == ColumnRole::input ? "input" : role == ColumnRole::derived ? "derived" : "output";
+  return role == ColumnRole::speed     ? "speed"
+         : role == ColumnRole::input   ? "input"
+         : role == ColumnRole::derived ? "derived"
+                                       : "output";
 }
 
 void write_columns(hid_t file, const LookupTable& table) {
@@ -37,7 +40,8 @@ std::string hdf5_image(const LookupTable& table) {
   const std::string name = "lookup.h5";
   auto access = checked_handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list", name);
   check_status(H5Pset_fapl_core(access.get(), 1 << 16, 0), "core driver", name);
-  auto file = checked_handle(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose, "create", name);
+  auto file =
+      checked_handle(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose, "create", name);
   for (const auto& [key, value] : metadata_lines(table.metadata)) write_string_attribute(file.get(), key, value);
   write_columns(file.get(), table);
   check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flush", name);

@@ -21,16 +21,16 @@ inline constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 enum class ColumnRole { speed, input, derived, output };
 
 struct TableColumn {
-  std::string name;         // [a-z0-9_], the same in every format
-  std::string unit;         // "1" for a dimensionless number, "d/tau", "d", "m/s", "m", ...
+  std::string name;  // [a-z0-9_], the same in every format
+  std::string unit;  // "1" for a dimensionless number, "d/tau", "d", "m/s", "m", ...
   std::string description;
   ColumnRole role = ColumnRole::output;
   std::vector<double> values;
 };
 
 struct LookupTable {
-  std::string kind;                   // grid | sections | fit
-  nlohmann::ordered_json metadata;    // provenance, units, validity, ... (header block, attributes)
+  std::string kind;                 // grid | sections | fit
+  nlohmann::ordered_json metadata;  // provenance, units, validity, ... (header block, attributes)
   std::vector<TableColumn> columns;
 
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().values.size(); }

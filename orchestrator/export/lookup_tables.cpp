@@ -57,14 +57,15 @@ nlohmann::ordered_json validity(const LookupTable& table, const StudyExportData&
   const auto range = [&](const char* column, double GridRowInputs::*input) {
     return fit ? results_range(data, input) : column_range(table, column);
   };
-  nlohmann::ordered_json json{{"impact_speed", range("impact_speed", &GridRowInputs::speed)},
-                              {"gamma_over_kn", range("gamma_over_kn", &GridRowInputs::gamma_over_kn)},
-                              {"primaries", range("primaries", &GridRowInputs::primaries)},
-                              {"results", results},
-                              {"results_outside_small_strain", flagged},
-                              {"note", fit ? "the ranges the study's results cover; rows outside them are extrapolated "
-                                             "(inside_validity = 0)"
-                                           : "tabulated values hold inside these ranges only; nothing is extrapolated"}};
+  nlohmann::ordered_json json{
+      {"impact_speed", range("impact_speed", &GridRowInputs::speed)},
+      {"gamma_over_kn", range("gamma_over_kn", &GridRowInputs::gamma_over_kn)},
+      {"primaries", range("primaries", &GridRowInputs::primaries)},
+      {"results", results},
+      {"results_outside_small_strain", flagged},
+      {"note", fit ? "the ranges the study's results cover; rows outside them are extrapolated "
+                     "(inside_validity = 0)"
+                   : "tabulated values hold inside these ranges only; nothing is extrapolated"}};
   if (!json["primaries"].is_array()) json.erase("primaries");
   return json;
 }
@@ -76,7 +77,8 @@ nlohmann::ordered_json with_si_speed(const nlohmann::ordered_json& validity, con
   for (const auto& [key, value] : validity.items()) {
     out[key] = value;
     if (key == "impact_speed" && value.is_array())
-      out["impact_speed_m_s"] = {value[0].get<double>() * scaling.speed_unit(), value[1].get<double>() * scaling.speed_unit()};
+      out["impact_speed_m_s"] = {value[0].get<double>() * scaling.speed_unit(),
+                                 value[1].get<double>() * scaling.speed_unit()};
   }
   return out;
 }
@@ -86,9 +88,12 @@ double material_gamma_over_kn(const ExportMaterial& material) {
 }
 
 nlohmann::ordered_json material_json(const ExportMaterial& material) {
-  return {{"youngs_modulus_pa", material.material.youngs_modulus}, {"poisson_ratio", material.material.poisson_ratio},
-          {"density_kg_m3", material.material.density},            {"surface_energy_j_m2", material.material.surface_energy},
-          {"diameter_m", material.diameter},                       {"gamma_over_kn", material_gamma_over_kn(material)}};
+  return {{"youngs_modulus_pa", material.material.youngs_modulus},
+          {"poisson_ratio", material.material.poisson_ratio},
+          {"density_kg_m3", material.material.density},
+          {"surface_energy_j_m2", material.material.surface_energy},
+          {"diameter_m", material.diameter},
+          {"gamma_over_kn", material_gamma_over_kn(material)}};
 }
 
 // The SI of the tables: the export's material, or the study's own (physical study) when every grid
@@ -118,12 +123,14 @@ ExportRequest with_sizes_of_diameters(const ExportRequest& request, const std::o
   ExportRequest asked = request;
   if (request.diameters.empty()) return asked;
   if (request.diameter_type == DiameterType::aerodynamic && !scaling)
-    throw ExportError(422, "diameter_type", "an aerodynamic diameter needs the primaries' diameter and density: a physical "
-                                            "study or a material given at export");
+    throw ExportError(422, "diameter_type",
+                      "an aerodynamic diameter needs the primaries' diameter and density: a physical "
+                      "study or a material given at export");
   for (const double diameter : request.diameters)
-    asked.sizes.push_back(request.diameter_type == DiameterType::aerodynamic
-                              ? primaries_of_diameter(DiameterType::aerodynamic, diameter, scaling->diameter, scaling->material.density)
-                              : primaries_of_diameter(request.diameter_type, scaling ? diameter / scaling->diameter : diameter));
+    asked.sizes.push_back(
+        request.diameter_type == DiameterType::aerodynamic
+            ? primaries_of_diameter(DiameterType::aerodynamic, diameter, scaling->diameter, scaling->material.density)
+            : primaries_of_diameter(request.diameter_type, scaling ? diameter / scaling->diameter : diameter));
   return asked;
 }
 
@@ -161,11 +168,13 @@ nlohmann::ordered_json diameter_metadata(const std::optional<std::vector<Physica
                        "mobility diameter for primaries smaller than the gas mean free path (Rogak et al., Aerosol "
                        "Sci. Technol. 18 (1993) 25)"}};
   if (!scalings) return diameters;
-  diameters["aerodynamic"] = "rho_0 d_ae^2 Cc(d_ae) = rho_p d_ve^3 Cc(d_mob) / d_mob, rho_0 = " +
-                             plain_number(kUnitDensity) + " kg/m^3, Cc the slip correction in air at 296.15 K and "
-                             "101.3 kPa, mean free path " + plain_number(kAirMeanFreePath) +
-                             " m (Kim et al., J. Res. NIST 110 (2005) 31; DeCarlo et al., Aerosol Sci. Technol. 38 "
-                             "(2004) 1185)";
+  diameters["aerodynamic"] =
+      "rho_0 d_ae^2 Cc(d_ae) = rho_p d_ve^3 Cc(d_mob) / d_mob, rho_0 = " + plain_number(kUnitDensity) +
+      " kg/m^3, Cc the slip correction in air at 296.15 K and "
+      "101.3 kPa, mean free path " +
+      plain_number(kAirMeanFreePath) +
+      " m (Kim et al., J. Res. NIST 110 (2005) 31; DeCarlo et al., Aerosol Sci. Technol. 38 "
+      "(2004) 1185)";
   diameters["primary_diameter_m"] = scalings->front().diameter;
   diameters["primary_density_kg_m3"] = scalings->front().material.density;
   return diameters;
@@ -173,39 +182,49 @@ nlohmann::ordered_json diameter_metadata(const std::optional<std::vector<Physica
 
 }  // namespace
 
-LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet* fits) {
+LookupTable study_lookup_table(Store& store, std::int64_t study_id, const ExportRequest& request,
+                               const CorrelationSet* fits) {
   if (request.kind == TableKind::fit && !fits) throw ExportError(500, "kind", "kind=fit without the study's fits");
   const auto data = read_study_export_data(store, study_id);
-  LookupTable table = request.kind == TableKind::grid       ? grid_table(data)
-                      : request.kind == TableKind::sections ? sections_table(data, request.section_ratio)
-                                                            : fit_table(*fits, with_sizes_of_diameters(request, export_scaling(data, request)),
-                                                                        study_speed_unit(data));
+  LookupTable table =
+      request.kind == TableKind::grid ? grid_table(data)
+      : request.kind == TableKind::sections
+          ? sections_table(data, request.section_ratio)
+          : fit_table(*fits, with_sizes_of_diameters(request, export_scaling(data, request)), study_speed_unit(data));
   add_constant_gamma(table, data);
   if (!request.select.empty()) table = selected_rows(table, request.select);
   if (request.material)
-    table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material), request.interpolate_gamma);
+    table = rows_for_gamma(table, request.material->material, material_gamma_over_kn(*request.material),
+                           request.interpolate_gamma);
   else if (request.gamma_over_kn)
     table = rows_for_gamma(table, reduced_material(*request.gamma_over_kn, data.inputs.front().poisson_ratio),
                            *request.gamma_over_kn, request.interpolate_gamma);
   const auto scalings = row_scalings(table, data, request);
   if (scalings) add_si_columns(table, *scalings);
-  const auto own_metadata = table.metadata.is_object() ? table.metadata : nlohmann::ordered_json::object();  // sections, fit_models
+  const auto own_metadata =
+      table.metadata.is_object() ? table.metadata : nlohmann::ordered_json::object();  // sections, fit_models
   table.metadata = {{"table", table.kind},
                     {"provenance", provenance(data)},
                     {"units", scalings ? "reduced and SI" : "reduced"},
                     {"reduced_units", "d = primary diameter, m = primary mass, tau = sqrt(m/k_n) (docs/MODEL.md 1.1)"}};
-  if (request.material) table.metadata["material"] = material_json(*request.material);
-  else if (scalings) table.metadata["material"] = "the study's own (physical units)";
-  if (scalings) table.metadata["si_units"] = {{"d_m", scalings->front().diameter}, {"d_per_tau_m_s", scalings->front().speed_unit()}};
-  table.metadata["validity"] = scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
+  if (request.material)
+    table.metadata["material"] = material_json(*request.material);
+  else if (scalings)
+    table.metadata["material"] = "the study's own (physical units)";
+  if (scalings)
+    table.metadata["si_units"] = {{"d_m", scalings->front().diameter},
+                                  {"d_per_tau_m_s", scalings->front().speed_unit()}};
+  table.metadata["validity"] =
+      scalings ? with_si_speed(validity(table, data), scalings->front()) : validity(table, data);
   table.metadata["diameters"] = diameter_metadata(scalings);
   for (const auto& [key, value] : own_metadata.items()) table.metadata[key] = value;
   if (!request.diameters.empty())
     table.metadata["sizes_from"] = std::string(request.diameter_type == DiameterType::mobility ? "mobility"
                                                : request.diameter_type == DiameterType::volume ? "volume-equivalent"
-                                                                                                : "aerodynamic") +
+                                                                                               : "aerodynamic") +
                                    " diameters (docs/EXPORT.md section 2), in " + (scalings ? "m" : "d");
-  table.metadata["missing_value"] = "NaN in HDF5, an empty field in CSV, null in JSON, -1.0e+30 in .dat; left out of MELCOR and OpenFOAM";
+  table.metadata["missing_value"] =
+      "NaN in HDF5, an empty field in CSV, null in JSON, -1.0e+30 in .dat; left out of MELCOR and OpenFOAM";
   return table;
 }
 

@@ -52,6 +52,7 @@ LookupTable study_lookup_table(Store& store, std::int64_t study_id, const Export
 
 // kind=correlations: the study's fits as code (format fortran or c) or its JSON description
 // (correlation_code.hpp), headed by the study's provenance and units.
-RenderedTable correlation_code_file(Store& store, std::int64_t study_id, const ExportRequest& request, const CorrelationSet& fits);
+RenderedTable correlation_code_file(Store& store, std::int64_t study_id, const ExportRequest& request,
+                                    const CorrelationSet& fits);
 
 }  // namespace aerobreak

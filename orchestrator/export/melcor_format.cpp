@@ -43,7 +43,10 @@ char kind_letter(const LookupTable& table) {
   if (table.kind == "sections") return 'S';
   if (table.kind != "fit") return 'G';
   const std::string from = table.metadata.value("sizes_from", std::string());
-  return from.starts_with("mobility") ? 'M' : from.starts_with("volume") ? 'V' : from.starts_with("aerodynamic") ? 'A' : 'F';
+  return from.starts_with("mobility")      ? 'M'
+         : from.starts_with("volume")      ? 'V'
+         : from.starts_with("aerodynamic") ? 'A'
+                                           : 'F';
 }
 
 // S<study><kind><tag><bound><condition>: unique across studies, table kinds, quantities, interval
@@ -51,10 +54,12 @@ char kind_letter(const LookupTable& table) {
 std::string function_name(const LookupTable& table, const std::string& tag, std::size_t condition) {
   const auto study = table.metadata.at("provenance").at("study_id").get<std::int64_t>();
   char name[48];
-  std::snprintf(name, sizeof name, "S%lld%c%s%03zu", static_cast<long long>(study), kind_letter(table), tag.c_str(), condition);
+  std::snprintf(name, sizeof name, "S%lld%c%s%03zu", static_cast<long long>(study), kind_letter(table), tag.c_str(),
+                condition);
   if (std::string(name).size() > kMelcorNameLength)
-    throw ExportError(422, "format", std::string("MELCOR function name ") + name + " is longer than " +
-                                         std::to_string(kMelcorNameLength) + " characters (study id or conditions too many)");
+    throw ExportError(422, "format",
+                      std::string("MELCOR function name ") + name + " is longer than " +
+                          std::to_string(kMelcorNameLength) + " characters (study id or conditions too many)");
   return name;
 }
 
@@ -62,7 +67,8 @@ std::string function_name(const LookupTable& table, const std::string& tag, std:
 // diameters; not lambda, which changes with the speed).
 std::string condition_text(const LookupTable& table, const ConditionRows& condition) {
   std::string text;
-  for (const auto& [name, value] : condition.key) text += (text.empty() ? "" : ", ") + name + " = " + number_text(value);
+  for (const auto& [name, value] : condition.key)
+    text += (text.empty() ? "" : ", ") + name + " = " + number_text(value);
   for (const auto& column : table.columns) {
     if (column.role != ColumnRole::derived) continue;
     const double first = column.values[condition.rows.front()];
@@ -77,20 +83,24 @@ std::string tabular_function(const LookupTable& table, const TableColumn& quanti
                              const ConditionRows& condition, const std::vector<std::size_t>& rows) {
   const auto& speed = adapter_speed(table);
   std::string text = "!\n! " + name + ": " + quantity.name + " [" + quantity.unit + "] (" + quantity.description +
-                     ") against impact speed [" + speed.unit + "] from " + number_text(speed.values[rows.front()]) + " to " +
-                     number_text(speed.values[rows.back()]) + "\n! at " + condition_text(table, condition) + "\nTF_ID '" + name +
-                     "' 1.0\nTF_TAB " + std::to_string(rows.size()) + " ! n x y\n";
+                     ") against impact speed [" + speed.unit + "] from " + number_text(speed.values[rows.front()]) +
+                     " to " + number_text(speed.values[rows.back()]) + "\n! at " + condition_text(table, condition) +
+                     "\nTF_ID '" + name + "' 1.0\nTF_TAB " + std::to_string(rows.size()) + " ! n x y\n";
   std::size_t i = 0;
   for (const std::size_t row : rows)
-    text += "  " + std::to_string(++i) + "  " + number_text(speed.values[row]) + "  " + number_text(quantity.values[row]) + "\n";
+    text += "  " + std::to_string(++i) + "  " + number_text(speed.values[row]) + "  " +
+            number_text(quantity.values[row]) + "\n";
   return text;
 }
 
 std::string legend(const LookupTable& table, const std::vector<ConditionRows>& conditions) {
-  std::string text = "! names S<study id><table: G grid, F fit at sizes, M/V/A fit at mobility/volume/aerodynamic diameters, "
-                     "S sections>\n!   <quantity: PSTK P(stick), PBNC P(bounce), PBRK P(break-up),\n!   REST restitution of the bounces, RETN retained mass fraction, WALL mass to the wall, TSkk "
-                     "mass to section kk>\n!   <_ value, L 95 % lower end, U 95 % upper end><condition number, below>\n";
-  text += "! x: impact speed [" + adapter_speed(table).unit + "]; a function is left out where its quantity has no value\n";
+  std::string text =
+      "! names S<study id><table: G grid, F fit at sizes, M/V/A fit at mobility/volume/aerodynamic diameters, "
+      "S sections>\n!   <quantity: PSTK P(stick), PBNC P(bounce), PBRK P(break-up),\n!   REST restitution of the "
+      "bounces, RETN retained mass fraction, WALL mass to the wall, TSkk "
+      "mass to section kk>\n!   <_ value, L 95 % lower end, U 95 % upper end><condition number, below>\n";
+  text +=
+      "! x: impact speed [" + adapter_speed(table).unit + "]; a function is left out where its quantity has no value\n";
   for (std::size_t c = 0; c < conditions.size(); ++c) {
     char number[24];
     std::snprintf(number, sizeof number, "%03zu", c + 1);

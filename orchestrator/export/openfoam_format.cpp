@@ -33,7 +33,8 @@ std::vector<std::string> differing_inputs(const std::vector<ConditionRows>& cond
   std::vector<std::string> names;
   for (const auto& [name, value] : conditions.front().key)
     for (const auto& condition : conditions) {
-      const auto same = std::find_if(condition.key.begin(), condition.key.end(), [&](const auto& entry) { return entry.first == name; });
+      const auto same = std::find_if(condition.key.begin(), condition.key.end(),
+                                     [&](const auto& entry) { return entry.first == name; });
       if (same == condition.key.end() || same->second != value) {
         names.push_back(name);
         break;
@@ -49,7 +50,8 @@ std::vector<std::string> differing_inputs(const std::vector<ConditionRows>& cond
   for (const auto& [name, value] : conditions[1].key) example += " " + name + "=" + number_text(value);
   throw ExportError(422, "format",
                     "an OpenFOAM table holds one impact condition besides speed and size, and this table has " +
-                        std::to_string(conditions.size()) + " conditions differing in " + differing + " (e.g." + example +
+                        std::to_string(conditions.size()) + " conditions differing in " + differing + " (e.g." +
+                        example +
                         "): choose gamma/k_n with a material or gamma_over_kn, any other input with select=NAME:VALUE "
                         "(e.g. select=wall_adhesive:1), or use format=melcor (one tabular function per condition)");
 }
@@ -63,7 +65,8 @@ std::map<double, std::map<double, double>> speed_size_values(const LookupTable& 
   if (!size) throw ExportError(422, "format", "this table has no size column");
   std::map<double, std::map<double, double>> values;
   if (!conditions.empty())
-    for (const std::size_t row : conditions.front().rows) values[speed.values[row]][size->values[row]] = quantity.values[row];
+    for (const std::size_t row : conditions.front().rows)
+      values[speed.values[row]][size->values[row]] = quantity.values[row];
   return values;
 }
 
@@ -92,9 +95,9 @@ std::vector<double> common_sizes(const std::map<double, std::map<double, double>
 std::string openfoam_table2d(const LookupTable& table, const std::string& quantity) {
   const auto& column = quantity_column(table, quantity);
   const auto values = speed_size_values(table, column);
-  std::string text = header(table, column.name + " [" + column.unit + "] over (x = impact speed [" + adapter_speed(table).unit +
-                                       "], y = " + adapter_size(table)->name + " [" + adapter_size(table)->unit +
-                                       "]) as an OpenFOAM interpolation2DTable");
+  std::string text = header(table, column.name + " [" + column.unit + "] over (x = impact speed [" +
+                                       adapter_speed(table).unit + "], y = " + adapter_size(table)->name + " [" +
+                                       adapter_size(table)->unit + "]) as an OpenFOAM interpolation2DTable");
   text += "(\n";
   for (const auto& [speed, by_size] : values) {
     text += "    (" + number_text(speed) + " (";
@@ -132,9 +135,10 @@ std::string openfoam_dictionary(const LookupTable& table, const std::string& qua
                                        adapter_speed(table).unit + "], one per size");
   for (std::size_t i = 0; i < sizes.size(); ++i) {
     const std::string entry = column.name + "_" + std::to_string(i + 1);
-    text += "\n// " + adapter_size(table)->name + " = " + number_text(sizes[i]) + " " + adapter_size(table)->unit + "\n" + entry +
-            " csvFile;\n" + entry + "Coeffs\n{\n    nHeaderLine         1;\n    refColumn           0;\n" +
-            "    componentColumns    (" + std::to_string(i + 1) + ");\n    separator           \",\";\n" +
+    text += "\n// " + adapter_size(table)->name + " = " + number_text(sizes[i]) + " " + adapter_size(table)->unit +
+            "\n" + entry + " csvFile;\n" + entry +
+            "Coeffs\n{\n    nHeaderLine         1;\n    refColumn           0;\n" + "    componentColumns    (" +
+            std::to_string(i + 1) + ");\n    separator           \",\";\n" +
             "    mergeSeparators     no;\n    file                \"" + csv_file + "\";\n" +
             "    outOfBounds         error;\n    interpolationScheme linear;\n}\n";
   }

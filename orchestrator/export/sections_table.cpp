@@ -24,13 +24,13 @@ int section_of(double primaries, double ratio) {
 struct SourceCell {
   const GridRowInputs* inputs = nullptr;  // the first grid point of the cell
   int section = 0;
-  double source_mass = 0.0;               // mass-weighted mean source size: sum N M / sum M
+  double source_mass = 0.0;  // mass-weighted mean source size: sum N M / sum M
   double source_primaries_mass = 0.0;
   std::size_t results = 0;
   std::size_t break_ups = 0;
   double total_mass = 0.0;
   double wall_mass = 0.0;
-  std::map<int, double> section_mass;     // re-entrained mass by section
+  std::map<int, double> section_mass;  // re-entrained mass by section
 };
 
 // The full impact condition of a grid point: every axis but the source size (boolean and label
@@ -60,8 +60,10 @@ std::vector<SourceCell> pooled_cells(const StudyExportData& data, double ratio) 
     for (const auto& fragment_class : found->second.classes) {
       cell.total_mass += fragment_class.mass;
       cell.source_primaries_mass += inputs.primaries * fragment_class.mass;
-      if (fragment_class.on_wall) cell.wall_mass += fragment_class.mass;
-      else cell.section_mass[section_of(static_cast<double>(fragment_class.primaries), ratio)] += fragment_class.mass;
+      if (fragment_class.on_wall)
+        cell.wall_mass += fragment_class.mass;
+      else
+        cell.section_mass[section_of(static_cast<double>(fragment_class.primaries), ratio)] += fragment_class.mass;
     }
   }
   return cells;
@@ -73,15 +75,18 @@ int section_count(const StudyExportData& data, double ratio) {
   return section_of(largest, ratio);
 }
 
-void add_condition_columns(LookupTable& table, const std::vector<SourceCell>& cells, const StudyExportData& data, double ratio) {
+void add_condition_columns(LookupTable& table, const std::vector<SourceCell>& cells, const StudyExportData& data,
+                           double ratio) {
   auto add = [&](const char* name, const char* unit, const char* description, ColumnRole role, auto value) {
     auto& column = table.add(name, unit, description, role);
     for (const auto& cell : cells) column.values.push_back(value(cell));
   };
-  add("impact_speed", "d/tau", "normal impact speed v0", ColumnRole::speed, [](const SourceCell& c) { return c.inputs->speed; });
+  add("impact_speed", "d/tau", "normal impact speed v0", ColumnRole::speed,
+      [](const SourceCell& c) { return c.inputs->speed; });
   add("gamma_over_kn", "1", "adhesion-to-stiffness ratio gamma/k_n", ColumnRole::input,
       [](const SourceCell& c) { return c.inputs->gamma_over_kn; });
-  add("impact_angle", "deg", "impact angle from head-on", ColumnRole::input, [](const SourceCell& c) { return c.inputs->angle; });
+  add("impact_angle", "deg", "impact angle from head-on", ColumnRole::input,
+      [](const SourceCell& c) { return c.inputs->angle; });
   for (const auto& axis : data.extra_axes) {
     auto& column = table.add(axis.name, axis.unit(), axis.description(), ColumnRole::input);
     for (const auto& cell : cells) column.values.push_back(axis.value(cell.inputs->grid_point));
@@ -102,10 +107,14 @@ void add_matrix_columns(LookupTable& table, const std::vector<SourceCell>& cells
     auto& column = table.add(std::move(name), "1", std::move(description), ColumnRole::output);
     for (const auto& cell : cells) column.values.push_back(value(cell));
   };
-  add("results", "determined results pooled in the row", [](const SourceCell& c) { return static_cast<double>(c.results); });
+  add("results", "determined results pooled in the row",
+      [](const SourceCell& c) { return static_cast<double>(c.results); });
   for (const int bound : {0, -1, 1})
-    add(bound == 0 ? "p_break_up" : bound < 0 ? "p_break_up_lo" : "p_break_up_hi",
-        bound == 0 ? "P(break-up) over the determined results" : "P(break-up), Wilson 95 % bound", [bound](const SourceCell& c) {
+    add(bound == 0  ? "p_break_up"
+        : bound < 0 ? "p_break_up_lo"
+                    : "p_break_up_hi",
+        bound == 0 ? "P(break-up) over the determined results" : "P(break-up), Wilson 95 % bound",
+        [bound](const SourceCell& c) {
           const auto estimate = *wilson_interval(c.break_ups, c.results);
           return bound == 0 ? estimate.probability : bound < 0 ? estimate.lower : estimate.upper;
         });
@@ -122,13 +131,18 @@ void add_matrix_columns(LookupTable& table, const std::vector<SourceCell>& cells
 
 // Each section's bounds: [primaries from, below, d_ve from, below, d_mob from, below] (in d).
 nlohmann::ordered_json section_bounds(int sections, double ratio) {
-  nlohmann::ordered_json bounds{{"fields", "primaries_from primaries_below d_ve_from d_ve_below d_mob_from d_mob_below"}};
+  nlohmann::ordered_json bounds{
+      {"fields", "primaries_from primaries_below d_ve_from d_ve_below d_mob_from d_mob_below"}};
   for (int k = 1; k <= sections; ++k) {
     const double lower = std::pow(ratio, k - 1), upper = std::pow(ratio, k);
     char name[32];
     std::snprintf(name, sizeof name, "section_%02d", k);
-    bounds[name] = {lower, upper, volume_equivalent_diameter(lower), volume_equivalent_diameter(upper),
-                    mobility_equivalent_diameter(lower), mobility_equivalent_diameter(upper)};
+    bounds[name] = {lower,
+                    upper,
+                    volume_equivalent_diameter(lower),
+                    volume_equivalent_diameter(upper),
+                    mobility_equivalent_diameter(lower),
+                    mobility_equivalent_diameter(upper)};
   }
   return bounds;
 }
@@ -142,7 +156,8 @@ LookupTable sections_table(const StudyExportData& data, double section_ratio) {
   const int sections = section_count(data, section_ratio);
   add_condition_columns(table, cells, data, section_ratio);
   add_matrix_columns(table, cells, sections);
-  table.metadata["sections"] = {{"ratio", section_ratio}, {"count", sections}, {"bounds", section_bounds(sections, section_ratio)}};
+  table.metadata["sections"] = {
+      {"ratio", section_ratio}, {"count", sections}, {"bounds", section_bounds(sections, section_ratio)}};
   return table;
 }
 

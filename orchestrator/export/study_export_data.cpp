@@ -63,7 +63,9 @@ constexpr AxisUnit kAxisUnits[] = {
 };
 
 // Label text of an axis value: a string as it is, anything else as JSON.
-std::string label_of(const nlohmann::ordered_json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+std::string label_of(const nlohmann::ordered_json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
 
 AxisColumn axis_column(const std::string& axis, const std::vector<const nlohmann::ordered_json*>& points) {
   AxisColumn column;
@@ -76,9 +78,12 @@ AxisColumn axis_column(const std::string& axis, const std::vector<const nlohmann
     numbers = numbers && found->is_number();
     booleans = booleans && found->is_boolean();
     const std::string label = label_of(*found);
-    if (std::find(column.labels.begin(), column.labels.end(), label) == column.labels.end()) column.labels.push_back(label);
+    if (std::find(column.labels.begin(), column.labels.end(), label) == column.labels.end())
+      column.labels.push_back(label);
   }
-  column.encoding = numbers ? AxisColumn::Encoding::number : booleans ? AxisColumn::Encoding::boolean : AxisColumn::Encoding::label;
+  column.encoding = numbers    ? AxisColumn::Encoding::number
+                    : booleans ? AxisColumn::Encoding::boolean
+                               : AxisColumn::Encoding::label;
   if (column.encoding != AxisColumn::Encoding::label) column.labels.clear();
   return column;
 }
@@ -89,9 +94,12 @@ double AxisColumn::value(const nlohmann::ordered_json& point) const {
   const auto found = point.find(axis);
   if (found == point.end()) return kMissing;
   switch (encoding) {
-    case Encoding::number: return found->is_number() ? found->get<double>() : kMissing;
-    case Encoding::boolean: return found->get<bool>() ? 1.0 : 0.0;
-    case Encoding::label: break;
+    case Encoding::number:
+      return found->is_number() ? found->get<double>() : kMissing;
+    case Encoding::boolean:
+      return found->get<bool>() ? 1.0 : 0.0;
+    case Encoding::label:
+      break;
   }
   const auto label = std::find(labels.begin(), labels.end(), label_of(*found));
   return label == labels.end() ? kMissing : static_cast<double>(label - labels.begin());
@@ -111,7 +119,8 @@ std::string axis_unit(const std::string& axis, bool physical) {
 
 std::string AxisColumn::description() const {
   if (encoding == Encoding::boolean) return "study axis " + axis + " (1 = true, 0 = false)";
-  if (encoding == Encoding::label) return "study axis " + axis + " as the index of its value in metadata axis_labels." + name;
+  if (encoding == Encoding::label)
+    return "study axis " + axis + " as the index of its value in metadata axis_labels." + name;
   return "study axis " + axis;
 }
 
@@ -121,7 +130,8 @@ std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_j
   for (const auto* point : points)
     for (const auto& [axis, value] : point->items()) {
       const std::string name = axis_column_name(axis);
-      const bool known = std::any_of(columns.begin(), columns.end(), [&](const AxisColumn& c) { return c.axis == axis; });
+      const bool known =
+          std::any_of(columns.begin(), columns.end(), [&](const AxisColumn& c) { return c.axis == axis; });
       if (known || std::find(left_out.begin(), left_out.end(), name) != left_out.end()) continue;
       columns.push_back(axis_column(axis, points));
       columns.back().physical = physical;
@@ -137,8 +147,10 @@ void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisCol
 std::string axis_column_name(const std::string& axis) {
   std::string name;
   for (const char c : axis) {
-    if (std::isalnum(static_cast<unsigned char>(c))) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    else if (!name.empty() && name.back() != '_') name += '_';
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    else if (!name.empty() && name.back() != '_')
+      name += '_';
   }
   while (!name.empty() && name.back() == '_') name.pop_back();
   return name.empty() ? "axis" : name;

@@ -15,12 +15,12 @@ namespace aerobreak {
 struct GridRowInputs {
   std::string grid_key;
   nlohmann::ordered_json grid_point;
-  double speed = 0.0;              // d/tau
+  double speed = 0.0;  // d/tau
   double primaries = 0.0;
   double gamma_over_kn = 0.0;
   double poisson_ratio = 0.3;
-  double angle = 0.0;              // degrees from head-on
-  double fractal_dimension = 0.0;  // the generator's target; NaN when it has none (ballistic)
+  double angle = 0.0;                      // degrees from head-on
+  double fractal_dimension = 0.0;          // the generator's target; NaN when it has none (ballistic)
   std::optional<PhysicalScaling> scaling;  // the case's own material, for a physical study
 };
 
@@ -30,8 +30,8 @@ struct GridRowInputs {
 // value in `labels`, the legend written to the metadata (add_axis_labels).
 struct AxisColumn {
   enum class Encoding { number, boolean, label };
-  std::string axis;                 // as the study names it: "/wall/adhesive", "generator"
-  std::string name;                 // the column: axis_column_name(axis)
+  std::string axis;  // as the study names it: "/wall/adhesive", "generator"
+  std::string name;  // the column: axis_column_name(axis)
   Encoding encoding = Encoding::number;
   std::vector<std::string> labels;  // Encoding::label: the values in the order the grid first uses them
   bool physical = false;            // a physical study: its material's values are SI
@@ -59,10 +59,11 @@ void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisCol
 struct StudyExportData {
   StudyRecord study;
   StudyVersions versions;
-  std::vector<GridRowInputs> inputs;                          // per grid point, submission order
-  std::map<std::string, GridPointStatistics> statistics;      // by grid key
-  std::map<std::string, GridPointFragmentMasses> fragments;   // by grid key (grid points with a determined result)
-  std::vector<AxisColumn> extra_axes;  // the study's axes without a column of their own (not speed, N, gamma/k_n, angle)
+  std::vector<GridRowInputs> inputs;                         // per grid point, submission order
+  std::map<std::string, GridPointStatistics> statistics;     // by grid key
+  std::map<std::string, GridPointFragmentMasses> fragments;  // by grid key (grid points with a determined result)
+  std::vector<AxisColumn>
+      extra_axes;  // the study's axes without a column of their own (not speed, N, gamma/k_n, angle)
 };
 
 GridRowInputs grid_row_inputs(const GridPointCase& point);

@@ -26,10 +26,14 @@ std::string csv_record(const std::vector<std::string>& fields, std::size_t width
 
 std::string role_name(ColumnRole role) {
   switch (role) {
-    case ColumnRole::speed: return "speed";
-    case ColumnRole::input: return "input";
-    case ColumnRole::derived: return "derived";
-    case ColumnRole::output: return "output";
+    case ColumnRole::speed:
+      return "speed";
+    case ColumnRole::input:
+      return "input";
+    case ColumnRole::derived:
+      return "derived";
+    case ColumnRole::output:
+      return "output";
   }
   return "output";
 }
@@ -81,9 +85,11 @@ std::string dat_number(double value) { return number_text(std::isnan(value) ? kD
 }  // namespace
 
 std::string dat_text(const LookupTable& table) {
-  std::string header = comment_lines("#", "aerobreak lookup table for Fortran list-directed input (docs/EXPORT.md): lines of "
-                                          "at most 80 characters; a row is one list-directed READ of `columns` values over "
-                                          "its lines; a missing value is the sentinel missing_value");
+  std::string header =
+      comment_lines("#",
+                    "aerobreak lookup table for Fortran list-directed input (docs/EXPORT.md): lines of "
+                    "at most 80 characters; a row is one list-directed READ of `columns` values over "
+                    "its lines; a missing value is the sentinel missing_value");
   for (const auto& [key, value] : metadata_lines(table.metadata))
     if (key != "missing_value") header += comment_lines("# " + key + ":", value);
   header += "# missing_value: " + dat_number(kMissing) + "\n";
@@ -106,12 +112,16 @@ nlohmann::ordered_json table_json(const LookupTable& table) {
   nlohmann::ordered_json columns = nlohmann::ordered_json::array();
   for (const auto& column : table.columns) {
     nlohmann::ordered_json values = nlohmann::ordered_json::array();
-    for (const double value : column.values) values.push_back(std::isnan(value) ? nlohmann::ordered_json() : nlohmann::ordered_json(value));
-    columns.push_back({{"name", column.name}, {"unit", column.unit}, {"description", column.description},
-                       {"role", role_name(column.role)}, {"values", values}});
+    for (const double value : column.values)
+      values.push_back(std::isnan(value) ? nlohmann::ordered_json() : nlohmann::ordered_json(value));
+    columns.push_back({{"name", column.name},
+                       {"unit", column.unit},
+                       {"description", column.description},
+                       {"role", role_name(column.role)},
+                       {"values", values}});
   }
-  return {{"format", "aerobreak-lookup-table"}, {"format_version", 1},       {"kind", table.kind},
-          {"metadata", table.metadata},          {"rows", table.rows()},      {"columns", columns}};
+  return {{"format", "aerobreak-lookup-table"}, {"format_version", 1},  {"kind", table.kind},
+          {"metadata", table.metadata},         {"rows", table.rows()}, {"columns", columns}};
 }
 
 }  // namespace aerobreak

@@ -43,8 +43,8 @@ void recompute_lambda(LookupTable& table, double poisson_ratio) {
   const auto* speed = table.find("impact_speed");
   if (!lambda || !speed) return;
   for (std::size_t row = 0; row < table.rows(); ++row)
-    lambda->values[row] = adhesion_energy_ratio(reduced_material(table.find("gamma_over_kn")->values[row], poisson_ratio), 1.0,
-                                                speed->values[row]);
+    lambda->values[row] = adhesion_energy_ratio(
+        reduced_material(table.find("gamma_over_kn")->values[row], poisson_ratio), 1.0, speed->values[row]);
 }
 
 LookupTable interpolated_rows(const LookupTable& table, double target, const std::vector<double>& gammas) {
@@ -64,7 +64,8 @@ LookupTable interpolated_rows(const LookupTable& table, double target, const std
   // The rows stand for the material's gamma/k_n itself, not for a linear mean of the two values.
   auto& gamma_out = out.find("gamma_over_kn")->values;
   std::fill(gamma_out.begin(), gamma_out.end(), target);
-  auto& interpolated = out.add("interpolated", "1", "1: interpolated in ln(gamma/k_n) between two study values", ColumnRole::output);
+  auto& interpolated =
+      out.add("interpolated", "1", "1: interpolated in ln(gamma/k_n) between two study values", ColumnRole::output);
   interpolated.values.assign(out.rows(), 1.0);
   return out;
 }
@@ -73,25 +74,31 @@ LookupTable interpolated_rows(const LookupTable& table, double target, const std
 
 LookupTable rows_for_gamma(const LookupTable& table, const Material& material, double target, bool interpolate) {
   const auto* gamma_column = table.find("gamma_over_kn");
-  if (!gamma_column) throw ExportError(422, "surface_energy", "this table has no gamma/k_n to check a material against");
+  if (!gamma_column)
+    throw ExportError(422, "surface_energy", "this table has no gamma/k_n to check a material against");
   std::set<double> distinct(gamma_column->values.begin(), gamma_column->values.end());
   const std::vector<double> gammas(distinct.begin(), distinct.end());
   char range[160];
-  std::snprintf(range, sizeof range, "the material's gamma/k_n = 3 gamma (1 - nu^2) / (E d) = %.4g; the study covers %.4g to %.4g",
-                target, gammas.front(), gammas.back());
+  std::snprintf(range, sizeof range,
+                "the material's gamma/k_n = 3 gamma (1 - nu^2) / (E d) = %.4g; the study covers %.4g to %.4g", target,
+                gammas.front(), gammas.back());
   if (target < gammas.front() * (1.0 - kGammaTolerance) || target > gammas.back() * (1.0 + kGammaTolerance))
-    throw ExportError(422, "surface_energy", std::string(range) + ": a material outside the study's range is refused, not extrapolated");
+    throw ExportError(422, "surface_energy",
+                      std::string(range) + ": a material outside the study's range is refused, not extrapolated");
   LookupTable selected = empty_like(table);
   for (std::size_t row = 0; row < table.rows(); ++row)
     if (same_gamma(gamma_column->values[row], target))
-      for (std::size_t c = 0; c < table.columns.size(); ++c) selected.columns[c].values.push_back(table.columns[c].values[row]);
+      for (std::size_t c = 0; c < table.columns.size(); ++c)
+        selected.columns[c].values.push_back(table.columns[c].values[row]);
   if (selected.rows() > 0) return selected;
   if (!interpolate)
-    throw ExportError(422, "surface_energy",
-                      std::string(range) + " but has no value within 0.1 % of it; add interpolate=gamma_over_kn to interpolate");
+    throw ExportError(
+        422, "surface_energy",
+        std::string(range) + " but has no value within 0.1 % of it; add interpolate=gamma_over_kn to interpolate");
   auto out = interpolated_rows(table, target, gammas);
   recompute_lambda(out, material.poisson_ratio);
-  if (out.rows() == 0) throw ExportError(422, "interpolate", std::string(range) + ": no condition has both bracketing values");
+  if (out.rows() == 0)
+    throw ExportError(422, "interpolate", std::string(range) + ": no condition has both bracketing values");
   return out;
 }
 
@@ -106,14 +113,16 @@ LookupTable selected_rows(const LookupTable& table, const std::vector<std::pair<
     std::string inputs;
     for (const auto& input : table.columns)
       if (input.role == ColumnRole::input) inputs += (inputs.empty() ? "" : ", ") + input.name;
-    throw ExportError(422, "select", "this table (kind " + table.kind + ") has no input column '" + name + "'; its inputs: " + inputs);
+    throw ExportError(422, "select",
+                      "this table (kind " + table.kind + ") has no input column '" + name + "'; its inputs: " + inputs);
   }
   LookupTable selected = empty_like(table);
   for (std::size_t row = 0; row < table.rows(); ++row) {
     bool keep = true;
     for (std::size_t i = 0; i < select.size(); ++i) keep = keep && columns[i]->values[row] == select[i].second;
     if (keep)
-      for (std::size_t c = 0; c < table.columns.size(); ++c) selected.columns[c].values.push_back(table.columns[c].values[row]);
+      for (std::size_t c = 0; c < table.columns.size(); ++c)
+        selected.columns[c].values.push_back(table.columns[c].values[row]);
   }
   if (selected.rows() == 0) throw ExportError(422, "select", "no row of this table has every value of select");
   return selected;
@@ -123,12 +132,17 @@ namespace {
 
 // d_ae_m beside d_mob_m: the aerodynamic diameter of the row's N (from its mobility diameter).
 TableColumn aerodynamic_column(const TableColumn& mobility, const std::vector<PhysicalScaling>& scalings) {
-  TableColumn column{"d_ae_m", "m", "aerodynamic diameter: the unit-density sphere settling as fast, in air at 296 K and "
-                                    "101.3 kPa (docs/EXPORT.md section 2)", ColumnRole::derived, {}};
+  TableColumn column{"d_ae_m",
+                     "m",
+                     "aerodynamic diameter: the unit-density sphere settling as fast, in air at 296 K and "
+                     "101.3 kPa (docs/EXPORT.md section 2)",
+                     ColumnRole::derived,
+                     {}};
   for (std::size_t row = 0; row < mobility.values.size(); ++row) {
     const double primaries = primaries_of_diameter(DiameterType::mobility, mobility.values[row]);
     column.values.push_back(std::isnan(primaries) ? kMissing
-                                                  : aerodynamic_diameter(primaries, scalings[row].diameter, scalings[row].material.density));
+                                                  : aerodynamic_diameter(primaries, scalings[row].diameter,
+                                                                         scalings[row].material.density));
   }
   return column;
 }
@@ -141,8 +155,11 @@ void add_si_columns(LookupTable& table, const std::vector<PhysicalScaling>& scal
     columns.push_back(column);
     const bool speed = column.unit == "d/tau", length = column.unit == "d";
     if (!speed && !length) continue;
-    TableColumn si{column.name + (speed ? "_m_s" : "_m"), speed ? "m/s" : "m", column.description + ", SI",
-                   column.role == ColumnRole::output ? ColumnRole::output : ColumnRole::derived, {}};
+    TableColumn si{column.name + (speed ? "_m_s" : "_m"),
+                   speed ? "m/s" : "m",
+                   column.description + ", SI",
+                   column.role == ColumnRole::output ? ColumnRole::output : ColumnRole::derived,
+                   {}};
     for (std::size_t row = 0; row < column.values.size(); ++row)
       si.values.push_back(column.values[row] * (speed ? scalings[row].speed_unit() : scalings[row].diameter));
     columns.push_back(std::move(si));

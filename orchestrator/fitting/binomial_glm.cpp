@@ -20,9 +20,9 @@ namespace {
 struct Evaluation {
   Eigen::VectorXd mu;
   Eigen::VectorXd residual;  // y - n mu, plus h (1/2 - mu) under the Firth penalty
-  Eigen::VectorXd weights;  // n mu (1 - mu)
+  Eigen::VectorXd weights;   // n mu (1 - mu)
   double objective = 0.0;
-  Eigen::VectorXd score;       // of delta
+  Eigen::VectorXd score;        // of delta
   Eigen::MatrixXd information;  // of delta
 };
 
@@ -111,8 +111,8 @@ double x_log_x_over(double x, double y) { return x > 0.0 ? x * std::log(x / y) :
 
 void finish(const Problem& problem, const GlmOptions& options, const Evaluation& at, GlmFit& fit) {
   const BinomialData& data = problem.data;
-  fit.coefficients = options.constraint ? Eigen::VectorXd(options.constraint->map * fit.free + options.constraint->shift)
-                                        : fit.free;
+  fit.coefficients =
+      options.constraint ? Eigen::VectorXd(options.constraint->map * fit.free + options.constraint->shift) : fit.free;
   fit.objective = at.objective;
   fit.full_score = data.design.transpose() * at.residual;
   if (!options.statistics) return;

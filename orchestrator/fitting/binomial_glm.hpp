@@ -47,7 +47,7 @@ struct GlmOptions {
   const Eigen::VectorXd* start = nullptr;  // delta to start from (warm start); zeros otherwise
   int max_iterations = 30;
   double tolerance = 1e-10;  // on each step component, relative to 1 + |delta_j|
-  bool statistics = true;  // false: skip the covariance, deviance, Pearson X^2 and log-likelihood (profiles)
+  bool statistics = true;    // false: skip the covariance, deviance, Pearson X^2 and log-likelihood (profiles)
 };
 
 // Newton-Raphson on the (penalised) log-likelihood with step halving: for the canonical logit link

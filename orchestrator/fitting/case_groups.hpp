@@ -12,7 +12,7 @@ namespace aerobreak {
 // (e.g. N) those axes are left out of the combination too: the conditions of the fits pooled along
 // them (c1, c2, ...), every other axis of the study still splitting them.
 struct CaseGroup {
-  std::string label;                                             // "g1", "g2", ... or "c1", "c2", ...
+  std::string label;                                               // "g1", "g2", ... or "c1", "c2", ...
   nlohmann::ordered_json axes = nlohmann::ordered_json::object();  // the non-speed axes' values
   std::vector<std::size_t> grid_points;
   std::vector<const CaseOutcome*> cases;

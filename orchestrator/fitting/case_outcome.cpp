@@ -4,10 +4,14 @@ namespace aerobreak {
 
 std::string_view to_string(Outcome outcome) {
   switch (outcome) {
-    case Outcome::stick: return "stick";
-    case Outcome::bounce: return "bounce";
-    case Outcome::break_up: return "break-up";
-    case Outcome::undetermined: break;
+    case Outcome::stick:
+      return "stick";
+    case Outcome::bounce:
+      return "bounce";
+    case Outcome::break_up:
+      return "break-up";
+    case Outcome::undetermined:
+      break;
   }
   return "undetermined";
 }

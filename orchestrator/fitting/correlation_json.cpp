@@ -18,9 +18,11 @@ nlohmann::ordered_json request_json(const CorrelationRequest& request) {
   nlohmann::ordered_json covariates = nlohmann::ordered_json::array();
   for (const auto& covariate : request.covariates)
     covariates.push_back({{"axis", covariate.axis}, {"transform", covariate.logarithmic ? "log" : "linear"}});
-  return {{"speed_axis", request.speed_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.speed_axis)},
+  return {{"speed_axis",
+           request.speed_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.speed_axis)},
           {"covariates", covariates},
-          {"size_axis", request.size_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.size_axis)},
+          {"size_axis",
+           request.size_axis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(request.size_axis)},
           {"levels", request.levels},
           {"confidence", 0.95}};
 }
@@ -42,12 +44,8 @@ const Fit* find(const std::vector<Fit>& list, const std::string& name) {
 nlohmann::ordered_json grid_points_json(const CorrelationSet& set) {
   nlohmann::ordered_json points = nlohmann::ordered_json::array();
   for (const auto& point : set.grid_points) points.push_back(grid_point_json(point));
-  return {{"name", kGridPointsName},
-          {"kind", "grid-points"},
-          {"status", "ok"},
-          {"confidence", 0.95},
-          {"interval", "wilson"},
-          {"provenance", provenance_json(set.provenance)},
+  return {{"name", kGridPointsName}, {"kind", "grid-points"}, {"status", "ok"},
+          {"confidence", 0.95},      {"interval", "wilson"},  {"provenance", provenance_json(set.provenance)},
           {"grid_points", points}};
 }
 
@@ -73,12 +71,18 @@ nlohmann::ordered_json correlation_summary_json(const CorrelationSet& set) {
 std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const std::string& name, int curve_points) {
   if (name == kGridPointsName) return grid_points_json(set);
   nlohmann::ordered_json json;
-  if (const auto* fit = find(set.logistic, name)) json = full_json(*fit, curve_points);
-  else if (const auto* fit = find(set.multinomial, name)) json = full_json(*fit, curve_points);
-  else if (const auto* fit = find(set.scaling, name)) json = full_json(*fit, curve_points);
-  else if (const auto* fit = find(set.retained_fraction, name)) json = full_json(*fit, curve_points);
-  else if (const auto* fit = find(set.fragment_sizes, name)) json = full_json(*fit, curve_points);
-  else return std::nullopt;
+  if (const auto* fit = find(set.logistic, name))
+    json = full_json(*fit, curve_points);
+  else if (const auto* fit = find(set.multinomial, name))
+    json = full_json(*fit, curve_points);
+  else if (const auto* fit = find(set.scaling, name))
+    json = full_json(*fit, curve_points);
+  else if (const auto* fit = find(set.retained_fraction, name))
+    json = full_json(*fit, curve_points);
+  else if (const auto* fit = find(set.fragment_sizes, name))
+    json = full_json(*fit, curve_points);
+  else
+    return std::nullopt;
   json["provenance"] = provenance_json(set.provenance);
   json["request"] = request_json(set.request);
   return json;

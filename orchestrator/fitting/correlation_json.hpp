@@ -25,7 +25,8 @@ nlohmann::ordered_json grid_points_json(const CorrelationSet& set);
 // One fit in full: coefficients, covariance, goodness of fit, validity box, provenance, the data
 // it was fitted to and its curve at `curve_points` points over its validity box with the 95 %
 // band. nullopt when the set has no fit of that name.
-std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const std::string& name, int curve_points = 50);
+std::optional<nlohmann::ordered_json> fit_json(const CorrelationSet& set, const std::string& name,
+                                               int curve_points = 50);
 
 // The names of every document: "grid-points", then every fit in summary order.
 std::vector<std::string> fit_names(const CorrelationSet& set);

@@ -25,7 +25,8 @@ nlohmann::ordered_json critical_json(const CriticalValue& value) {
 // Where the measured proportions cross each level (a group's speed fit; [] otherwise).
 nlohmann::ordered_json observed_json(const LogisticFit& fit) {
   nlohmann::ordered_json crossings = nlohmann::ordered_json::array();
-  for (const auto& value : fit.observed) crossings.push_back({{"level", value.level}, {"dose", number_or_null(value.estimate)}});
+  for (const auto& value : fit.observed)
+    crossings.push_back({{"level", value.level}, {"dose", number_or_null(value.estimate)}});
   return crossings;
 }
 
@@ -42,7 +43,8 @@ nlohmann::ordered_json logistic_data_json(const LogisticFit& fit) {
   std::vector<Eigen::Index> order(static_cast<std::size_t>(rows));
   std::iota(order.begin(), order.end(), 0);
   if (per_bin > 1)
-    std::stable_sort(order.begin(), order.end(), [&d](Eigen::Index a, Eigen::Index b) { return d.design(a, 1) < d.design(b, 1); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&d](Eigen::Index a, Eigen::Index b) { return d.design(a, 1) < d.design(b, 1); });
   nlohmann::ordered_json data = nlohmann::ordered_json::array();
   for (Eigen::Index start = 0; start < rows; start += per_bin) {
     double trials = 0.0, successes = 0.0, log_dose = 0.0;
@@ -54,8 +56,11 @@ nlohmann::ordered_json logistic_data_json(const LogisticFit& fit) {
       log_dose += d.design(i, 1) / static_cast<double>(end - start);
     }
     const auto wilson = wilson_interval(static_cast<std::size_t>(successes), static_cast<std::size_t>(trials));
-    nlohmann::ordered_json row{{"dose", std::exp(log_dose)}, {"trials", trials}, {"successes", successes},
-                               {"proportion", wilson->probability}, {"ci95", {wilson->lower, wilson->upper}}};
+    nlohmann::ordered_json row{{"dose", std::exp(log_dose)},
+                               {"trials", trials},
+                               {"successes", successes},
+                               {"proportion", wilson->probability},
+                               {"ci95", {wilson->lower, wilson->upper}}};
     for (Eigen::Index k = 2; k < d.design.cols() && per_bin == 1; ++k) {
       const Covariate& covariate = fit.covariates[static_cast<std::size_t>(k - 2)];
       row[covariate.axis] = covariate.logarithmic ? std::exp(d.design(order[static_cast<std::size_t>(start)], k))
@@ -75,7 +80,8 @@ nlohmann::ordered_json logistic_curves_json(const LogisticFit& fit, int points) 
     if (ats.empty() || ats.back() != value.at) ats.push_back(value.at);
   for (const auto& at : ats) {
     Eigen::VectorXd covariates(static_cast<Eigen::Index>(fit.covariates.size()));
-    for (std::size_t k = 0; k < fit.covariates.size(); ++k) covariates[static_cast<Eigen::Index>(k)] = at.at(fit.covariates[k].axis).get<double>();
+    for (std::size_t k = 0; k < fit.covariates.size(); ++k)
+      covariates[static_cast<Eigen::Index>(k)] = at.at(fit.covariates[k].axis).get<double>();
     nlohmann::ordered_json curve = nlohmann::ordered_json::array();
     for (const double dose : grid) curve.push_back(band_json(dose, fit.probability(dose, covariates)));
     curves.push_back({{"at", at}, {"points", curve}});
@@ -90,7 +96,8 @@ nlohmann::ordered_json summary_line(const LogisticFit& fit) {
   line["response"] = std::string(to_string(fit.response));
   line["dose"] = fit.dose;
   line["method"] = fit.method;
-  line["coefficients"] = std::vector<double>(fit.common.coefficients.data(), fit.common.coefficients.data() + fit.common.coefficients.size());
+  line["coefficients"] = std::vector<double>(fit.common.coefficients.data(),
+                                             fit.common.coefficients.data() + fit.common.coefficients.size());
   nlohmann::ordered_json pooled_over = nlohmann::ordered_json::array();
   for (const auto& covariate : fit.covariates) pooled_over.push_back(covariate.axis);
   line["pooled_over"] = pooled_over;
@@ -113,12 +120,13 @@ nlohmann::ordered_json full_json(const LogisticFit& fit, int points) {
   for (const auto& covariate : fit.covariates)
     covariates.push_back({{"axis", covariate.axis}, {"transform", covariate.logarithmic ? "log" : "linear"}});
   json["covariates"] = covariates;
-  json["separation"] = fit.common.status != FitStatus::separation
-                           ? nlohmann::ordered_json(nullptr)
-                           : nlohmann::ordered_json{{"complete", fit.separation_complete},
-                                                    {"perfectly_predicted_rows", fit.perfectly_predicted},
-                                                    {"bracket", fit.separation_bracket ? nlohmann::ordered_json(*fit.separation_bracket)
-                                                                                       : nlohmann::ordered_json(nullptr)}};
+  json["separation"] =
+      fit.common.status != FitStatus::separation
+          ? nlohmann::ordered_json(nullptr)
+          : nlohmann::ordered_json{{"complete", fit.separation_complete},
+                                   {"perfectly_predicted_rows", fit.perfectly_predicted},
+                                   {"bracket", fit.separation_bracket ? nlohmann::ordered_json(*fit.separation_bracket)
+                                                                      : nlohmann::ordered_json(nullptr)}};
   nlohmann::ordered_json critical = nlohmann::ordered_json::array();
   for (const auto& value : fit.critical) critical.push_back(critical_json(value));
   json["critical"] = critical;

@@ -27,13 +27,17 @@ nlohmann::ordered_json full_json(const MultinomialFit& fit, int points) {
   json["model"] = "log(P_k / P_stick) = a_k + b_k log(impact_speed), k = bounce, break-up";
   nlohmann::ordered_json data = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < fit.doses.size(); ++i)
-    data.push_back({{"dose", fit.doses[i]}, {"stick", fit.counts[i][0]}, {"bounce", fit.counts[i][1]}, {"break-up", fit.counts[i][2]}});
+    data.push_back({{"dose", fit.doses[i]},
+                    {"stick", fit.counts[i][0]},
+                    {"bounce", fit.counts[i][1]},
+                    {"break-up", fit.counts[i][2]}});
   json["data"] = data;
   nlohmann::ordered_json curve = nlohmann::ordered_json::array();
   if (fit.common.coefficients.size() > 0)
     for (const double dose : log_spaced(fit.doses.front(), fit.doses.back(), points)) {
       const auto bands = fit.probabilities(dose);
-      curve.push_back({{"dose", dose}, {"stick", band(bands[0])}, {"bounce", band(bands[1])}, {"break-up", band(bands[2])}});
+      curve.push_back(
+          {{"dose", dose}, {"stick", band(bands[0])}, {"bounce", band(bands[1])}, {"break-up", band(bands[2])}});
     }
   json["curve"] = curve;
   return json;
@@ -48,8 +52,9 @@ nlohmann::ordered_json summary_line(const ScalingFit& fit) {
   for (std::size_t k = 0; k < fit.axes.size() && fit.common.coefficients.size() > 0; ++k) {
     const auto j = static_cast<Eigen::Index>(k + 1);
     const double se = std::sqrt(fit.common.covariance(j, j));
-    exponents[fit.axes[k]] = {{"estimate", fit.common.coefficients[j]},
-                              {"ci95", {fit.common.coefficients[j] - kZ95 * se, fit.common.coefficients[j] + kZ95 * se}}};
+    exponents[fit.axes[k]] = {
+        {"estimate", fit.common.coefficients[j]},
+        {"ci95", {fit.common.coefficients[j] - kZ95 * se, fit.common.coefficients[j] + kZ95 * se}}};
   }
   line["exponents"] = exponents;
   return line;
@@ -64,14 +69,18 @@ nlohmann::ordered_json full_json(const ScalingFit& fit, int) {
   json["scale_factor"] = fit.scale_factor;
   nlohmann::ordered_json data = nlohmann::ordered_json::array();
   for (const auto& point : fit.points) {
-    nlohmann::ordered_json row{{"group", point.group}, {"critical_speed", point.critical_speed}, {"ci95", {point.lower, point.upper}}};
+    nlohmann::ordered_json row{
+        {"group", point.group}, {"critical_speed", point.critical_speed}, {"ci95", {point.lower, point.upper}}};
     if (fit.common.coefficients.size() > 0) {
       Eigen::VectorXd x(fit.common.coefficients.size());
       x[0] = 1.0;
-      for (std::size_t k = 0; k < fit.axes.size(); ++k) x[static_cast<Eigen::Index>(k + 1)] = std::log(point.group.at(fit.axes[k]).get<double>());
+      for (std::size_t k = 0; k < fit.axes.size(); ++k)
+        x[static_cast<Eigen::Index>(k + 1)] = std::log(point.group.at(fit.axes[k]).get<double>());
       const double se = std::sqrt(std::max(0.0, x.dot(fit.common.covariance * x)));
       row["fitted"] = {{"value", std::exp(x.dot(fit.common.coefficients))},
-                       {"ci95", {std::exp(x.dot(fit.common.coefficients) - kZ95 * se), std::exp(x.dot(fit.common.coefficients) + kZ95 * se)}}};
+                       {"ci95",
+                        {std::exp(x.dot(fit.common.coefficients) - kZ95 * se),
+                         std::exp(x.dot(fit.common.coefficients) + kZ95 * se)}}};
     }
     data.push_back(row);
   }
@@ -90,11 +99,15 @@ nlohmann::ordered_json full_json(const RetainedFractionFit& fit, int points) {
   json["model"] = "E[retained mass fraction] = logistic(b0 + b1 log(impact_speed)), quasi-binomial";
   json["dispersion"] = fit.dispersion;
   std::map<double, std::vector<double>> by_speed;
-  for (Eigen::Index i = 0; i < fit.data.design.rows(); ++i) by_speed[std::exp(fit.data.design(i, 1))].push_back(fit.data.successes[i]);
+  for (Eigen::Index i = 0; i < fit.data.design.rows(); ++i)
+    by_speed[std::exp(fit.data.design(i, 1))].push_back(fit.data.successes[i]);
   nlohmann::ordered_json data = nlohmann::ordered_json::array();
   for (const auto& [speed, fractions] : by_speed) {
     const auto mean = mean_estimate(fractions);
-    data.push_back({{"dose", speed}, {"n", mean->n}, {"mean", mean->mean}, {"standard_error", number_or_null(mean->standard_error)}});
+    data.push_back({{"dose", speed},
+                    {"n", mean->n},
+                    {"mean", mean->mean},
+                    {"standard_error", number_or_null(mean->standard_error)}});
   }
   json["data"] = data;
   nlohmann::ordered_json curve = nlohmann::ordered_json::array();
@@ -115,20 +128,21 @@ nlohmann::ordered_json full_json(const FragmentSizeFit& fit, int) {
   for (const auto& [size, count] : fit.histogram) histogram.push_back({{"size", size}, {"count", count}});
   json["data"] = histogram;
   if (fit.common.status != FitStatus::ok) return json;
-  json["power_law"] = {{"model", "P(s) = s^-tau / sum_{t=1..N} t^-tau"},
-                       {"tau", fit.exponent},
-                       {"standard_error", fit.exponent_standard_error},
-                       {"log_likelihood", fit.power_law_log_likelihood},
-                       {"aic", 2.0 - 2.0 * fit.power_law_log_likelihood},
-                       {"ks_distance", fit.power_law_ks}};
-  json["lognormal"] = {{"model", "P(s) = [Phi((ln(s+1/2) - mu)/sigma) - Phi((ln(s-1/2) - mu)/sigma)] / Z on 1..N"},
-                       {"mu", fit.mu},
-                       {"sigma", fit.sigma},
-                       {"standard_errors", {std::sqrt(fit.lognormal_covariance(0, 0)), std::sqrt(fit.lognormal_covariance(1, 1))}},
-                       {"log_likelihood", fit.lognormal_log_likelihood},
-                       {"aic", 4.0 - 2.0 * fit.lognormal_log_likelihood},
-                       {"ks_distance", fit.lognormal_ks}};
-  json["vuong"] = {{"statistic", fit.vuong_statistic}, {"p_value", fit.vuong_p_value}, {"favours", fit.vuong_statistic > 0 ? "lognormal" : "power law"}};
+  json["power_law"] = {
+      {"model", "P(s) = s^-tau / sum_{t=1..N} t^-tau"},  {"tau", fit.exponent},
+      {"standard_error", fit.exponent_standard_error},   {"log_likelihood", fit.power_law_log_likelihood},
+      {"aic", 2.0 - 2.0 * fit.power_law_log_likelihood}, {"ks_distance", fit.power_law_ks}};
+  json["lognormal"] = {
+      {"model", "P(s) = [Phi((ln(s+1/2) - mu)/sigma) - Phi((ln(s-1/2) - mu)/sigma)] / Z on 1..N"},
+      {"mu", fit.mu},
+      {"sigma", fit.sigma},
+      {"standard_errors", {std::sqrt(fit.lognormal_covariance(0, 0)), std::sqrt(fit.lognormal_covariance(1, 1))}},
+      {"log_likelihood", fit.lognormal_log_likelihood},
+      {"aic", 4.0 - 2.0 * fit.lognormal_log_likelihood},
+      {"ks_distance", fit.lognormal_ks}};
+  json["vuong"] = {{"statistic", fit.vuong_statistic},
+                   {"p_value", fit.vuong_p_value},
+                   {"favours", fit.vuong_statistic > 0 ? "lognormal" : "power law"}};
   return json;
 }
 

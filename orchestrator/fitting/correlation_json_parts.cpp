@@ -25,7 +25,8 @@ nlohmann::ordered_json mean_json(const std::optional<MeanWithError>& estimate) {
 nlohmann::ordered_json proportion_json(std::size_t count, const std::optional<ProportionEstimate>& estimate) {
   return {{"count", count},
           {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-          {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper}) : nlohmann::ordered_json(nullptr)}};
+          {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
+                            : nlohmann::ordered_json(nullptr)}};
 }
 
 nlohmann::ordered_json fragments_json(const FragmentStatistics& fragments) {
@@ -69,20 +70,24 @@ nlohmann::ordered_json common_json(const FitCommon& common) {
   nlohmann::ordered_json covariance = nlohmann::ordered_json::array();
   for (Eigen::Index j = 0; fitted && j < common.coefficients.size(); ++j) {
     const double se = std::sqrt(common.covariance(j, j));
-    parameters.push_back({{"name", common.parameters.at(static_cast<std::size_t>(j))},
-                          {"estimate", common.coefficients[j]},
-                          {"standard_error", number_or_null(se)},
-                          {"ci95", {number_or_null(common.coefficients[j] - kZ95 * se),
-                                    number_or_null(common.coefficients[j] + kZ95 * se)}}});
+    parameters.push_back(
+        {{"name", common.parameters.at(static_cast<std::size_t>(j))},
+         {"estimate", common.coefficients[j]},
+         {"standard_error", number_or_null(se)},
+         {"ci95",
+          {number_or_null(common.coefficients[j] - kZ95 * se), number_or_null(common.coefficients[j] + kZ95 * se)}}});
     nlohmann::ordered_json row = nlohmann::ordered_json::array();
     for (Eigen::Index k = 0; k < common.covariance.cols(); ++k) row.push_back(number_or_null(common.covariance(j, k)));
     covariance.push_back(row);
   }
   nlohmann::ordered_json goodness = nlohmann::ordered_json::array();
   for (const auto& g : common.goodness_of_fit)
-    goodness.push_back({{"statistic", g.statistic}, {"value", number_or_null(g.value)},
-                        {"degrees_of_freedom", number_or_null(g.degrees_of_freedom)}, {"p_value", number_or_null(g.p_value)}});
-  const double share = common.cases ? static_cast<double>(common.small_strain_cases) / static_cast<double>(common.cases) : 0.0;
+    goodness.push_back({{"statistic", g.statistic},
+                        {"value", number_or_null(g.value)},
+                        {"degrees_of_freedom", number_or_null(g.degrees_of_freedom)},
+                        {"p_value", number_or_null(g.p_value)}});
+  const double share =
+      common.cases ? static_cast<double>(common.small_strain_cases) / static_cast<double>(common.cases) : 0.0;
   return {{"name", common.name},
           {"kind", common.kind},
           {"status", std::string(to_string(common.status))},
@@ -100,7 +105,8 @@ nlohmann::ordered_json common_json(const FitCommon& common) {
 }
 
 nlohmann::ordered_json summary_common(const FitCommon& common) {
-  nlohmann::ordered_json line{{"name", common.name}, {"kind", common.kind}, {"status", std::string(to_string(common.status))}};
+  nlohmann::ordered_json line{
+      {"name", common.name}, {"kind", common.kind}, {"status", std::string(to_string(common.status))}};
   if (!common.detail.empty()) line["detail"] = common.detail;
   line["group"] = common.group;
   line["cases"] = common.cases;

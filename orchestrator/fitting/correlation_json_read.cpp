@@ -18,8 +18,8 @@ std::optional<double> optional_number(const nlohmann::ordered_json& value) {
 }
 
 FitStatus status_of(const std::string& text) {
-  for (const auto status : {FitStatus::ok, FitStatus::separation, FitStatus::insufficient_data, FitStatus::no_transition,
-                            FitStatus::not_converged})
+  for (const auto status : {FitStatus::ok, FitStatus::separation, FitStatus::insufficient_data,
+                            FitStatus::no_transition, FitStatus::not_converged})
     if (to_string(status) == text) return status;
   throw std::runtime_error("unknown fit status '" + text + "'");
 }
@@ -50,7 +50,8 @@ void read_common(FitCommon& common, const nlohmann::ordered_json& document) {
   common.cases = document.at("cases");
   common.groups = document.at("groups");
   common.small_strain_cases = document.at("small_strain").at("cases");
-  for (const auto& [input, range] : document.at("validity").items()) common.validity.push_back({input, range.at("min"), range.at("max")});
+  for (const auto& [input, range] : document.at("validity").items())
+    common.validity.push_back({input, range.at("min"), range.at("max")});
 }
 
 }  // namespace
@@ -61,13 +62,14 @@ LogisticFit logistic_fit_from_json(const nlohmann::ordered_json& document) {
   fit.response = outcome_of(document.at("response"));
   fit.dose = document.at("dose");
   fit.method = document.at("method");
-  for (const auto& covariate : document.at("covariates")) fit.covariates.push_back({covariate.at("axis"), covariate.at("transform") == "log"});
+  for (const auto& covariate : document.at("covariates"))
+    fit.covariates.push_back({covariate.at("axis"), covariate.at("transform") == "log"});
   for (const auto& value : document.at("critical"))
-    fit.critical.push_back({value.at("level"), value.at("at"), optional_number(value.at("estimate")), optional_number(value.at("ci95")[0]),
-                            optional_number(value.at("ci95")[1])});
+    fit.critical.push_back({value.at("level"), value.at("at"), optional_number(value.at("estimate")),
+                            optional_number(value.at("ci95")[0]), optional_number(value.at("ci95")[1])});
   for (const auto& value : document.value("observed_crossings", nlohmann::ordered_json::array()))
-    fit.observed.push_back({value.at("level"), nlohmann::ordered_json::object(), optional_number(value.at("dose")), std::nullopt,
-                            std::nullopt});
+    fit.observed.push_back({value.at("level"), nlohmann::ordered_json::object(), optional_number(value.at("dose")),
+                            std::nullopt, std::nullopt});
   const auto& data = document.at("data");
   fit.data.trials.resize(static_cast<Eigen::Index>(data.size()));
   fit.data.successes.resize(static_cast<Eigen::Index>(data.size()));

@@ -14,11 +14,16 @@ namespace aerobreak {
 
 std::string_view to_string(FitStatus status) {
   switch (status) {
-    case FitStatus::ok: return "ok";
-    case FitStatus::separation: return "separation";
-    case FitStatus::insufficient_data: return "insufficient-data";
-    case FitStatus::no_transition: return "no-transition";
-    case FitStatus::not_converged: break;
+    case FitStatus::ok:
+      return "ok";
+    case FitStatus::separation:
+      return "separation";
+    case FitStatus::insufficient_data:
+      return "insufficient-data";
+    case FitStatus::no_transition:
+      return "no-transition";
+    case FitStatus::not_converged:
+      break;
   }
   return "not-converged";
 }

@@ -21,15 +21,15 @@ namespace aerobreak {
 // Re-entrained fragments at one grid point. The units of the uncertainties are the cases: the
 // fragments of one case are not independent of each other.
 struct FragmentStatistics {
-  std::size_t fragments = 0;                     // re-entrained fragments, all cases
-  std::optional<MeanWithError> monomer_fraction;  // monomers / fragments (ratio over cases)
-  std::optional<MeanWithError> mean_size;         // primaries / fragments (ratio over cases)
+  std::size_t fragments = 0;                            // re-entrained fragments, all cases
+  std::optional<MeanWithError> monomer_fraction;        // monomers / fragments (ratio over cases)
+  std::optional<MeanWithError> mean_size;               // primaries / fragments (ratio over cases)
   std::array<std::optional<MeanWithError>, 4> moments;  // M_k = sum over a case's fragments of size^k, mean over cases
 };
 
 struct GridPointSummary {
   nlohmann::ordered_json grid_point;
-  std::size_t cases = 0;         // with a result
+  std::size_t cases = 0;  // with a result
   std::size_t undetermined = 0;
   std::size_t small_strain_exceeded = 0;
   std::array<std::size_t, 3> counts{};                               // stick, bounce, break-up
@@ -65,7 +65,7 @@ struct FitCommon {
   std::string name;
   std::string kind;
   FitStatus status = FitStatus::ok;
-  std::string detail;                                 // why, when the status is not ok
+  std::string detail;                                               // why, when the status is not ok
   nlohmann::ordered_json group = nlohmann::ordered_json::object();  // axis values; {} when pooled
   std::vector<std::string> parameters;
   Eigen::VectorXd coefficients;
@@ -110,7 +110,7 @@ struct LogisticFit {
   // rows (dose = speed); the model-free companion of `critical` (no interval).
   std::vector<CriticalValue> observed;
   std::vector<nlohmann::ordered_json> covariate_points;  // the groups' covariate values (pooled)
-  BinomialData data;  // the design the fit used: columns 1, log dose, covariates
+  BinomialData data;                                     // the design the fit used: columns 1, log dose, covariates
   // P at a dose and covariate values (transformed as in the design), with the Wald band on the logit.
   BandPoint probability(double dose, const Eigen::VectorXd& covariates = {}) const;
 };
@@ -119,9 +119,9 @@ struct LogisticFit {
 struct MultinomialFit {
   FitCommon common;
   std::string dose;
-  std::vector<Outcome> categories;  // the first is the baseline
-  std::vector<double> doses;        // distinct doses of the data
-  std::vector<std::vector<double>> counts;  // per dose, per category
+  std::vector<Outcome> categories;                            // the first is the baseline
+  std::vector<double> doses;                                  // distinct doses of the data
+  std::vector<std::vector<double>> counts;                    // per dose, per category
   std::array<BandPoint, 3> probabilities(double dose) const;  // per category, delta-method band
 };
 
@@ -153,11 +153,11 @@ struct RetainedFractionFit {
 // lognormal, both on 1..N.
 struct FragmentSizeFit {
   FitCommon common;
-  std::int64_t largest_size = 0;  // N: the upper end of both distributions
+  std::int64_t largest_size = 0;                                // N: the upper end of both distributions
   std::vector<std::pair<std::int64_t, std::size_t>> histogram;  // size, count
   double exponent = 0.0, exponent_standard_error = 0.0;         // tau of P(s) ~ s^-tau
   double power_law_log_likelihood = 0.0, power_law_ks = 0.0;
-  double mu = 0.0, sigma = 0.0;                                 // of ln s
+  double mu = 0.0, sigma = 0.0;  // of ln s
   Eigen::Matrix2d lognormal_covariance = Eigen::Matrix2d::Zero();
   double lognormal_log_likelihood = 0.0, lognormal_ks = 0.0;
   double vuong_statistic = 0.0, vuong_p_value = 1.0;  // > 0 favours the lognormal

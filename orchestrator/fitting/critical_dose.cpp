@@ -35,7 +35,10 @@ struct GapValue {
 class ProfileGap {
  public:
   ProfileGap(const BinomialData& data, const GlmFit& fit, const CriticalDoseRequest& request)
-      : data_(data), request_(request), best_(fit.objective), start_(fit.coefficients.tail(fit.coefficients.size() - 1)) {}
+      : data_(data),
+        request_(request),
+        best_(fit.objective),
+        start_(fit.coefficients.tail(fit.coefficients.size() - 1)) {}
 
   GapValue operator()(double theta) {
     const LinearConstraint constraint = constraint_at(request_, theta);
@@ -72,9 +75,12 @@ std::optional<double> interval_end(ProfileGap& gap, double estimate, double gues
   for (int iteration = 0; iteration < 100; ++iteration) {
     const GapValue g = gap(theta);
     if (!std::isfinite(g.value)) return std::nullopt;
-    if (g.value > 0.0) outside = theta;
-    else inside = theta;
-    if (std::abs(g.value) < 1e-10 || (outside && std::abs(*outside - inside) < 1e-12 * (1.0 + std::abs(theta)))) return theta;
+    if (g.value > 0.0)
+      outside = theta;
+    else
+      inside = theta;
+    if (std::abs(g.value) < 1e-10 || (outside && std::abs(*outside - inside) < 1e-12 * (1.0 + std::abs(theta))))
+      return theta;
     if (!outside && theta == limit) return std::nullopt;
     double next = theta - g.value / g.slope;
     if (outside) {

@@ -27,7 +27,7 @@ struct CriticalDoseRequest {
   Eigen::VectorXd reference;  // c(0): 1 for the intercept, covariate values, 0 at the dose
   Eigen::Index dose_column = 1;
   double level = 0.5;
-  double search_low = 0.0;    // theta range searched for the interval's ends
+  double search_low = 0.0;  // theta range searched for the interval's ends
   double search_high = 0.0;
   Penalty penalty = Penalty::none;
 };

@@ -18,7 +18,8 @@ std::vector<double> power_law_log_pmf(double tau, std::int64_t n) {
   std::vector<double> log_pmf(static_cast<std::size_t>(n));
   double norm = 0.0;
   for (std::int64_t s = 1; s <= n; ++s) norm += std::pow(static_cast<double>(s), -tau);
-  for (std::int64_t s = 1; s <= n; ++s) log_pmf[static_cast<std::size_t>(s - 1)] = -tau * std::log(static_cast<double>(s)) - std::log(norm);
+  for (std::int64_t s = 1; s <= n; ++s)
+    log_pmf[static_cast<std::size_t>(s - 1)] = -tau * std::log(static_cast<double>(s)) - std::log(norm);
   return log_pmf;
 }
 
@@ -56,7 +57,9 @@ double lognormal_log_likelihood(const Histogram& histogram, std::int64_t n, doub
 // Newton on (mu, ln sigma) with central differences and step halving.
 void fit_lognormal(FragmentSizeFit& fit, double mean_log, double sd_log) {
   Eigen::Vector2d theta(mean_log, std::log(std::max(sd_log, 0.1)));
-  const auto f = [&](const Eigen::Vector2d& t) { return lognormal_log_likelihood(fit.histogram, fit.largest_size, t[0], std::exp(t[1])); };
+  const auto f = [&](const Eigen::Vector2d& t) {
+    return lognormal_log_likelihood(fit.histogram, fit.largest_size, t[0], std::exp(t[1]));
+  };
   const double h = 1e-4;
   Eigen::Matrix2d hessian;
   for (int iteration = 0; iteration < 100; ++iteration) {
@@ -100,13 +103,15 @@ double ks_distance(const Histogram& histogram, double count, const std::vector<d
   auto bin = histogram.begin();
   for (std::size_t s = 1; s <= log_pmf.size(); ++s) {
     law_cdf += std::exp(log_pmf[s - 1]);
-    if (bin != histogram.end() && bin->first == static_cast<std::int64_t>(s)) data_cdf += static_cast<double>((bin++)->second) / count;
+    if (bin != histogram.end() && bin->first == static_cast<std::int64_t>(s))
+      data_cdf += static_cast<double>((bin++)->second) / count;
     distance = std::max(distance, std::abs(data_cdf - law_cdf));
   }
   return distance;
 }
 
-void compare(FragmentSizeFit& fit, double count, const std::vector<double>& power, const std::vector<double>& lognormal) {
+void compare(FragmentSizeFit& fit, double count, const std::vector<double>& power,
+             const std::vector<double>& lognormal) {
   double sum = 0.0, squares = 0.0;
   fit.power_law_log_likelihood = 0.0;
   for (const auto& [size, n] : fit.histogram) {
@@ -157,7 +162,8 @@ FragmentSizeFit fit_fragment_sizes(const std::vector<std::int64_t>& sizes, std::
   fit.common.goodness_of_fit = {{"ks-power-law", fit.power_law_ks, std::nullopt, std::nullopt},
                                 {"ks-lognormal", fit.lognormal_ks, std::nullopt, std::nullopt},
                                 {"vuong", fit.vuong_statistic, std::nullopt, fit.vuong_p_value}};
-  fit.common.validity = {{"fragment_size", static_cast<double>(counts.begin()->first), static_cast<double>(counts.rbegin()->first)}};
+  fit.common.validity = {
+      {"fragment_size", static_cast<double>(counts.begin()->first), static_cast<double>(counts.rbegin()->first)}};
   return fit;
 }
 

@@ -36,7 +36,8 @@ GoodnessOfFit hosmer_lemeshow(const BinomialData& data, const GlmFit& fit) {
 
 }  // namespace
 
-std::vector<GoodnessOfFit> binomial_goodness_of_fit(const BinomialData& data, const GlmFit& fit, std::size_t parameters) {
+std::vector<GoodnessOfFit> binomial_goodness_of_fit(const BinomialData& data, const GlmFit& fit,
+                                                    std::size_t parameters) {
   const bool grouped = (data.trials.array() > 1.0).any();
   if (!grouped) {
     if (data.trials.size() < 20) return {};

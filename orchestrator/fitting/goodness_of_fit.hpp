@@ -15,6 +15,7 @@ std::optional<double> chi_square_upper_tail(double x, double df);
 // of freedom (McCullagh & Nelder, sec. 4.4.3). Ungrouped data (one trial a row), where neither has
 // a chi^2 law: the Hosmer-Lemeshow statistic over ten groups of fitted probability, against chi^2
 // with 8 degrees of freedom (Hosmer & Lemeshow, Applied Logistic Regression, 2nd ed., sec. 5.2.2).
-std::vector<GoodnessOfFit> binomial_goodness_of_fit(const BinomialData& data, const GlmFit& fit, std::size_t parameters);
+std::vector<GoodnessOfFit> binomial_goodness_of_fit(const BinomialData& data, const GlmFit& fit,
+                                                    std::size_t parameters);
 
 }  // namespace aerobreak

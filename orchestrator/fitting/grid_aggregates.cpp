@@ -8,7 +8,7 @@ namespace aerobreak {
 namespace {
 
 std::optional<MeanWithError> mean_of(const std::vector<const CaseOutcome*>& cases,
-                                    std::optional<double> CaseOutcome::*field, std::optional<Outcome> only = {}) {
+                                     std::optional<double> CaseOutcome::*field, std::optional<Outcome> only = {}) {
   std::vector<double> values;
   for (const CaseOutcome* c : cases)
     if ((!only || c->outcome == *only) && c->*field) values.push_back(*(c->*field));
@@ -21,10 +21,13 @@ GridPointSummary summarise(const nlohmann::ordered_json& grid_point, const std::
   summary.cases = cases.size();
   for (const CaseOutcome* c : cases) {
     if (c->small_strain_exceeded) ++summary.small_strain_exceeded;
-    if (c->outcome == Outcome::undetermined) ++summary.undetermined;
-    else ++summary.counts[static_cast<std::size_t>(c->outcome)];
+    if (c->outcome == Outcome::undetermined)
+      ++summary.undetermined;
+    else
+      ++summary.counts[static_cast<std::size_t>(c->outcome)];
   }
-  for (std::size_t k = 0; k < 3; ++k) summary.probabilities[k] = wilson_interval(summary.counts[k], summary.determined());
+  for (std::size_t k = 0; k < 3; ++k)
+    summary.probabilities[k] = wilson_interval(summary.counts[k], summary.determined());
   // Undetermined cases are left out of every mean: their state is not final.
   const auto determined = determined_cases(cases);
   summary.retained_mass_fraction = mean_of(determined, &CaseOutcome::retained_mass_fraction);
@@ -65,7 +68,8 @@ std::vector<GridPointSummary> summarise_grid_points(const CaseOutcomeTable& tabl
   const auto by_point = cases_by_point(table);
   std::vector<GridPointSummary> summaries;
   summaries.reserve(table.grid_points.size());
-  for (std::size_t g = 0; g < table.grid_points.size(); ++g) summaries.push_back(summarise(table.grid_points[g], by_point[g]));
+  for (std::size_t g = 0; g < table.grid_points.size(); ++g)
+    summaries.push_back(summarise(table.grid_points[g], by_point[g]));
   return summaries;
 }
 

@@ -11,10 +11,13 @@
 namespace aerobreak {
 namespace {
 
-double covariate_term(const Covariate& covariate, double value) { return covariate.logarithmic ? std::log(value) : value; }
+double covariate_term(const Covariate& covariate, double value) {
+  return covariate.logarithmic ? std::log(value) : value;
+}
 
 // Covariate values of a grid point; empty when one is missing or unusable (log of a value <= 0).
-std::optional<Eigen::VectorXd> covariates_at(const nlohmann::ordered_json& grid_point, const CorrelationRequest& request) {
+std::optional<Eigen::VectorXd> covariates_at(const nlohmann::ordered_json& grid_point,
+                                             const CorrelationRequest& request) {
   Eigen::VectorXd values(static_cast<Eigen::Index>(request.covariates.size()));
   for (std::size_t k = 0; k < request.covariates.size(); ++k) {
     values[static_cast<Eigen::Index>(k)] = axis_number(grid_point, request.covariates[k].axis);
@@ -43,7 +46,8 @@ void build_design(DoseData& rows, const CorrelationRequest& request) {
     b.design(i, 0) = 1.0;
     b.design(i, 1) = std::log(rows.dose[static_cast<std::size_t>(i)]);
     const auto& covariates = rows.covariate_values[static_cast<std::size_t>(i)];
-    for (Eigen::Index j = 0; j < k; ++j) b.design(i, 2 + j) = covariate_term(request.covariates[static_cast<std::size_t>(j)], covariates[j]);
+    for (Eigen::Index j = 0; j < k; ++j)
+      b.design(i, 2 + j) = covariate_term(request.covariates[static_cast<std::size_t>(j)], covariates[j]);
   }
   b.trials = Eigen::Map<const Eigen::VectorXd>(rows.trials.data(), n);
   b.successes = Eigen::Map<const Eigen::VectorXd>(rows.successes.data(), n);
@@ -173,7 +177,8 @@ void add_critical_values(LogisticFit& fit, const GlmFit& glm, const CorrelationR
     ask.penalty = fit.method == "maximum likelihood" ? Penalty::none : Penalty::firth;
     for (const double level : request.levels) {
       ask.level = level;
-      const CriticalDose dose = covariate_points.empty() ? critical_dose(fit.data, glm, ask) : critical_dose_delta(glm, ask);
+      const CriticalDose dose =
+          covariate_points.empty() ? critical_dose(fit.data, glm, ask) : critical_dose_delta(glm, ask);
       const auto to_dose = [](std::optional<double> x) { return x ? std::optional(std::exp(*x)) : std::nullopt; };
       fit.critical.push_back({level, at, to_dose(dose.estimate), to_dose(dose.lower), to_dose(dose.upper)});
     }
@@ -192,10 +197,12 @@ std::vector<CriticalValue> observed_crossings(const DoseData& rows, const Correl
   std::vector<CriticalValue> crossings;
   if (!request.covariates.empty() || distinct(rows.dose).size() != rows.dose.size()) return crossings;
   std::vector<std::pair<double, double>> points;
-  for (std::size_t i = 0; i < rows.dose.size(); ++i) points.emplace_back(rows.dose[i], rows.successes[i] / rows.trials[i]);
+  for (std::size_t i = 0; i < rows.dose.size(); ++i)
+    points.emplace_back(rows.dose[i], rows.successes[i] / rows.trials[i]);
   std::sort(points.begin(), points.end());
   for (const double level : request.levels)
-    crossings.push_back({level, nlohmann::ordered_json::object(), observed_crossing(points, level), std::nullopt, std::nullopt});
+    crossings.push_back(
+        {level, nlohmann::ordered_json::object(), observed_crossing(points, level), std::nullopt, std::nullopt});
   return crossings;
 }
 

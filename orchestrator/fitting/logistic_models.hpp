@@ -9,14 +9,14 @@ namespace aerobreak {
 
 // The rows one logistic model is fitted to, with what its validity box and provenance need.
 struct DoseData {
-  BinomialData binomial;             // columns: 1, log dose, covariate terms
-  std::vector<double> dose;          // per row, in dose units
+  BinomialData binomial;                          // columns: 1, log dose, covariate terms
+  std::vector<double> dose;                       // per row, in dose units
   std::vector<Eigen::VectorXd> covariate_values;  // per row, untransformed
-  std::vector<double> trials;        // per row
-  std::vector<double> successes;     // per row
+  std::vector<double> trials;                     // per row
+  std::vector<double> successes;                  // per row
   std::size_t cases = 0;
   std::size_t small_strain = 0;
-  std::size_t groups = 0;            // grid points that contributed
+  std::size_t groups = 0;  // grid points that contributed
 };
 
 // Grouped rows, one per grid point with determined cases: trials = determined cases, successes =

@@ -31,8 +31,8 @@ bool inside_validity(const LogisticFit& fit, double dose, const Eigen::VectorXd&
       continue;
     }
     for (std::size_t k = 0; k < fit.covariates.size(); ++k)
-      if (fit.covariates[k].axis == range.input &&
-          (static_cast<Eigen::Index>(k) >= covariates.size() || !in_range(range, covariates[static_cast<Eigen::Index>(k)])))
+      if (fit.covariates[k].axis == range.input && (static_cast<Eigen::Index>(k) >= covariates.size() ||
+                                                    !in_range(range, covariates[static_cast<Eigen::Index>(k)])))
         return false;
   }
   return true;
@@ -57,7 +57,8 @@ Prediction predict(const LogisticFit& fit, double dose, const Eigen::VectorXd& c
       prediction.band = observed_share(fit);
       return prediction;
     case FitStatus::insufficient_data:
-    case FitStatus::not_converged: break;
+    case FitStatus::not_converged:
+      break;
   }
   return prediction;
 }

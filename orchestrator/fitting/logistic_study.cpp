@@ -66,8 +66,9 @@ struct ResponseFits {
   void speed_fit(Outcome response, const std::string& label, const CaseGroup& group, const CorrelationRequest* ask) {
     tasks.push_back([this, response, label, group = &group, ask] {
       const auto rows = speed_rows(table, by_point, group->grid_points, response, *ask);
-      return fit_logistic(named(std::string(to_string(response)) + ".speed." + label, group->axes), response, "impact_speed",
-                          rows, *ask, ask->covariates.empty() ? std::vector<Eigen::VectorXd>{} : distinct_covariates(rows));
+      return fit_logistic(named(std::string(to_string(response)) + ".speed." + label, group->axes), response,
+                          "impact_speed", rows, *ask,
+                          ask->covariates.empty() ? std::vector<Eigen::VectorXd>{} : distinct_covariates(rows));
     });
   }
 
@@ -103,7 +104,8 @@ std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, cons
   const auto by_point = cases_by_point(table);
   const auto conditions = condition_groups(table, request);
   std::vector<CorrelationRequest> condition_requests;
-  for (const CaseGroup& condition : conditions) condition_requests.push_back(condition_request(table, condition, request));
+  for (const CaseGroup& condition : conditions)
+    condition_requests.push_back(condition_request(table, condition, request));
   // Each fit is a task; the tasks run on every core (run_in_parallel), results in this order.
   std::vector<std::function<LogisticFit()>> tasks;
   ResponseFits fits{table, by_point, groups, conditions, condition_requests, per_group, tasks};

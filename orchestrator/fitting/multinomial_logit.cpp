@@ -31,7 +31,8 @@ Step evaluate(const MultinomialFit& fit, const Eigen::Vector4d& theta) {
     for (int k = 0; k < 2; ++k) {
       step.score.segment<2>(2 * k) += (y[static_cast<std::size_t>(k + 1)] - n * pi[k + 1]) * x;
       for (int l = 0; l < 2; ++l)
-        step.information.block<2, 2>(2 * k, 2 * l) += n * pi[k + 1] * ((k == l ? 1.0 : 0.0) - pi[l + 1]) * x * x.transpose();
+        step.information.block<2, 2>(2 * k, 2 * l) +=
+            n * pi[k + 1] * ((k == l ? 1.0 : 0.0) - pi[l + 1]) * x * x.transpose();
     }
   }
   return step;
@@ -57,8 +58,9 @@ void newton(MultinomialFit& fit) {
   // Under separation the coefficients run off and the steps never become small.
   if (!converged) {
     fit.common.status = FitStatus::separation;
-    fit.common.detail = "the maximum-likelihood estimate does not exist (the outcomes are separated along the speed): "
-                        "see the binomial fits of this group";
+    fit.common.detail =
+        "the maximum-likelihood estimate does not exist (the outcomes are separated along the speed): "
+        "see the binomial fits of this group";
     return;
   }
   fit.common.coefficients = theta;

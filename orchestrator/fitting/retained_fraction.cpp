@@ -34,14 +34,16 @@ RetainedFractionFit fit_one(const CaseOutcomeTable& table, const CaseGroup& grou
   if (!speeds.empty()) fit.common.validity = {{"impact_speed", *distinct.begin(), *distinct.rbegin()}};
   if (distinct.size() < 2) {
     fit.common.status = FitStatus::insufficient_data;
-    fit.common.detail = "too few points: " + std::to_string(distinct.size()) + " distinct speed(s) with a retained fraction";
+    fit.common.detail =
+        "too few points: " + std::to_string(distinct.size()) + " distinct speed(s) with a retained fraction";
     return fit;
   }
   const GlmFit glm = fit_binomial(fit.data);
   if (!glm.converged) {
     fit.common.status = FitStatus::no_transition;
-    fit.common.detail = "the retained fraction does not change with speed in a way a logit can follow (its estimate "
-                        "diverges: e.g. 1 in every case on one side)";
+    fit.common.detail =
+        "the retained fraction does not change with speed in a way a logit can follow (its estimate "
+        "diverges: e.g. 1 in every case on one side)";
     return fit;
   }
   const double df = static_cast<double>(n) - 2.0;
@@ -55,7 +57,8 @@ RetainedFractionFit fit_one(const CaseOutcomeTable& table, const CaseGroup& grou
 
 }  // namespace
 
-std::vector<RetainedFractionFit> fit_retained_fractions(const CaseOutcomeTable& table, const std::vector<CaseGroup>& groups,
+std::vector<RetainedFractionFit> fit_retained_fractions(const CaseOutcomeTable& table,
+                                                        const std::vector<CaseGroup>& groups,
                                                         const CorrelationRequest& request) {
   std::vector<RetainedFractionFit> fits;
   if (request.speed_axis.empty()) return fits;

@@ -21,7 +21,8 @@ std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logisti
                                          const CaseGroup& condition) {
   std::vector<ScalingPoint> points;
   for (const LogisticFit& fit : logistic) {
-    if (fit.response != response || fit.dose != "impact_speed" || !fit.covariates.empty() || !in_condition(fit, condition))
+    if (fit.response != response || fit.dose != "impact_speed" || !fit.covariates.empty() ||
+        !in_condition(fit, condition))
       continue;
     for (const CriticalValue& value : fit.critical)
       if (value.level == level && value.estimate && value.lower && value.upper && *value.upper > *value.lower)
@@ -57,7 +58,8 @@ void solve_weighted(ScalingFit& fit) {
   for (Eigen::Index i = 0; i < m; ++i) {
     const ScalingPoint& point = fit.points[static_cast<std::size_t>(i)];
     x(i, 0) = 1.0;
-    for (Eigen::Index k = 1; k < p; ++k) x(i, k) = std::log(axis_number(point.group, fit.axes[static_cast<std::size_t>(k - 1)]));
+    for (Eigen::Index k = 1; k < p; ++k)
+      x(i, k) = std::log(axis_number(point.group, fit.axes[static_cast<std::size_t>(k - 1)]));
     y[i] = std::log(point.critical_speed);
     const double sigma = (std::log(point.upper) - std::log(point.lower)) / (2.0 * kZ95);
     w[i] = 1.0 / (sigma * sigma);
@@ -79,7 +81,8 @@ ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, d
   fit.response = response;
   fit.level = level;
   const int percent = static_cast<int>(std::lround(level * 100.0));
-  fit.common.name = "scaling." + std::string(to_string(response)) + ".v" + std::to_string(percent) + "." + condition.label;
+  fit.common.name =
+      "scaling." + std::string(to_string(response)) + ".v" + std::to_string(percent) + "." + condition.label;
   fit.common.kind = "scaling";
   fit.common.group = condition.axes;
   fit.points = scaling_points(logistic, response, level, condition);
@@ -111,8 +114,8 @@ ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, d
 
 }  // namespace
 
-std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic, const std::vector<CaseGroup>& conditions,
-                                         const CorrelationRequest& request) {
+std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logistic,
+                                         const std::vector<CaseGroup>& conditions, const CorrelationRequest& request) {
   std::vector<ScalingFit> fits;
   if (request.speed_axis.empty() || request.covariates.empty()) return fits;
   std::set<Outcome> responses;

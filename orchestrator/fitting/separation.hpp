@@ -13,7 +13,7 @@ namespace aerobreak {
 // plane x'd = 0; quasi-complete: some rows (those with both outcomes among them) do.
 struct Separation {
   bool complete = false;
-  Eigen::VectorXd direction;                 // unit d
+  Eigen::VectorXd direction;                     // unit d
   std::vector<std::size_t> perfectly_predicted;  // rows off the plane: their outcome is certain in the limit
 };
 

@@ -18,9 +18,9 @@ namespace aerobreak {
 struct LauncherConfig {
   std::string kind = "mpirun";
   int ranks = 1;
-  std::vector<std::string> arguments;   // passed to the launcher before the program
-  std::filesystem::path program;        // the aerobreak executable the ranks run
-  double silence_limit = 0.0;           // seconds; > 0: passed on as `worker --silence-limit`
+  std::vector<std::string> arguments;  // passed to the launcher before the program
+  std::filesystem::path program;       // the aerobreak executable the ranks run
+  double silence_limit = 0.0;          // seconds; > 0: passed on as `worker --silence-limit`
 };
 
 // The launcher kinds, as the CLI lists them.

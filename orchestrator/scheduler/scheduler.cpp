@@ -16,8 +16,9 @@ using Clock = std::chrono::steady_clock;
 // "still running 47.3 s after its start (wall-time limit 10 s); its worker job was killed".
 std::string overdue_text(double seconds, double limit) {
   char text[160];
-  std::snprintf(text, sizeof text, "still running %.1f s after its start (wall-time limit %.6g s); its worker job was killed",
-                seconds, limit);
+  std::snprintf(text, sizeof text,
+                "still running %.1f s after its start (wall-time limit %.6g s); its worker job was killed", seconds,
+                limit);
   return text;
 }
 
@@ -131,8 +132,7 @@ void Scheduler::end_job_on_stop() {
   if (job_) {
     // A job with no case in flight is told to stop and ends by itself (srun then ends its step and
     // gives its allocation back before the orchestrator goes); one that does not in time is killed.
-    const bool stopped =
-        in_flight_.empty() && status().job_ready && job_->stop_within(WorkerJob::kTerminationGrace);
+    const bool stopped = in_flight_.empty() && status().job_ready && job_->stop_within(WorkerJob::kTerminationGrace);
     if (!stopped) job_->kill();
     try {
       store_.requeue_job(status_.job_id, "the orchestrator stopped", false);
@@ -145,8 +145,9 @@ void Scheduler::end_job_on_stop() {
     job_.reset();
   }
   if (!written)
-    note("stopped with store writes the store would not take; the cases they concern are still running in the "
-         "store, and the next start queues them again without a failure");
+    note(
+        "stopped with store writes the store would not take; the cases they concern are still running in the "
+        "store, and the next start queues them again without a failure");
 }
 
 void Scheduler::publish_storage_status() {
@@ -223,9 +224,7 @@ void Scheduler::handle(const JobReady& ready) {
   status_.consecutive_launch_failures = 0;
 }
 
-void Scheduler::handle(const JobProtocolError& error) {
-  note("worker job reports a protocol error: " + error.message);
-}
+void Scheduler::handle(const JobProtocolError& error) { note("worker job reports a protocol error: " + error.message); }
 
 void Scheduler::handle(const UnknownJobMessage& message) { note("ignored a worker message: " + message.problem); }
 
@@ -257,10 +256,9 @@ void Scheduler::landed(Flight flight) {
 
 void Scheduler::handle(const CaseStarted& started) {
   if (flight_of("started", started.case_id, started.attempt) == in_flight_.end()) return;
-  storage_.write([this, case_id = started.case_id, attempt = started.attempt,
-                  worker = started.host + ":" + std::to_string(started.rank)] {
-    store_.record_worker(case_id, attempt, worker);
-  });
+  storage_.write(
+      [this, case_id = started.case_id, attempt = started.attempt,
+       worker = started.host + ":" + std::to_string(started.rank)] { store_.record_worker(case_id, attempt, worker); });
 }
 
 void Scheduler::handle(CaseResult& result) {
@@ -336,8 +334,8 @@ void Scheduler::check_hard_limits() {
   const auto now = Clock::now();
   for (const auto& [case_id, flight] : in_flight_) {
     if (flight.wall_time_limit <= 0.0) continue;
-    const auto limit = std::chrono::duration<double>(flight.wall_time_limit * options_.hard_limit_factor) +
-                       options_.hard_limit_margin;
+    const auto limit =
+        std::chrono::duration<double>(flight.wall_time_limit * options_.hard_limit_factor) + options_.hard_limit_margin;
     if (now - flight.sent > limit) {
       note("case " + std::to_string(case_id) + " ignored its wall-time limit; killing its worker job");
       overdue_case_ = OverdueCase{case_id, std::chrono::duration<double>(now - flight.sent).count()};
@@ -383,14 +381,15 @@ void Scheduler::reap_job() {
   const auto job_id = status().job_id;
   const bool was_ready = status().job_ready;
   std::string note_text = job_told_to_stop_ && code == 0 ? "stopped when idle"
-                          : job_silent_ ? "was killed after sending nothing for the silence limit"
-                                        : "ended with exit status " + std::to_string(code);
+                          : job_silent_                  ? "was killed after sending nothing for the silence limit"
+                                                         : "ended with exit status " + std::to_string(code);
   if (overdue_case_) {
     const auto& flight = in_flight_.at(overdue_case_->case_id);
     record_failure(overdue_case_->case_id, flight.attempt, AttemptEnd::wall_time,
                    overdue_text(overdue_case_->seconds, flight.wall_time_limit));
     in_flight_.erase(overdue_case_->case_id);
-    storage_.write([this, job_id] { store_.requeue_job(job_id, "worker job killed for another case's wall time", false); });
+    storage_.write(
+        [this, job_id] { store_.requeue_job(job_id, "worker job killed for another case's wall time", false); });
     note_text = "killed: case " + std::to_string(overdue_case_->case_id) + " overran its wall-time limit";
     overdue_case_.reset();
   } else if (!in_flight_.empty()) {

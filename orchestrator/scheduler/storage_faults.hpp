@@ -10,8 +10,8 @@ namespace aerobreak {
 
 // What the scheduler reports while storage is failing.
 struct StorageFaultStatus {
-  std::string error;             // the latest fault
-  double since = 0.0;            // Unix seconds of the first fault of this spell
+  std::string error;               // the latest fault
+  double since = 0.0;              // Unix seconds of the first fault of this spell
   std::size_t waiting_writes = 0;  // store writes held until the store takes them
 };
 

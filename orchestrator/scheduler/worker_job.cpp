@@ -194,7 +194,8 @@ void WorkerJob::kill() {
   // the launcher is reaped only after this, so that its id cannot name another process group.
   ::kill(-pid_, SIGKILL);
   int status = 0;
-  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
   exit_status_ = exit_code_of(status);
 }
 

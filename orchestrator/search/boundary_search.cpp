@@ -63,7 +63,8 @@ void judge(const BoundarySearchSpec& spec, const std::vector<SearchObservation>&
   for (const auto& o : observations)
     if (o.round < context.round - 1) earlier.push_back(o);
   const auto before = crossings(spec, fit_targets(spec, earlier), context.previous_seed);
-  for (std::size_t e = 0; e < estimates.size(); ++e) estimates[e].found = estimates[e].narrow_enough && before[e].narrow_enough;
+  for (std::size_t e = 0; e < estimates.size(); ++e)
+    estimates[e].found = estimates[e].narrow_enough && before[e].narrow_enough;
 }
 
 // The candidates as the fits see them: doses centred on the range's middle.
@@ -92,8 +93,9 @@ std::vector<std::size_t> gap_doses(const std::vector<double>& doses, double low,
   }
   const double n = static_cast<double>(inside.size());
   for (std::size_t k = 0; k < count; ++k) {
-    const auto at = static_cast<std::size_t>(std::lround((static_cast<double>(k) + 1.0) * (n + 1.0) /
-                                                         (static_cast<double>(count) + 1.0))) - 1;
+    const auto at = static_cast<std::size_t>(
+                        std::lround((static_cast<double>(k) + 1.0) * (n + 1.0) / (static_cast<double>(count) + 1.0))) -
+                    1;
     picked.push_back(inside[std::min(at, inside.size() - 1)]);
   }
   return picked;
@@ -167,8 +169,10 @@ RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservati
     for (std::size_t l = 0; l < spec.targets[t].levels.size(); ++l, ++e) {
       // Round 0 spans the whole range: a response never seen, or always seen, there has its
       // crossing outside the range.
-      if (fits[t].overlap == Overlap::one_outcome) unreachable = true;
-      else if (!plan.estimates[e].found) unfinished = true;
+      if (fits[t].overlap == Overlap::one_outcome)
+        unreachable = true;
+      else if (!plan.estimates[e].found)
+        unfinished = true;
     }
   if (!unfinished) {
     plan.state = unreachable ? GroupState::out_of_range : GroupState::converged;

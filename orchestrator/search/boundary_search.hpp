@@ -32,8 +32,8 @@ struct CrossingEstimate {
   std::string response;
   double level = 0.5;
   std::optional<double> estimate, lower, upper;
-  std::string fit;     // "firth" (Firth's penalised likelihood, response_fit.hpp) or "none"
-  std::string status;  // overlapping | separated | one outcome | no data
+  std::string fit;             // "firth" (Firth's penalised likelihood, response_fit.hpp) or "none"
+  std::string status;          // overlapping | separated | one outcome | no data
   bool narrow_enough = false;  // the interval, and the one expected from the draws, as narrow as asked
   bool found = false;          // the stopping rule holds: narrow now and at the decision before, enough results
 };

@@ -46,11 +46,13 @@ std::vector<Draw> draws_of(const ResponseFit& fit, int count, NormalDraws& norma
   std::vector<Draw> out;
   for (int k = 0; k < count; ++k) {
     const Eigen::Vector2d z(normal.next(), normal.next());
-    Eigen::Vector2d b = cholesky.info() == Eigen::Success && k > 0 ? Eigen::Vector2d(mean + cholesky.matrixL() * z) : mean;
+    Eigen::Vector2d b =
+        cholesky.info() == Eigen::Success && k > 0 ? Eigen::Vector2d(mean + cholesky.matrixL() * z) : mean;
     // A draw whose slope has the other sign describes another experiment: the estimate stands in.
     if (b[1] * mean[1] <= 0.0) b = mean;
     Eigen::Matrix2d m = 1e-9 * Eigen::Matrix2d::Identity();
-    for (Eigen::Index i = 0; i < fit.data.trials.size(); ++i) m += fit.data.trials[i] * case_information(b, fit.data.design(i, 1));
+    for (Eigen::Index i = 0; i < fit.data.trials.size(); ++i)
+      m += fit.data.trials[i] * case_information(b, fit.data.design(i, 1));
     out.push_back({b, m});
   }
   return out;
@@ -72,7 +74,8 @@ double crossings_criterion(const std::vector<DesignTarget>& targets, const Draws
   for (const auto& target : targets) {
     const auto& draws = by_fit.at(target.fit);
     double sum = 0.0;
-    for (const auto& draw : draws) sum += crossing_variance(draw.b, draw.information + case_information(draw.b, x), target.level);
+    for (const auto& draw : draws)
+      sum += crossing_variance(draw.b, draw.information + case_information(draw.b, x), target.level);
     value += sum / static_cast<double>(draws.size()) / (target.half_width * target.half_width);
   }
   return value;
@@ -98,7 +101,8 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 double expected_crossing_variance(const DesignTarget& target, std::uint64_t seed, int draws) {
   NormalDraws normal(seed);
   double sum = 0.0;
-  for (const auto& draw : draws_of(*target.fit, draws, normal)) sum += crossing_variance(draw.b, draw.information, target.level);
+  for (const auto& draw : draws_of(*target.fit, draws, normal))
+    sum += crossing_variance(draw.b, draw.information, target.level);
   return sum / static_cast<double>(draws);
 }
 
@@ -115,8 +119,8 @@ std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets,
     std::size_t best = 0;
     double best_value = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const double value = pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c])
-                                         : slope_criterion(by_fit, candidates[c]);
+      const double value =
+          pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c]) : slope_criterion(by_fit, candidates[c]);
       if (value < best_value) best_value = value, best = c;
     }
     picked.push_back(best);

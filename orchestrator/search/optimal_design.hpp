@@ -23,9 +23,9 @@ struct DesignTarget {
 // design, J. Statist. Plann. Inference 149 (2014) 1). A design that only aims at the crossing
 // piles its cases onto the current estimate, learns little of the slope, and ends groups on
 // lucky narrow intervals whose coverage is poor (docs/ADAPTIVE.md, "Validation").
-// Var(theta) = g' M^-1 g is the asymptotic variance of the crossing theta = (logit(level) - b0) / b1 (gradient g = -(1, theta) / b1), M the Fisher information of
-// (b0, b1), sum over cases of p (1 - p) (1, x)(1, x)'. The expectation is over `draws` draws of
-// (b0, b1) from each fit's normal approximation N(b-hat, I^-1) (Chaloner & Larntz, J. Statist.
+// Var(theta) = g' M^-1 g is the asymptotic variance of the crossing theta = (logit(level) - b0) / b1 (gradient g = -(1,
+// theta) / b1), M the Fisher information of (b0, b1), sum over cases of p (1 - p) (1, x)(1, x)'. The expectation is
+// over `draws` draws of (b0, b1) from each fit's normal approximation N(b-hat, I^-1) (Chaloner & Larntz, J. Statist.
 // Plann. Inference 21 (1989) 191: Bayesian optimal design for logistic regression, which unlike
 // a plug-in locally optimal design does not stake every case on the current estimate), seeded by
 // `seed`. Every pick adds its information to every fit: one case informs all responses.

@@ -45,7 +45,8 @@ void classify_overlap(ResponseFit& fit) {
   for (Eigen::Index i = 0; i < d.trials.size(); ++i) {
     const double dose = d.design(i, 1);
     if (d.successes[i] > 0.0) success_low = std::min(success_low, dose), success_high = std::max(success_high, dose);
-    if (d.successes[i] < d.trials[i]) failure_low = std::min(failure_low, dose), failure_high = std::max(failure_high, dose);
+    if (d.successes[i] < d.trials[i])
+      failure_low = std::min(failure_low, dose), failure_high = std::max(failure_high, dose);
   }
   if (d.trials.size() == 0) {
     fit.overlap = Overlap::no_data;
@@ -64,10 +65,14 @@ void classify_overlap(ResponseFit& fit) {
 
 std::string overlap_text(Overlap overlap) {
   switch (overlap) {
-    case Overlap::overlapping: return "overlapping";
-    case Overlap::separated: return "separated";
-    case Overlap::one_outcome: return "one outcome";
-    case Overlap::no_data: return "no data";
+    case Overlap::overlapping:
+      return "overlapping";
+    case Overlap::separated:
+      return "separated";
+    case Overlap::one_outcome:
+      return "one outcome";
+    case Overlap::no_data:
+      return "no data";
   }
   return "no data";
 }

@@ -10,10 +10,14 @@ nlohmann::ordered_json number_or_null(const std::optional<double>& value) {
 }  // namespace
 
 nlohmann::ordered_json to_json(const CrossingEstimate& e) {
-  return {{"response", e.response},     {"level", e.level},
-          {"estimate", number_or_null(e.estimate)}, {"lower", number_or_null(e.lower)},
-          {"upper", number_or_null(e.upper)},       {"fit", e.fit},
-          {"status", e.status},                     {"narrow_enough", e.narrow_enough},
+  return {{"response", e.response},
+          {"level", e.level},
+          {"estimate", number_or_null(e.estimate)},
+          {"lower", number_or_null(e.lower)},
+          {"upper", number_or_null(e.upper)},
+          {"fit", e.fit},
+          {"status", e.status},
+          {"narrow_enough", e.narrow_enough},
           {"found", e.found}};
 }
 

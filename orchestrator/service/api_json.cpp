@@ -139,14 +139,10 @@ nlohmann::ordered_json to_json(const JobRecord& job) {
 }
 
 nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
-  return {{"id", receipt.study_id},
-          {"existing_study", receipt.existing_study},
-          {"cases", receipt.cases},
-          {"new_cases", receipt.new_cases},
-          {"already_done", receipt.already_done},
-          {"requeued", receipt.requeued},
-          {"recomputed", receipt.recomputed},
-          {"data_files_lost", receipt.data_files_lost}};
+  return {
+      {"id", receipt.study_id},           {"existing_study", receipt.existing_study},  {"cases", receipt.cases},
+      {"new_cases", receipt.new_cases},   {"already_done", receipt.already_done},      {"requeued", receipt.requeued},
+      {"recomputed", receipt.recomputed}, {"data_files_lost", receipt.data_files_lost}};
 }
 
 nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {

@@ -31,9 +31,10 @@ std::filesystem::path case_file(Store& store, std::int64_t case_id, const std::f
   if (error || !lies_under(file, directory) || !std::filesystem::is_regular_file(file))
     throw RequestError{404, which + "'s HDF5 file is not in the service's data folder (moved or deleted?)"};
   // Not the file its worker wrote: refused rather than served as if it were.
-  if (const auto check = checker.check(*detail->data_file, detail->data_file_digest); check.state == DataFileState::damaged)
-    throw RequestError{409, which + "'s HDF5 file is damaged (" + check.problem +
-                                "): submit its study again to compute it again"};
+  if (const auto check = checker.check(*detail->data_file, detail->data_file_digest);
+      check.state == DataFileState::damaged)
+    throw RequestError{
+        409, which + "'s HDF5 file is damaged (" + check.problem + "): submit its study again to compute it again"};
   return file;
 }
 

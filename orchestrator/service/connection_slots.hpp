@@ -62,7 +62,7 @@ class ConnectionSlots {
   const ConnectionLimits& limits_;
   std::mutex mutex_;
   std::condition_variable freed_;  // a slot was given back
-  std::vector<Holder> holders_;  // at most max_connections + health_connections: scanned, not indexed
+  std::vector<Holder> holders_;    // at most max_connections + health_connections: scanned, not indexed
   std::unordered_map<std::string, std::size_t> per_client_;  // regular slots by client address
   std::size_t regular_ = 0;
   std::size_t health_ = 0;

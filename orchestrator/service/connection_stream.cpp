@@ -130,8 +130,7 @@ bool ConnectionStream::account_header_bytes(const char* bytes, std::size_t count
     if (++header_line_bytes_ > limits_.max_header_line_bytes) {
       const bool request_line = header_lines_ == 0;
       fail(request_line ? 414 : 431, std::string(request_line ? "the request line" : "a header line") +
-                                         " is longer than " + std::to_string(limits_.max_header_line_bytes) +
-                                         " bytes");
+                                         " is longer than " + std::to_string(limits_.max_header_line_bytes) + " bytes");
       return false;
     }
     if (byte == '\n') {

@@ -12,12 +12,12 @@ namespace aerobreak {
 
 // What one connection may take from the service (docs/ORCHESTRATOR.md, "Limits").
 struct ConnectionLimits {
-  std::size_t max_connections = 64;     // served at once (connection_slots.hpp)
+  std::size_t max_connections = 64;             // served at once (connection_slots.hpp)
   std::size_t max_connections_per_client = 32;  // of them held by one client address
-  std::size_t health_connections = 4;   // beyond max_connections, for GET and HEAD /api/health only
-  std::chrono::milliseconds idle_timeout{std::chrono::seconds(5)};     // before a request's first byte
-  std::chrono::milliseconds header_timeout{std::chrono::seconds(10)};  // first byte to end of headers
-  std::chrono::milliseconds request_timeout{std::chrono::seconds(30)}; // first byte to end of answer
+  std::size_t health_connections = 4;           // beyond max_connections, for GET and HEAD /api/health only
+  std::chrono::milliseconds idle_timeout{std::chrono::seconds(5)};      // before a request's first byte
+  std::chrono::milliseconds header_timeout{std::chrono::seconds(10)};   // first byte to end of headers
+  std::chrono::milliseconds request_timeout{std::chrono::seconds(30)};  // first byte to end of answer
   // A request's bytes (headers and body) must arrive at min_bytes_per_second on average from its
   // first byte once its first rate_grace has passed: by first byte + rate_grace + bytes / rate.
   std::size_t min_bytes_per_second = 512;
@@ -27,7 +27,7 @@ struct ConnectionLimits {
   // One line, its line end included: cpp-httplib's own limit (CPPHTTPLIB_HEADER_MAX_LENGTH), past
   // which it answered a bare 400 and read the rest of the line as further requests.
   std::size_t max_header_line_bytes = 8192;
-  std::size_t requests_per_connection = 100; // keep-alive
+  std::size_t requests_per_connection = 100;  // keep-alive
 };
 
 // The limits of a connection on one of the slots kept for /api/health: one request, whole within
@@ -96,8 +96,8 @@ class ConnectionStream final : public httplib::Stream {
   std::size_t header_bytes_ = 0;
   std::size_t header_lines_ = 0;
   std::size_t header_line_bytes_ = 0;  // of the line arriving, so far
-  unsigned header_tail_ = 0;  // the last bytes of the header section, to spot its blank line
-  std::size_t request_bytes_ = 0;  // of the current request, handed to the library so far
+  unsigned header_tail_ = 0;           // the last bytes of the header section, to spot its blank line
+  std::size_t request_bytes_ = 0;      // of the current request, handed to the library so far
   std::atomic<bool> awaiting_{true};
   std::atomic<Clock::rep> awaiting_since_{Clock::now().time_since_epoch().count()};
   Clock::time_point request_started_{};

@@ -19,7 +19,8 @@ std::optional<std::vector<std::string>> covariates_parameter(const httplib::Requ
   if (!given) return std::nullopt;
   const std::string& text = *given;
   if (text.size() > kMaxCovariateText)
-    throw RequestError{400, "query parameter 'covariates' is longer than " + std::to_string(kMaxCovariateText) + " characters"};
+    throw RequestError{
+        400, "query parameter 'covariates' is longer than " + std::to_string(kMaxCovariateText) + " characters"};
   std::vector<std::string> names;
   std::size_t start = 0;
   while (start <= text.size() && !text.empty()) {
@@ -27,7 +28,8 @@ std::optional<std::vector<std::string>> covariates_parameter(const httplib::Requ
     if (comma == start) throw RequestError{400, "query parameter 'covariates' has an empty name (use a,b,c)"};
     names.push_back(text.substr(start, comma - start));
     if (names.size() > kMaxCovariates)
-      throw RequestError{400, "query parameter 'covariates' names more than " + std::to_string(kMaxCovariates) + " covariates"};
+      throw RequestError{
+          400, "query parameter 'covariates' names more than " + std::to_string(kMaxCovariates) + " covariates"};
     start = comma + 1;
   }
   return names;

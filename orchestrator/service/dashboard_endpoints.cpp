@@ -81,7 +81,7 @@ nlohmann::ordered_json case_row_json(const CaseRecord& record) {
 }
 
 nlohmann::ordered_json fragment_sizes_json(Store& store, GridPointCache& grid, const StudyRecord& study,
-                                          const AxisFilter& axes) {
+                                           const AxisFilter& axes) {
   const auto points_held = grid.points(store, study.id);
   const auto& points = *points_held;
   const auto keys = axes.matching_keys(points);
@@ -133,8 +133,7 @@ void get_study_case_table(Endpoints& e, const httplib::Request& request, httplib
   const auto cases = e.store.cases(study.id, filter, page);
   nlohmann::ordered_json items = nlohmann::ordered_json::array();
   for (const auto& record : cases.items) items.push_back(case_row_json(record));
-  send_json(response, 200,
-            {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
+  send_json(response, 200, {{"total", cases.total}, {"limit", page.limit}, {"offset", page.offset}, {"items", items}});
 }
 
 void get_study_fragment_sizes(Endpoints& e, const httplib::Request& request, httplib::Response& response) {

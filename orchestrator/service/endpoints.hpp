@@ -22,12 +22,12 @@ struct Endpoints {
   Store& store;
   Scheduler* scheduler;
   const ServiceOptions& options;
-  DataFileChecker data_files;        // a case's HDF5 file against the size and SHA-256 recorded
-  GridPointCache grid_points;        // a study's grid points, for the axis filters
-  StudyFits correlations;            // fitted once per result set, stored (docs/CORRELATIONS.md)
-  StudyTables tables;                // lookup tables built once per result-set version and request
-  VersionedDocuments grids;          // GET .../grid, serialised per study version
-  VersionedDocuments outcome_tables; // GET .../outcomes, likewise
+  DataFileChecker data_files;                   // a case's HDF5 file against the size and SHA-256 recorded
+  GridPointCache grid_points;                   // a study's grid points, for the axis filters
+  StudyFits correlations;                       // fitted once per result set, stored (docs/CORRELATIONS.md)
+  StudyTables tables;                           // lookup tables built once per result-set version and request
+  VersionedDocuments grids;                     // GET .../grid, serialised per study version
+  VersionedDocuments outcome_tables;            // GET .../outcomes, likewise
   std::shared_ptr<const WebAssets> web_assets;  // the dashboard's files; null: the API only
 };
 

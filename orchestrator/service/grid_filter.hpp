@@ -21,7 +21,8 @@ class AxisFilter {
   bool empty() const { return accepted_.empty(); }
   // The keys of the grid points (key, axis values) that meet every condition; RequestError 400
   // naming an axis that the study does not have.
-  std::vector<std::string> matching_keys(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& points) const;
+  std::vector<std::string> matching_keys(
+      const std::vector<std::pair<std::string, nlohmann::ordered_json>>& points) const;
 
   static constexpr std::size_t kMaxConditions = 64;
 

@@ -38,13 +38,12 @@ nlohmann::ordered_json health(Store& store, Scheduler* scheduler) {
   }
   const auto status = scheduler->status();
   json["scheduler"] = {{"launcher", status.launcher_command},
-                       {"job",
-                        status.job_running ? nlohmann::ordered_json{{"id", status.job_id},
-                                                                     {"pid", status.job_pid},
-                                                                     {"ready", status.job_ready},
-                                                                     {"ranks", status.ranks},
-                                                                     {"in_flight", status.in_flight}}
-                                           : nlohmann::ordered_json(nullptr)},
+                       {"job", status.job_running ? nlohmann::ordered_json{{"id", status.job_id},
+                                                                           {"pid", status.job_pid},
+                                                                           {"ready", status.job_ready},
+                                                                           {"ranks", status.ranks},
+                                                                           {"in_flight", status.in_flight}}
+                                                  : nlohmann::ordered_json(nullptr)},
                        {"jobs_started", status.jobs_started},
                        {"results_committed", status.results_committed},
                        {"consecutive_launch_failures", status.consecutive_launch_failures},

@@ -58,7 +58,8 @@ void send_error(httplib::Response& response, const RequestError& error) {
 
 nlohmann::ordered_json violations_json(const std::vector<SchemaViolation>& violations) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const auto& violation : violations) list.push_back({{"pointer", violation.pointer}, {"message", violation.message}});
+  for (const auto& violation : violations)
+    list.push_back({{"pointer", violation.pointer}, {"message", violation.message}});
   return list;
 }
 
@@ -66,8 +67,8 @@ std::optional<std::string> single_parameter(const httplib::Request& request, con
   const std::size_t given = request.get_param_value_count(name);
   if (given == 0) return std::nullopt;
   if (given > 1) {
-    const std::string message = "query parameter '" + name + "' is given " + std::to_string(given) +
-                                " times; it takes one value";
+    const std::string message =
+        "query parameter '" + name + "' is given " + std::to_string(given) + " times; it takes one value";
     throw RequestError{400, message, nlohmann::ordered_json::array({{{"parameter", name}, {"message", message}}})};
   }
   return request.get_param_value(name);
@@ -162,11 +163,11 @@ void send_kept(const httplib::Request& request, httplib::Response& response, con
   }
   response.status = 200;
   if (!content_encoding.empty()) response.set_header("Content-Encoding", content_encoding);
-  response.set_content_provider(body.size(), content_type.c_str(),
-                                [owner = std::move(owner), &body](std::size_t offset, std::size_t length,
-                                                                  httplib::DataSink& sink) {
-                                  return sink.write(body.data() + offset, length);
-                                });
+  response.set_content_provider(
+      body.size(), content_type.c_str(),
+      [owner = std::move(owner), &body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        return sink.write(body.data() + offset, length);
+      });
 }
 
 }  // namespace aerobreak

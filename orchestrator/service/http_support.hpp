@@ -66,7 +66,6 @@ void send_kept(const httplib::Request& request, httplib::Response& response, con
                std::shared_ptr<const void> owner, const std::string& body, const std::string& content_type,
                const std::string& content_encoding = "");
 
-
 // Whether the request's Accept-Encoding names gzip.
 bool accepts_gzip(const httplib::Request& request);
 

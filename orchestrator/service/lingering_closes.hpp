@@ -44,7 +44,7 @@ class LingeringCloses {
   std::condition_variable arrived_;
   std::vector<Lingering> added_;  // handed over, not yet polled
   bool stopping_ = false;
-  int wake_[2] = {-1, -1};        // a pipe that ends the drain thread's poll when one is added
+  int wake_[2] = {-1, -1};  // a pipe that ends the drain thread's poll when one is added
   std::thread thread_;
 };
 

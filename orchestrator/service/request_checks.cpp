@@ -106,8 +106,7 @@ std::string host_of(const std::string& host_header) {
   const std::string value = trimmed(host_header);
   if (!value.empty() && value.front() == '[') return value.substr(1, value.find(']') - 1);
   const auto colon = value.find(':');
-  return colon != std::string::npos && value.find(':', colon + 1) == std::string::npos ? value.substr(0, colon)
-                                                                                        : value;
+  return colon != std::string::npos && value.find(':', colon + 1) == std::string::npos ? value.substr(0, colon) : value;
 }
 
 httplib::Server::HandlerResponse check_request(const httplib::Request& request, httplib::Response& response,

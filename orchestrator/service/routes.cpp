@@ -74,10 +74,10 @@ std::string route_pattern(const Route& route) {
 
 void register_routes(httplib::Server& server, Endpoints& endpoints) {
   for (const Route& route : routes()) {
-    auto handler = guarded([&endpoints, answer = route.handler](const httplib::Request& request,
-                                                                httplib::Response& response) {
-      answer(endpoints, request, response);
-    });
+    auto handler =
+        guarded([&endpoints, answer = route.handler](const httplib::Request& request, httplib::Response& response) {
+          answer(endpoints, request, response);
+        });
     if (route.method == "POST")
       server.Post(route_pattern(route), std::move(handler));
     else

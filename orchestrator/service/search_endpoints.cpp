@@ -21,8 +21,13 @@ Json round_json(const SearchRoundRecord& round) {
 Json search_groups_json(const std::vector<SearchGroupRecord>& groups) {
   Json out = Json::array();
   for (const auto& g : groups) {
-    Json group{{"position", g.position}, {"group", g.group_point}, {"state", g.state}, {"rounds", g.rounds},
-               {"cases", g.cases},       {"estimates", g.estimates}, {"note", g.note ? Json(*g.note) : Json(nullptr)},
+    Json group{{"position", g.position},
+               {"group", g.group_point},
+               {"state", g.state},
+               {"rounds", g.rounds},
+               {"cases", g.cases},
+               {"estimates", g.estimates},
+               {"note", g.note ? Json(*g.note) : Json(nullptr)},
                {"updated_at", g.updated_at}};
     if (!g.history.empty()) {
       group["history"] = Json::array();

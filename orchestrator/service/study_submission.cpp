@@ -17,9 +17,13 @@ void add_search_groups(const Study& study, StudySubmission& submission) {
     if (k % per_group == 0) {
       nlohmann::ordered_json group = c.grid_point;
       group.erase(study.search->axis);
-      submission.search_groups.push_back({position, group, {{"round", 0}, {"results", 0}, {"estimates", nlohmann::ordered_json::array()},
-                                                            {"values", nlohmann::ordered_json::array()},
-                                                            {"reasons", nlohmann::ordered_json::array()}},
+      submission.search_groups.push_back({position,
+                                          group,
+                                          {{"round", 0},
+                                           {"results", 0},
+                                           {"estimates", nlohmann::ordered_json::array()},
+                                           {"values", nlohmann::ordered_json::array()},
+                                           {"reasons", nlohmann::ordered_json::array()}},
                                           static_cast<int>(per_group)});
     }
     auto& round_zero = submission.search_groups.back().round_zero;

@@ -38,8 +38,10 @@ void get_study_table(Endpoints& e, const httplib::Request& request, httplib::Res
     const auto kept = e.tables.file(study, parse_export_request(parameters), request_key(parameters));
     response.set_header("Content-Disposition", "attachment; filename=\"" + kept->file.file_name + "\"");
     response.set_header("Vary", "Accept-Encoding");
-    if (accepts_gzip(request)) send_kept(request, response, kept->etag, kept, kept->gzip_body, kept->file.content_type, "gzip");
-    else send_kept(request, response, kept->etag, kept, kept->file.content, kept->file.content_type);
+    if (accepts_gzip(request))
+      send_kept(request, response, kept->etag, kept, kept->gzip_body, kept->file.content_type, "gzip");
+    else
+      send_kept(request, response, kept->etag, kept, kept->file.content, kept->file.content_type);
   } catch (const ExportError& error) {
     throw request_error(error);
   }

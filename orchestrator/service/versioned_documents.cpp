@@ -26,11 +26,11 @@ std::shared_ptr<const VersionedDocument> VersionedDocuments::make(std::int64_t s
   // so that a client holding the tag is never told an out-of-date document is current.
   std::string body = build_(study);
   std::string compressed = gzip(body);
-  auto document = std::make_shared<const VersionedDocument>(VersionedDocument{
-      versions,
-      "\"" + instance_ + "-" + std::to_string(study) + "-" + std::to_string(versions.case_states) + "-" +
-          std::to_string(versions.result_set) + "\"",
-      std::move(body), std::move(compressed)});
+  auto document = std::make_shared<const VersionedDocument>(
+      VersionedDocument{versions,
+                        "\"" + instance_ + "-" + std::to_string(study) + "-" + std::to_string(versions.case_states) +
+                            "-" + std::to_string(versions.result_set) + "\"",
+                        std::move(body), std::move(compressed)});
   std::lock_guard lock(mutex_);
   if (documents_.size() >= kMaxStudies) documents_.clear();
   documents_[study] = document;

@@ -63,7 +63,8 @@ void add_vendor_files(const std::filesystem::path& web_directory, WebAssets& ass
   for (const auto& [url, target] : list.items()) {
     const std::filesystem::path relative = target.is_string() ? target.get<std::string>() : std::string();
     if (!safe_vendor_entry(url, relative))
-      throw std::runtime_error(list_file.string() + ": '" + url + "' must map /vendor/NAME to a file under node_modules/");
+      throw std::runtime_error(list_file.string() + ": '" + url +
+                               "' must map /vendor/NAME to a file under node_modules/");
     const auto file = web_directory / relative;
     if (!std::filesystem::is_regular_file(file)) assets.missing.push_back(file.string());
     assets.by_path[url] = {file, content_type(file)};

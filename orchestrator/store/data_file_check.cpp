@@ -19,10 +19,14 @@ std::int64_t nanoseconds(const timespec& time) { return std::int64_t{time.tv_sec
 
 std::string_view to_string(DataFileState state) {
   switch (state) {
-    case DataFileState::ok: return "ok";
-    case DataFileState::missing: return "missing";
-    case DataFileState::damaged: return "damaged";
-    case DataFileState::unverified: return "unverified";
+    case DataFileState::ok:
+      return "ok";
+    case DataFileState::missing:
+      return "missing";
+    case DataFileState::damaged:
+      return "damaged";
+    case DataFileState::unverified:
+      return "unverified";
   }
   return "unverified";
 }
@@ -37,7 +41,8 @@ DataFileCheck DataFileChecker::check(const std::string& path, const DataFileDige
                                         std::to_string(expected.size) + " when it was written"};
   if (expected.sha256.empty()) return {DataFileState::unverified, {}};
 
-  const Seen now{status.st_dev, status.st_ino, status.st_size, nanoseconds(status.st_mtim), nanoseconds(status.st_ctim), {}};
+  const Seen now{
+      status.st_dev, status.st_ino, status.st_size, nanoseconds(status.st_mtim), nanoseconds(status.st_ctim), {}};
   std::string sha256;
   {
     std::lock_guard lock(mutex_);
@@ -60,8 +65,8 @@ DataFileCheck DataFileChecker::check(const std::string& path, const DataFileDige
     seen_[path] = std::move(remembered);
   }
   if (sha256 != expected.sha256)
-    return {DataFileState::damaged, path + " is not the file written: its SHA-256 is " + sha256 + ", not " +
-                                        expected.sha256};
+    return {DataFileState::damaged,
+            path + " is not the file written: its SHA-256 is " + sha256 + ", not " + expected.sha256};
   return {DataFileState::ok, {}};
 }
 

@@ -25,7 +25,8 @@ const Json& at(const Json& document, const char* pointer) {
 // fragment list where it has one, else its last velocity; nothing (zero speed, the table's
 // normal velocity) when the document does not list the fragment.
 void read_velocity(const Json& listed, const Json& wall_normal, FragmentFate& fate) {
-  const Json& velocity = listed.value("mean_velocity", Json()).is_array() ? listed["mean_velocity"] : listed.value("velocity", Json());
+  const Json& velocity =
+      listed.value("mean_velocity", Json()).is_array() ? listed["mean_velocity"] : listed.value("velocity", Json());
   if (!velocity.is_array() || velocity.size() != 3 || !wall_normal.is_array() || wall_normal.size() != 3) return;
   double normal = 0.0, speed2 = 0.0;
   for (std::size_t a = 0; a < 3; ++a) {
@@ -40,7 +41,8 @@ void read_velocity(const Json& listed, const Json& wall_normal, FragmentFate& fa
 std::vector<FragmentFate> stored_fates(SqliteDatabase& db, std::int64_t case_id, const Json& document) {
   const Json& list = at(document, "/fragments/list");
   const Json& wall_normal = at(document, "/setup/wall_normal");
-  auto rows = db.prepare("SELECT rank, primaries, mass, on_wall, normal_velocity FROM fragments WHERE case_id = ? ORDER BY rank");
+  auto rows = db.prepare(
+      "SELECT rank, primaries, mass, on_wall, normal_velocity FROM fragments WHERE case_id = ? ORDER BY rank");
   rows.bind_all(case_id);
   std::vector<FragmentFate> fates;
   while (rows.step()) {
@@ -62,7 +64,8 @@ std::vector<FragmentFate> stored_fates(SqliteDatabase& db, std::int64_t case_id,
 OutcomeThresholds stored_thresholds(const Json& document) {
   OutcomeThresholds thresholds;
   const Json& share = at(document, "/case/classification/largest_fragment_share");
-  if (share.is_number() && share.get<double>() > 0.5 && share.get<double>() <= 1.0) thresholds.bounce_share = share.get<double>();
+  if (share.is_number() && share.get<double>() > 0.5 && share.get<double>() <= 1.0)
+    thresholds.bounce_share = share.get<double>();
   return thresholds;
 }
 
@@ -71,8 +74,10 @@ void rewrite_outcome(Json& outcome, const Classification& c, const std::vector<F
   const Json former = outcome.value("class", Json());
   Json reentrained = Json::array();
   for (const std::size_t k : c.reentrained)
-    reentrained.push_back({{"primaries", fates[k].primaries}, {"mass", fates[k].mass},
-                           {"normal_velocity", fates[k].normal_velocity}, {"speed", fates[k].speed}});
+    reentrained.push_back({{"primaries", fates[k].primaries},
+                           {"mass", fates[k].mass},
+                           {"normal_velocity", fates[k].normal_velocity},
+                           {"speed", fates[k].speed}});
   outcome.erase("mass_fraction_on_wall");
   outcome["class"] = to_string(c.outcome);
   outcome["reason"] = c.reason;
@@ -96,9 +101,11 @@ void reclassify(SqliteDatabase& db, std::int64_t case_id, Json document) {
   const Classification c = classify(fates, was_settled, thresholds);
   rewrite_outcome(document["outcome"], c, fates, thresholds);
   const Json& initial = at(document, "/contacts/initial");
-  db.prepare("UPDATE results SET outcome = ?, retained_mass_fraction = ?, reentrained_mass_fraction = ?, "
-             "fractured_on_wall = ?, initial_contacts = ?, document = ? WHERE case_id = ?")
-      .bind_all(to_string(c.outcome), c.retained_mass_fraction, c.reentrained_mass_fraction, c.fractured_on_wall ? 1 : 0,
+  db.prepare(
+        "UPDATE results SET outcome = ?, retained_mass_fraction = ?, reentrained_mass_fraction = ?, "
+        "fractured_on_wall = ?, initial_contacts = ?, document = ? WHERE case_id = ?")
+      .bind_all(to_string(c.outcome), c.retained_mass_fraction, c.reentrained_mass_fraction,
+                c.fractured_on_wall ? 1 : 0,
                 initial.is_number_integer() ? std::optional(initial.get<std::int64_t>()) : std::nullopt,
                 document.dump(), case_id)
       .run();

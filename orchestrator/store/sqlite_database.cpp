@@ -6,8 +6,7 @@ namespace aerobreak {
 namespace {
 
 [[noreturn]] void fail(sqlite3* db, int code, std::string_view doing) {
-  throw SqliteError("SQLite: " + std::string(doing) + ": " + (db ? sqlite3_errmsg(db) : sqlite3_errstr(code)),
-                    code);
+  throw SqliteError("SQLite: " + std::string(doing) + ": " + (db ? sqlite3_errmsg(db) : sqlite3_errstr(code)), code);
 }
 
 void check(sqlite3* db, int code, std::string_view doing) {

@@ -70,13 +70,19 @@ class SqliteStatement {
   void bind(int index, std::nullopt_t);
   template <typename T>
   void bind(int index, const std::optional<T>& value) {
-    if (value) bind(index, *value); else bind(index, std::nullopt);
+    if (value)
+      bind(index, *value);
+    else
+      bind(index, std::nullopt);
   }
 
   // Advances to the next row; false when the statement is done.
   bool step();
   // Runs a statement that returns no rows.
-  void run() { while (step()) {} }
+  void run() {
+    while (step()) {
+    }
+  }
   void reset();
 
   int column_count() const;

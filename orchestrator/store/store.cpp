@@ -43,11 +43,15 @@ Store::Store(const std::filesystem::path& file, Access access, const std::filesy
 void Store::open_for_reading() {
   const StoreFileState state = inspect_store_file(file_);
   switch (state.kind) {
-    case StoreFileState::Kind::absent: throw std::runtime_error("no store file " + file_.string());
-    case StoreFileState::Kind::empty: throw StoreFileRefused("the file " + file_.string() + " is empty: no store yet");
+    case StoreFileState::Kind::absent:
+      throw std::runtime_error("no store file " + file_.string());
+    case StoreFileState::Kind::empty:
+      throw StoreFileRefused("the file " + file_.string() + " is empty: no store yet");
     case StoreFileState::Kind::foreign:
-    case StoreFileState::Kind::newer: throw StoreFileRefused(state.problem);
-    case StoreFileState::Kind::store: break;
+    case StoreFileState::Kind::newer:
+      throw StoreFileRefused(state.problem);
+    case StoreFileState::Kind::store:
+      break;
   }
   if (state.version != latest_store_version())
     throw std::runtime_error("the store " + file_.string() + " has schema version " + std::to_string(state.version) +
@@ -121,7 +125,8 @@ std::size_t resume_study(SqliteDatabase& db, std::int64_t study_id, double now) 
 
 std::size_t done_cases(SqliteDatabase& db, std::int64_t study_id) {
   auto count = db.prepare(
-      "SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? AND c.status = 'done'");
+      "SELECT count(*) FROM study_cases sc JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? AND c.status = "
+      "'done'");
   count.bind_all(study_id);
   count.step();
   return static_cast<std::size_t>(count.integer(0));
@@ -169,7 +174,8 @@ std::optional<ClaimedCase> Store::claim_next_case(std::int64_t job_id, const std
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   auto next = writer_->prepare(
-      "SELECT c.id, c.attempts, c.document, c.wall_time_limit, c.hash FROM cases c WHERE c.status = 'queued' AND EXISTS "
+      "SELECT c.id, c.attempts, c.document, c.wall_time_limit, c.hash FROM cases c WHERE c.status = 'queued' AND "
+      "EXISTS "
       "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
       " WHERE sc.case_id = c.id AND s.status = 'active') ORDER BY c.id LIMIT 1");
   if (!next.step()) return std::nullopt;
@@ -180,7 +186,8 @@ std::optional<ClaimedCase> Store::claim_next_case(std::int64_t job_id, const std
   assignment.wall_time_limit = next.real(3);
   assignment.hash = next.text(4);
   const double now = unix_seconds();
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE cases SET status = 'running', attempts = ?, job_id = ?, worker = ?, started_at = ? WHERE id = ?")
       .bind_all(assignment.attempt, job_id, worker, now, assignment.case_id)
       .run();
@@ -239,21 +246,21 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
       "energy_per_contact, energy_over_rolling, initial_contacts, impact_energy, wall_clock_seconds, data_file, "
       "document, committed_at, data_file_size, data_file_sha256) "
       "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  statement.bind_all(case_id, attempt, outcome_class.get<std::string>(),
-                     optional_number(member(member(outcome, "restitution"), "normal")),
-                     optional_number(member(outcome, "largest_fragment_share")),
-                     optional_integer(member(outcome, "fragment_count")),
-                     optional_number(member(outcome, "retained_mass_fraction")),
-                     optional_number(member(outcome, "reentrained_mass_fraction")),
-                     optional_number(member(outcome, "damage_ratio")), optional_flag(member(outcome, "fractured_on_wall")),
-                     small_strain.is_boolean() ? std::optional(small_strain.get<bool>() ? 0 : 1) : std::nullopt,
-                     optional_number(member(dimensionless, "energy_per_contact")),
-                     optional_number(member(dimensionless, "energy_over_rolling")),
-                     optional_integer(member(dimensionless, "initial_contacts")),
-                     optional_number(member(member(result, "setup"), "impact_kinetic_energy")), wall_clock_seconds,
-                     data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now,
-                     digest.size >= 0 && !data_file.empty() ? std::optional(digest.size) : std::nullopt,
-                     digest.sha256.empty() || data_file.empty() ? std::nullopt : std::optional(digest.sha256));
+  statement.bind_all(
+      case_id, attempt, outcome_class.get<std::string>(),
+      optional_number(member(member(outcome, "restitution"), "normal")),
+      optional_number(member(outcome, "largest_fragment_share")), optional_integer(member(outcome, "fragment_count")),
+      optional_number(member(outcome, "retained_mass_fraction")),
+      optional_number(member(outcome, "reentrained_mass_fraction")), optional_number(member(outcome, "damage_ratio")),
+      optional_flag(member(outcome, "fractured_on_wall")),
+      small_strain.is_boolean() ? std::optional(small_strain.get<bool>() ? 0 : 1) : std::nullopt,
+      optional_number(member(dimensionless, "energy_per_contact")),
+      optional_number(member(dimensionless, "energy_over_rolling")),
+      optional_integer(member(dimensionless, "initial_contacts")),
+      optional_number(member(member(result, "setup"), "impact_kinetic_energy")), wall_clock_seconds,
+      data_file.empty() ? std::optional<std::string>() : std::optional(data_file), result.dump(), now,
+      digest.size >= 0 && !data_file.empty() ? std::optional(digest.size) : std::nullopt,
+      digest.sha256.empty() || data_file.empty() ? std::nullopt : std::optional(digest.sha256));
   statement.run();
 
   auto fragment = db.prepare(
@@ -276,7 +283,8 @@ bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ord
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   const double now = unix_seconds();
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE cases SET status = 'done', finished_at = ?, error = NULL "
           "WHERE id = ? AND status = 'running' AND attempts = ?")
       .bind_all(now, case_id, attempt)
@@ -296,8 +304,8 @@ std::optional<CaseStatus> Store::record_failure(std::int64_t case_id, int attemp
                                                 const std::string& error) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
-  auto current = writer_->prepare(
-      "SELECT failures, max_attempts FROM cases WHERE id = ? AND status = 'running' AND attempts = ?");
+  auto current =
+      writer_->prepare("SELECT failures, max_attempts FROM cases WHERE id = ? AND status = 'running' AND attempts = ?");
   current.bind_all(case_id, attempt);
   if (!current.step()) return std::nullopt;
   const auto failures = current.integer(0) + 1;
@@ -305,11 +313,12 @@ std::optional<CaseStatus> Store::record_failure(std::int64_t case_id, int attemp
   const bool give_up = end == AttemptEnd::invalid || failures >= current.integer(1);
   const CaseStatus status = give_up ? CaseStatus::failed : CaseStatus::queued;
   const double now = unix_seconds();
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE cases SET status = ?, failures = ?, error = ?, finished_at = ?, queued_at = "
           "CASE WHEN ? THEN queued_at ELSE ? END WHERE id = ?")
-      .bind_all(to_string(status), failures, error,
-                give_up ? std::optional(now) : std::nullopt, give_up ? 1 : 0, now, case_id)
+      .bind_all(to_string(status), failures, error, give_up ? std::optional(now) : std::nullopt, give_up ? 1 : 0, now,
+                case_id)
       .run();
   writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = ?, error = ? WHERE case_id = ? AND attempt = ?")
       .bind_all(now, to_string(end), error, case_id, attempt)
@@ -333,9 +342,7 @@ std::size_t Store::requeue_job(std::int64_t job_id, const std::string& reason, b
   return requeued;
 }
 
-std::size_t Store::requeue_interrupted() {
-  return requeue_running("1", "the orchestrator stopped while the case ran");
-}
+std::size_t Store::requeue_interrupted() { return requeue_running("1", "the orchestrator stopped while the case ran"); }
 
 bool Store::requeue_attempt(std::int64_t case_id, int attempt, const std::string& reason) {
   return requeue_running("id = " + std::to_string(case_id) + " AND attempts = " + std::to_string(attempt), reason) == 1;
@@ -345,9 +352,11 @@ std::size_t Store::requeue_running(const std::string& condition, const std::stri
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
   const double now = unix_seconds();
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE attempts SET ended_at = ?, outcome = 'interrupted', error = ? WHERE ended_at IS NULL AND "
-          "(case_id, attempt) IN (SELECT id, attempts FROM cases WHERE status = 'running' AND " + condition + ")")
+          "(case_id, attempt) IN (SELECT id, attempts FROM cases WHERE status = 'running' AND " +
+          condition + ")")
       .bind_all(now, reason)
       .run();
   writer_->prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE status = 'running' AND " + condition)
@@ -394,7 +403,8 @@ bool Store::cancel_study(std::int64_t study_id) {
       .bind_all(now, study_id)
       .run();
   if (writer_->changes() != 1) return false;
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE cases SET status = 'cancelled', finished_at = ? WHERE status = 'queued' "
           "AND id IN (SELECT case_id FROM study_cases WHERE study_id = ?) "
           "AND NOT EXISTS (SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "

@@ -18,7 +18,8 @@ std::int64_t version_of(SqliteDatabase& db, std::int64_t study_id) {
 
 // The sizes of the fragments that left the wall, per case.
 void add_reentrained_fragments(SqliteDatabase& db, std::int64_t study_id,
-                               const std::unordered_map<std::int64_t, std::size_t>& row_of_case, CaseOutcomeTable& table) {
+                               const std::unordered_map<std::int64_t, std::size_t>& row_of_case,
+                               CaseOutcomeTable& table) {
   auto statement = db.prepare(
       "SELECT f.case_id, f.primaries FROM study_cases sc JOIN fragments f ON f.case_id = sc.case_id "
       "WHERE sc.study_id = ? AND f.on_wall = 0 ORDER BY f.case_id, f.rank");
@@ -70,7 +71,8 @@ StudyOutcomes Store::study_outcomes(std::int64_t study_id) {
     auto statement = db->prepare(
         "SELECT sc.grid_key, sc.grid_point, r.case_id, c.hash, r.attempt, r.committed_at, r.outcome, r.restitution, "
         "r.retained_mass_fraction, r.damage_ratio, r.energy_per_contact, r.small_strain_exceeded "
-        "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id WHERE sc.study_id = ? ORDER BY sc.position");
+        "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id WHERE "
+        "sc.study_id = ? ORDER BY sc.position");
     statement.bind_all(study_id);
     std::map<std::string, std::size_t> point_of_key;
     std::unordered_map<std::int64_t, std::size_t> row_of_case;
@@ -128,15 +130,19 @@ void Store::save_correlations(std::int64_t study_id, const std::string& request_
                               const std::vector<StoredFit>& fits) {
   std::lock_guard lock(write_mutex_);
   SqliteTransaction transaction(*writer_);
-  writer_->prepare("DELETE FROM correlation_sets WHERE study_id = ? AND request = ?").bind_all(study_id, request_key).run();
-  writer_->prepare(
+  writer_->prepare("DELETE FROM correlation_sets WHERE study_id = ? AND request = ?")
+      .bind_all(study_id, request_key)
+      .run();
+  writer_
+      ->prepare(
           "INSERT INTO correlation_sets (study_id, request, result_set_version, result_set_hash, aerobreak_version, "
           "computed_at, fit_seconds, summary) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
       .bind_all(study_id, request_key, set.result_set_version, set.result_set_hash, set.aerobreak_version,
                 set.computed_at, set.fit_seconds, set.summary)
       .run();
   const std::int64_t set_id = writer_->last_insert_id();
-  auto insert = writer_->prepare("INSERT INTO correlation_fits (set_id, name, kind, status, document) VALUES (?, ?, ?, ?, ?)");
+  auto insert =
+      writer_->prepare("INSERT INTO correlation_fits (set_id, name, kind, status, document) VALUES (?, ?, ?, ?, ?)");
   for (const StoredFit& fit : fits) {
     insert.reset();
     insert.bind_all(set_id, fit.name, fit.kind, fit.status, fit.document).run();
@@ -147,8 +153,10 @@ void Store::save_correlations(std::int64_t study_id, const std::string& request_
 bool Store::confirm_correlations(std::int64_t study_id, const std::string& request_key,
                                  const std::string& result_set_hash, std::int64_t version) {
   std::lock_guard lock(write_mutex_);
-  writer_->prepare(
-          "UPDATE correlation_sets SET result_set_version = ? WHERE study_id = ? AND request = ? AND result_set_hash = ?")
+  writer_
+      ->prepare(
+          "UPDATE correlation_sets SET result_set_version = ? WHERE study_id = ? AND request = ? AND result_set_hash = "
+          "?")
       .bind_all(version, study_id, request_key, result_set_hash)
       .run();
   return writer_->changes() == 1;

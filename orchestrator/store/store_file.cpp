@@ -14,8 +14,8 @@ namespace aerobreak {
 namespace {
 
 // The tables of the first schema version: every aerobreak store has them.
-constexpr std::array<const char*, 7> kCoreTables{"studies", "jobs", "cases", "study_cases", "attempts", "results",
-                                                 "fragments"};
+constexpr std::array<const char*, 7> kCoreTables{"studies",  "jobs",    "cases",    "study_cases",
+                                                 "attempts", "results", "fragments"};
 
 StoreFileState refused(StoreFileState::Kind kind, int version, const std::filesystem::path& file,
                        const std::string& what) {

@@ -32,8 +32,8 @@ constexpr std::array<MomentColumn, 6> kMomentColumns{{
 
 // Results counted per grid point by a flag: fractured on the wall, outside the small-strain range,
 // and without the small-strain check (results migrated from a version-1 store).
-constexpr std::array<std::string_view, 3> kFlagCounts{
-    "sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)", "count(*) - count(r.small_strain_exceeded)"};
+constexpr std::array<std::string_view, 3> kFlagCounts{"sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)",
+                                                      "count(*) - count(r.small_strain_exceeded)"};
 
 std::optional<double> mean(const Moments& moments) {
   return moments.count > 0 ? std::optional(moments.sum / static_cast<double>(moments.count)) : std::nullopt;
@@ -72,7 +72,8 @@ GridPointStatistics statistics_from(const SqliteStatement& row) {
   cell.cases = static_cast<std::size_t>(row.integer(2));
   cell.failed = static_cast<std::size_t>(row.integer(3));
   int column = 4;  // stick, bounce, break-up, undetermined: the summaries' columns in kOutcomes' order
-  for (const auto outcome : kOutcomes) cell.outcomes[std::string(outcome)] = static_cast<std::size_t>(row.integer(column++));
+  for (const auto outcome : kOutcomes)
+    cell.outcomes[std::string(outcome)] = static_cast<std::size_t>(row.integer(column++));
   for (const auto& [name, member] : kMomentColumns) {
     Moments& moments = statistics.*member;
     moments.count = static_cast<std::size_t>(row.integer(column++));
@@ -117,12 +118,14 @@ std::vector<std::pair<std::string, nlohmann::ordered_json>> Store::grid_points(s
   return points;
 }
 
-std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, const std::vector<std::string>& grid_keys) {
+std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id,
+                                                      const std::vector<std::string>& grid_keys) {
   auto db = read();
   const std::string keys = nlohmann::json(grid_keys).dump();
   const std::string matching = "WHERE sc.study_id = ? AND sc.grid_key IN (SELECT value FROM json_each(?)) ";
-  auto results = db->prepare("SELECT sc.grid_key, count(*) FROM study_cases sc JOIN results r ON r.case_id = sc.case_id " +
-                             matching + "GROUP BY sc.grid_key ORDER BY min(sc.position)");
+  auto results =
+      db->prepare("SELECT sc.grid_key, count(*) FROM study_cases sc JOIN results r ON r.case_id = sc.case_id " +
+                  matching + "GROUP BY sc.grid_key ORDER BY min(sc.position)");
   results.bind_all(study_id, keys);
   std::vector<GridPointFragments> points;
   std::map<std::string, std::size_t> index;
@@ -130,8 +133,10 @@ std::vector<GridPointFragments> Store::fragment_sizes(std::int64_t study_id, con
     index[results.text(0)] = points.size();
     points.push_back({results.text(0), static_cast<std::size_t>(results.integer(1)), {}});
   }
-  auto sizes = db->prepare("SELECT sc.grid_key, f.primaries, count(*) FROM study_cases sc JOIN fragments f "
-                           "ON f.case_id = sc.case_id " + matching + "GROUP BY sc.grid_key, f.primaries ORDER BY 1, 2");
+  auto sizes = db->prepare(
+      "SELECT sc.grid_key, f.primaries, count(*) FROM study_cases sc JOIN fragments f "
+      "ON f.case_id = sc.case_id " +
+      matching + "GROUP BY sc.grid_key, f.primaries ORDER BY 1, 2");
   sizes.bind_all(study_id, keys);
   while (sizes.step()) {
     const auto found = index.find(sizes.text(0));
@@ -167,8 +172,10 @@ std::vector<GridPointFragmentMasses> Store::fragment_masses(std::int64_t study_i
   std::map<std::string, std::size_t> index;
   while (results.step()) {
     index[results.text(0)] = points.size();
-    points.push_back({results.text(0), static_cast<std::size_t>(results.integer(1)),
-                      static_cast<std::size_t>(results.integer(2)), {}});
+    points.push_back({results.text(0),
+                      static_cast<std::size_t>(results.integer(1)),
+                      static_cast<std::size_t>(results.integer(2)),
+                      {}});
   }
   auto classes = db->prepare(
       "SELECT sc.grid_key, f.on_wall, f.primaries, count(*), total(f.mass) FROM study_cases sc "
@@ -178,8 +185,8 @@ std::vector<GridPointFragmentMasses> Store::fragment_masses(std::int64_t study_i
   while (classes.step()) {
     const auto found = index.find(classes.text(0));
     if (found == index.end()) continue;
-    points[found->second].classes.push_back({classes.integer(1) != 0, classes.integer(2),
-                                             static_cast<std::size_t>(classes.integer(3)), classes.real(4)});
+    points[found->second].classes.push_back(
+        {classes.integer(1) != 0, classes.integer(2), static_cast<std::size_t>(classes.integer(3)), classes.real(4)});
   }
   return points;
 }

@@ -41,7 +41,8 @@ StoreLock::StoreLock(const std::filesystem::path& store_file) {
   }
   // The pid only makes a second process's message clearer: the lock holds without it.
   const std::string pid = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(fd_, 0) == 0) [[maybe_unused]] const auto written = ::pwrite(fd_, pid.data(), pid.size(), 0);
+  if (::ftruncate(fd_, 0) == 0) [[maybe_unused]]
+    const auto written = ::pwrite(fd_, pid.data(), pid.size(), 0);
 }
 
 StoreLock::~StoreLock() {

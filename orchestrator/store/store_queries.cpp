@@ -109,8 +109,8 @@ struct FilterClause {
   FilterClause(const CaseFilter& filter) {
     if (filter.status) add(" AND c.status = ?", std::string(to_string(*filter.status)));
     if (filter.outcome) add(" AND r.outcome = ?", *filter.outcome);
-    if (filter.grid_keys) add(" AND sc.grid_key IN (SELECT value FROM json_each(?))",
-                              nlohmann::json(*filter.grid_keys).dump());
+    if (filter.grid_keys)
+      add(" AND sc.grid_key IN (SELECT value FROM json_each(?))", nlohmann::json(*filter.grid_keys).dump());
   }
   void add(const char* condition, std::string text) {
     sql += condition;
@@ -129,10 +129,10 @@ struct FilterClause {
 
 std::size_t Store::claimable_cases() {
   auto db = read();
-  return count(db->prepare(
-      "SELECT count(*) FROM cases c WHERE c.status = 'queued' AND EXISTS "
-      "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
-      " WHERE sc.case_id = c.id AND s.status = 'active')"));
+  return count(
+      db->prepare("SELECT count(*) FROM cases c WHERE c.status = 'queued' AND EXISTS "
+                  "(SELECT 1 FROM study_cases sc JOIN studies s ON s.id = sc.study_id "
+                  " WHERE sc.case_id = c.id AND s.status = 'active')"));
 }
 
 Page<StudyRecord> Store::studies(const PageRequest& page) {
@@ -164,8 +164,8 @@ std::optional<StudyProgress> Store::progress(std::int64_t study_id) {
   StudyProgress progress;
   progress.study_id = study_id;
   int column = 0;
-  for (const auto status : {CaseStatus::queued, CaseStatus::running, CaseStatus::done, CaseStatus::failed,
-                            CaseStatus::cancelled}) {
+  for (const auto status :
+       {CaseStatus::queued, CaseStatus::running, CaseStatus::done, CaseStatus::failed, CaseStatus::cancelled}) {
     const auto n = static_cast<std::size_t>(statement.integer(column++));
     progress.by_status[std::string(to_string(status))] = n;
     progress.total += n;
@@ -221,7 +221,8 @@ Page<CaseRecord> Store::cases(std::int64_t study_id, const CaseFilter& filter, c
                                       : "SELECT count(*) " + from + where.sql);
   where.bind(total, study_id);
   result.total = total.step() ? static_cast<std::size_t>(total.integer(0)) : 0;
-  auto statement = db->prepare(std::string(kCaseColumns) + "WHERE " + where.sql + " ORDER BY sc.position LIMIT ? OFFSET ?");
+  auto statement =
+      db->prepare(std::string(kCaseColumns) + "WHERE " + where.sql + " ORDER BY sc.position LIMIT ? OFFSET ?");
   const int next = where.bind(statement, study_id);
   statement.bind(next, page.limit);
   statement.bind(next + 1, page.offset);
@@ -234,7 +235,8 @@ Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::stri
   const std::string filter = outcome ? " AND r.outcome = ?" : "";
   const std::string from =
       "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id "
-      "WHERE sc.study_id = ?" + filter;
+      "WHERE sc.study_id = ?" +
+      filter;
   Page<ResultRecord> result;
   auto total = db->prepare("SELECT count(*) " + from);
   total.bind(1, study_id);
@@ -244,8 +246,8 @@ Page<ResultRecord> Store::results(std::int64_t study_id, std::optional<std::stri
       "SELECT r.case_id, c.hash, sc.grid_point, sc.replicate, r.attempt, r.outcome, r.restitution, "
       "r.largest_fragment_share, r.fragment_count, r.retained_mass_fraction, r.reentrained_mass_fraction, "
       "r.damage_ratio, r.fractured_on_wall, r.small_strain_exceeded, r.energy_per_contact, r.energy_over_rolling, "
-      "r.initial_contacts, r.impact_energy, r.wall_clock_seconds, r.data_file, r.committed_at " + from +
-      " ORDER BY sc.position LIMIT ? OFFSET ?");
+      "r.initial_contacts, r.impact_energy, r.wall_clock_seconds, r.data_file, r.committed_at " +
+      from + " ORDER BY sc.position LIMIT ? OFFSET ?");
   int index = 1;
   statement.bind(index++, study_id);
   if (outcome) statement.bind(index++, *outcome);
@@ -278,7 +280,8 @@ std::optional<CaseDetail> Store::case_detail(std::int64_t case_id) {
                                attempts.optional_text(5), attempts.optional_text(6)});
   }
 
-  auto result = db->prepare("SELECT document, data_file, data_file_size, data_file_sha256 FROM results WHERE case_id = ?");
+  auto result =
+      db->prepare("SELECT document, data_file, data_file_size, data_file_sha256 FROM results WHERE case_id = ?");
   result.bind_all(case_id);
   if (result.step()) {
     detail.result = nlohmann::ordered_json::parse(result.text(0));
@@ -321,7 +324,8 @@ std::vector<StoredDataFile> Store::data_files(const std::vector<std::string>& ha
     statement.reset();
     statement.bind_all(hash);
     if (statement.step())
-      files.push_back({hash, data_path_on_disk(data_directory_, statement.text(0)),
+      files.push_back({hash,
+                       data_path_on_disk(data_directory_, statement.text(0)),
                        {statement.optional_integer(1).value_or(-1), statement.optional_text(2).value_or("")}});
   }
   return files;

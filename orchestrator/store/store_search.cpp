@@ -11,7 +11,8 @@ using Json = nlohmann::ordered_json;
 
 std::vector<SearchGroupWork::Case> group_cases(SqliteDatabase& db, std::int64_t study_id, std::int64_t position) {
   auto statement = db.prepare(
-      "SELECT sc.grid_point, r.outcome, sc.search_round FROM study_cases sc LEFT JOIN results r ON r.case_id = sc.case_id "
+      "SELECT sc.grid_point, r.outcome, sc.search_round FROM study_cases sc LEFT JOIN results r ON r.case_id = "
+      "sc.case_id "
       "WHERE sc.study_id = ? AND sc.search_group = ? ORDER BY sc.position");
   statement.bind_all(study_id, position);
   std::vector<SearchGroupWork::Case> cases;
@@ -76,7 +77,8 @@ bool Store::record_search_decision(const SearchDecision& decision) {
     link_study_cases(*writer_, decision.study_id, decision.cases, first_position, settings, receipt);
   }
   const int placed_rounds = decision.cases.empty() ? 0 : 1;
-  writer_->prepare(
+  writer_
+      ->prepare(
           "UPDATE search_groups SET state = ?, rounds = rounds + ?, cases = cases + ?, estimates = ?, note = ?, "
           "updated_at = ? WHERE study_id = ? AND position = ?")
       .bind_all(decision.state, placed_rounds, decision.cases.size(), decision.estimates.dump(),

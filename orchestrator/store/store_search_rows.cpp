@@ -35,8 +35,8 @@ void link_study_cases(SqliteDatabase& db, std::int64_t study_id, const std::vect
       ++receipt.new_cases;
     }
     link.reset();
-    link.bind_all(study_id, case_id, position++, study_case.grid_point.dump(), study_case.grid_key, study_case.replicate,
-                  study_case.search_group, study_case.search_round);
+    link.bind_all(study_id, case_id, position++, study_case.grid_point.dump(), study_case.grid_key,
+                  study_case.replicate, study_case.search_group, study_case.search_round);
     link.run();
   }
 }
@@ -46,7 +46,8 @@ void insert_search_groups(SqliteDatabase& db, std::int64_t study_id,
   auto group = db.prepare(
       "INSERT INTO search_groups (study_id, position, group_point, state, rounds, cases, updated_at) "
       "VALUES (?, ?, ?, 'searching', 1, ?, ?)");
-  auto round = db.prepare("INSERT INTO search_rounds (study_id, position, round, decided_at, plan) VALUES (?, ?, 0, ?, ?)");
+  auto round =
+      db.prepare("INSERT INTO search_rounds (study_id, position, round, decided_at, plan) VALUES (?, ?, 0, ?, ?)");
   for (const auto& g : groups) {
     group.reset();
     group.bind_all(study_id, g.position, g.group_point.dump(), g.cases, now).run();

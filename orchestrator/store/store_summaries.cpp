@@ -172,7 +172,8 @@ void rebuild_store_summaries(SqliteDatabase& db) {
 
 bool has_store_summaries(SqliteDatabase& db) {
   auto statement = db.prepare(
-      "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name IN ('study_summaries', 'grid_point_summaries')");
+      "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name IN ('study_summaries', "
+      "'grid_point_summaries')");
   statement.step();
   return statement.integer(0) == 2;
 }

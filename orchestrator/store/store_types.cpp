@@ -30,12 +30,18 @@ std::optional<CaseStatus> parse_case_status(std::string_view text) {
 
 std::string_view to_string(AttemptEnd end) {
   switch (end) {
-    case AttemptEnd::done: return "done";
-    case AttemptEnd::invalid: return "invalid";
-    case AttemptEnd::error: return "error";
-    case AttemptEnd::wall_time: return "wall_time";
-    case AttemptEnd::lost: return "lost";
-    case AttemptEnd::interrupted: return "interrupted";
+    case AttemptEnd::done:
+      return "done";
+    case AttemptEnd::invalid:
+      return "invalid";
+    case AttemptEnd::error:
+      return "error";
+    case AttemptEnd::wall_time:
+      return "wall_time";
+    case AttemptEnd::lost:
+      return "lost";
+    case AttemptEnd::interrupted:
+      return "interrupted";
   }
   return "error";
 }

@@ -75,12 +75,12 @@ struct SearchGroupWork {
 struct SearchDecision {
   std::int64_t study_id = 0;
   std::int64_t position = 0;
-  int round = 0;                          // the round this decides (SearchGroupWork::rounds)
-  std::string state;                      // the group's state after it
-  nlohmann::ordered_json estimates;       // the crossings the decision rests on
-  nlohmann::ordered_json plan;            // the round's record (stored when it places cases)
+  int round = 0;                             // the round this decides (SearchGroupWork::rounds)
+  std::string state;                         // the group's state after it
+  nlohmann::ordered_json estimates;          // the crossings the decision rests on
+  nlohmann::ordered_json plan;               // the round's record (stored when it places cases)
   std::vector<StudySubmission::Case> cases;  // the round's cases (none: the group has ended)
-  std::string note;                       // why a group ended in error
+  std::string note;                          // why a group ended in error
 };
 
 struct SearchRoundRecord {
@@ -103,12 +103,12 @@ struct SearchGroupRecord {
 
 struct SubmissionReceipt {
   std::int64_t study_id = 0;
-  bool existing_study = false;   // the same study was submitted before: nothing new was stored
+  bool existing_study = false;  // the same study was submitted before: nothing new was stored
   std::size_t cases = 0;
-  std::size_t new_cases = 0;     // queued now for the first time
-  std::size_t already_done = 0;  // finished for another study: not rerun
-  std::size_t requeued = 0;      // cancelled before, queued again
-  std::size_t recomputed = 0;    // done, but queued again: the data file was lost or damaged (asked for)
+  std::size_t new_cases = 0;        // queued now for the first time
+  std::size_t already_done = 0;     // finished for another study: not rerun
+  std::size_t requeued = 0;         // cancelled before, queued again
+  std::size_t recomputed = 0;       // done, but queued again: the data file was lost or damaged (asked for)
   std::size_t data_files_lost = 0;  // done cases whose data file is missing or damaged (results kept)
 };
 
@@ -147,11 +147,11 @@ struct StudyProgress {
   std::map<std::string, std::size_t> by_status;  // every CaseStatus, zero included
   std::optional<double> first_started_at;
   std::optional<double> last_finished_at;
-  double cases_per_hour = 0.0;                    // finished cases over the time since the first start
-  std::optional<double> seconds_left;             // remaining / rate, when there is a rate
-  std::size_t search_groups = 0;                  // groups of an adaptive search, all states
-  std::size_t searching_groups = 0;               // of which still searching
-  bool complete = false;                          // nothing queued or running, no group searching
+  double cases_per_hour = 0.0;         // finished cases over the time since the first start
+  std::optional<double> seconds_left;  // remaining / rate, when there is a rate
+  std::size_t search_groups = 0;       // groups of an adaptive search, all states
+  std::size_t searching_groups = 0;    // of which still searching
+  bool complete = false;               // nothing queued or running, no group searching
 };
 
 // Versions of what a study's read endpoints show (store_summaries.hpp); both only grow within a
@@ -259,16 +259,16 @@ struct StoredDataFile {
 struct GridPointOutcomes {
   std::string grid_key;
   nlohmann::ordered_json grid_point;
-  std::size_t cases = 0;  // all replicates, whatever their status
+  std::size_t cases = 0;                        // all replicates, whatever their status
   std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
   std::size_t failed = 0;
-  std::size_t finished() const;                 // cases with a result
+  std::size_t finished() const;                       // cases with a result
   std::optional<double> mean_retained_mass_fraction;  // over the results (nullopt: none)
   std::optional<double> mean_damage_ratio;            // over the results that have one
   std::optional<double> mean_energy_per_contact;      // over the results that have one
-  std::size_t fractured_on_wall = 0;        // results whose deposit is in pieces
-  std::size_t small_strain_exceeded = 0;    // results flagged outside the small-strain range
-  std::size_t small_strain_unchecked = 0;   // results without the check (migrated from an older store)
+  std::size_t fractured_on_wall = 0;                  // results whose deposit is in pieces
+  std::size_t small_strain_exceeded = 0;              // results flagged outside the small-strain range
+  std::size_t small_strain_unchecked = 0;             // results without the check (migrated from an older store)
 };
 
 // Count, sum and sum of squares of one result quantity over the results that have it.
@@ -308,7 +308,7 @@ struct FragmentClass {
 };
 struct GridPointFragmentMasses {
   std::string grid_key;
-  std::size_t results = 0;    // determined results
+  std::size_t results = 0;  // determined results
   std::size_t break_ups = 0;
   std::vector<FragmentClass> classes;  // by on_wall, then size
 };

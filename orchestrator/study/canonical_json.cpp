@@ -19,8 +19,7 @@ nlohmann::json canonical_json(const nlohmann::ordered_json& document) {
   if (document.is_number_float()) {
     const double x = document.get<double>();
     constexpr double kExactIntegers = 9007199254740992.0;  // 2^53: every integer below is a double
-    if (std::isfinite(x) && std::floor(x) == x && std::fabs(x) < kExactIntegers)
-      return static_cast<std::int64_t>(x);
+    if (std::isfinite(x) && std::floor(x) == x && std::fabs(x) < kExactIntegers) return static_cast<std::int64_t>(x);
     return x;
   }
   if (document.is_number_unsigned()) return document.get<std::uint64_t>();
@@ -31,6 +30,5 @@ nlohmann::json canonical_json(const nlohmann::ordered_json& document) {
 }
 
 std::string canonical_dump(const nlohmann::ordered_json& document) { return canonical_json(document).dump(); }
-
 
 }  // namespace aerobreak

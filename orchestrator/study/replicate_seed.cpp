@@ -6,7 +6,7 @@
 namespace aerobreak {
 
 std::uint64_t replicate_seed(std::uint64_t study_seed, const std::string& stream, int replicate,
-                            const std::string& sample_key) {
+                             const std::string& sample_key) {
   // A hash rather than a generator advanced r times: seed r does not depend on how many replicates
   // the study has, so adding replicates later keeps the ones already run.
   const auto digest = sha256("aerobreak-seed-v2|" + std::to_string(study_seed) + "|" + stream + "|" +

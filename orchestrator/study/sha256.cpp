@@ -69,7 +69,8 @@ Sha256Digest sha256_of_file(const std::filesystem::path& file) {
     const ssize_t count = ::read(in.descriptor, block.data(), block.size());
     if (count == 0) break;
     if (count < 0 && errno == EINTR) continue;
-    if (count < 0) throw std::runtime_error("cannot read " + file.string() + " to compute its SHA-256: " + std::strerror(errno));
+    if (count < 0)
+      throw std::runtime_error("cannot read " + file.string() + " to compute its SHA-256: " + std::strerror(errno));
     context.add(block.data(), static_cast<std::size_t>(count));
   }
   return context.finish();

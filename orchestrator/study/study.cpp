@@ -75,7 +75,8 @@ void check_primaries(const Json& base, const std::vector<StudyAxis>& axes,
   if (const StudyAxis* axis = axis_setting(axes, kPrimaries)) {
     for (const auto& primaries : axis->values)
       if (too_many(primaries)) {
-        violations.push_back({pointer_child("/axes", axis->name), "asks for " + primaries.dump() + " primaries" + limit_text});
+        violations.push_back(
+            {pointer_child("/axes", axis->name), "asks for " + primaries.dump() + " primaries" + limit_text});
         break;
       }
   } else if (search && search->pointer == kPrimaries) {
@@ -108,8 +109,9 @@ void check_base(const Json& base, const std::vector<StudyAxis>& axes, const std:
                             "it as an axis to choose it)"});
 
   if (!limits.allow_cluster_files) {
-    const std::string refused = "cluster files are not accepted here (the service reads no file a client names): use "
-                                "/cluster/generator";
+    const std::string refused =
+        "cluster files are not accepted here (the service reads no file a client names): use "
+        "/cluster/generator";
     if (has_field(base, kClusterFile)) violations.push_back({"/base" + std::string(kClusterFile), refused});
     for (const auto& field : swept)
       if (covers(field.pointer, kClusterFile) || covers(kClusterFile, field.pointer))
@@ -137,8 +139,9 @@ void read_search(Study& study, const Json& search, std::vector<SchemaViolation>&
   for (const auto& axis : study.axes) pointers.push_back(axis.pointer);
   study.search = read_search_spec(search, pointers, violations);
   if (study.replicates != 1)
-    violations.push_back({"/replicates/count", "must be 1 (the default) in a search: each case of a group draws a "
-                                               "cluster and orientation of its own"});
+    violations.push_back({"/replicates/count",
+                          "must be 1 (the default) in a search: each case of a group draws a "
+                          "cluster and orientation of its own"});
 }
 
 }  // namespace
@@ -148,7 +151,8 @@ const JsonSchema& study_schema() {
     try {
       return JsonSchema(Json::parse(study_schema_text()));
     } catch (const std::exception& e) {
-      throw std::logic_error(std::string("built-in schemas/study.schema.json is not a usable JSON schema: ") + e.what());
+      throw std::logic_error(std::string("built-in schemas/study.schema.json is not a usable JSON schema: ") +
+                             e.what());
     }
   }();
   return schema;

@@ -18,7 +18,7 @@ namespace aerobreak {
 struct StudyLimits {
   std::size_t max_cases = 100000;
   std::size_t max_primaries = 1000000;  // per case (generator primaries)
-  bool allow_cluster_files = true;      // false for studies arriving over HTTP: the server must not read client-named files
+  bool allow_cluster_files = true;  // false for studies arriving over HTTP: the server must not read client-named files
 };
 
 // One swept case field: its name in the study (an alias such as "impact_speed" or the pointer
@@ -60,7 +60,6 @@ struct Study {
   // replicates (or a search's round-0 values) fastest.
   std::vector<StudyCase> cases;
 };
-
 
 // A study that breaks its schema, its rules or the submitter's limits, or expands to an invalid
 // case: every violation, each naming the field by its JSON pointer into the study document.

@@ -118,8 +118,9 @@ StudyAxis read_axis(const std::string& name, const Json& spec, std::vector<Schem
     if (integer)
       for (const auto& v : axis.values)
         if (!v.is_number_integer()) {
-          violations.push_back({where + "/" + kind, "gives " + v.dump() + ", but " + name +
-                                                        " is a count: choose from, to and count so that every value is an integer"});
+          violations.push_back(
+              {where + "/" + kind, "gives " + v.dump() + ", but " + name +
+                                       " is a count: choose from, to and count so that every value is an integer"});
           break;
         }
   }
@@ -211,8 +212,7 @@ bool covers(const std::string& outer, const std::string& inner) {
   return inner == outer || inner.rfind(outer + "/", 0) == 0;
 }
 
-void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations,
-                      bool searching) {
+void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViolation>& violations, bool searching) {
   const std::size_t most = searching ? kMaxAxes - 1 : kMaxAxes;
   if (axes.empty() && !searching) violations.push_back({"/axes", "must name at least 1 axis"});
   if (axes.size() > most)
@@ -233,7 +233,9 @@ void check_axis_names(const nlohmann::ordered_json& axes, std::vector<SchemaViol
     }
     for (const auto& [other, other_pointer] : named)
       if (covers(pointer, other_pointer) || covers(other_pointer, pointer))
-        violations.push_back({where, "sets " + (pointer == other_pointer ? std::string("the same case field as") : std::string("a case field overlapping that of")) +
+        violations.push_back({where, "sets " +
+                                         (pointer == other_pointer ? std::string("the same case field as")
+                                                                   : std::string("a case field overlapping that of")) +
                                          " axis \"" + other + "\" (" + other_pointer + ")"});
     named.emplace_back(name, pointer);
   }

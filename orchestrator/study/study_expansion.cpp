@@ -43,7 +43,8 @@ class CaseViolations {
       out.push_back({e.pointer, e.message + " (" + context + ")"});
     }
     if (entries_.size() > kMaxListed)
-      out.push_back({"/axes", std::to_string(entries_.size() - kMaxListed) + " more distinct violations in other cases"});
+      out.push_back(
+          {"/axes", std::to_string(entries_.size() - kMaxListed) + " more distinct violations in other cases"});
     return out;
   }
 
@@ -60,8 +61,7 @@ class CaseViolations {
 // field, or else the base.
 std::string study_pointer(const Study& study, const std::string& case_pointer) {
   for (const auto& axis : study.axes)
-    if (covers(axis.pointer, case_pointer))
-      return pointer_child("/axes", axis.name);
+    if (covers(axis.pointer, case_pointer)) return pointer_child("/axes", axis.name);
   if (study.search && covers(study.search->pointer, case_pointer)) return "/search/axis";
   return "/base" + case_pointer;
 }
@@ -141,7 +141,8 @@ Json case_document(const Study& study, const Json& grid_point, int replicate, co
   for (const auto& axis : study.axes) fields.emplace_back(axis.name, axis.pointer);
   if (study.search) fields.emplace_back(study.search->axis, study.search->pointer);
   for (const auto& [name, pointer] : fields) {
-    const std::string where_in_study = study.search && name == study.search->axis ? "/search/axis" : pointer_child("/axes", name);
+    const std::string where_in_study =
+        study.search && name == study.search->axis ? "/search/axis" : pointer_child("/axes", name);
     try {
       document[Json::json_pointer(pointer)] = grid_point[name];
     } catch (const nlohmann::json::exception& e) {

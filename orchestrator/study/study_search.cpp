@@ -45,7 +45,8 @@ void check_spec(const BoundarySearchSpec& spec, const std::vector<std::string>& 
   for (std::size_t t = 0; t < spec.targets.size(); ++t)
     for (std::size_t u = 0; u < t; ++u)
       if (spec.targets[t].response == spec.targets[u].response)
-        violations.push_back({"/search/targets/" + std::to_string(t), "repeats the response " + spec.targets[t].response});
+        violations.push_back(
+            {"/search/targets/" + std::to_string(t), "repeats the response " + spec.targets[t].response});
 }
 
 }  // namespace
@@ -79,7 +80,9 @@ std::vector<double> search_candidates(const BoundarySearchSpec& spec) {
   std::vector<double> values(static_cast<std::size_t>(count));
   for (int k = 0; k < count; ++k) {
     const double dose = low + (high - low) * static_cast<double>(k) / static_cast<double>(count - 1);
-    values[static_cast<std::size_t>(k)] = k == 0 ? spec.from : k == count - 1 ? spec.to : six_digits(search_value(spec, dose));
+    values[static_cast<std::size_t>(k)] = k == 0           ? spec.from
+                                          : k == count - 1 ? spec.to
+                                                           : six_digits(search_value(spec, dose));
   }
   return values;
 }

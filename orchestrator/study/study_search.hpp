@@ -18,9 +18,9 @@ struct SearchTarget {
 // chosen adaptively, for every group of the other axes' values, until each crossing's 95 %
 // interval is narrow enough or the group's case budget is spent.
 struct BoundarySearchSpec {
-  std::string axis;      // its name in the study: an alias (impact_speed) or a JSON pointer
-  std::string pointer;   // the case field it sets
-  double from = 0.0;     // the range searched, both ends included
+  std::string axis;     // its name in the study: an alias (impact_speed) or a JSON pointer
+  std::string pointer;  // the case field it sets
+  double from = 0.0;    // the range searched, both ends included
   double to = 0.0;
   bool logarithmic = true;  // the logistic model is in log(value) (scale "log") or in value
   std::vector<SearchTarget> targets;

@@ -6,7 +6,7 @@ nlohmann::ordered_json units_json(const std::string& system) {
   if (system == "physical")
     return {{"system", system}, {"length", "m"}, {"mass", "kg"}, {"time", "s"}, {"speed", "m/s"}, {"energy", "J"}};
   if (system == "reduced")
-    return {{"system", system}, {"length", "d"},     {"mass", "m"},
+    return {{"system", system}, {"length", "d"},    {"mass", "m"},
             {"time", "tau"},    {"speed", "d/tau"}, {"energy", "k_n d^2"}};
   return {{"system", system}, {"length", nullptr}, {"mass", nullptr},
           {"time", nullptr},  {"speed", nullptr},  {"energy", nullptr}};

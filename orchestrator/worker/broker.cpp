@@ -113,8 +113,8 @@ void Broker::give_up_silent_ranks() {
                   "rank %d on %s sent nothing for %.0f s while it ran the case (stopped, or its node lost or cut "
                   "off); the rank gets no more cases",
                   rank, host.c_str(), silent);
-    out_.send(failed_message(slot.case_id, slot.attempt, rank, seconds_between(slot.handed, now), FailureKind::lost,
-                             text));
+    out_.send(
+        failed_message(slot.case_id, slot.attempt, rank, seconds_between(slot.handed, now), FailureKind::lost, text));
   }
 }
 

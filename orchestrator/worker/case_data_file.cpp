@@ -47,8 +47,7 @@ void writing(const std::filesystem::path& path, Step step) {
 
 }  // namespace
 
-CaseDataFile::CaseDataFile(std::filesystem::path path)
-    : path_(std::move(path)), partial_(partial_path_of(path_)) {
+CaseDataFile::CaseDataFile(std::filesystem::path path) : path_(std::move(path)), partial_(partial_path_of(path_)) {
   writing(path_, [this] {
     if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path());
     writer_.emplace(partial_, version());
@@ -69,8 +68,8 @@ void CaseDataFile::record(const Simulation& simulation) {
   }
   // The run does not say which snapshot is its last: keep each until the next replaces it. The
   // fragments cost one pass over the contacts, about as much as the copy of the particles.
-  latest_ = State{simulation.particles(), simulation.step_count(), simulation.time(),
-                  find_fragments(simulation).fragment_of};
+  latest_ =
+      State{simulation.particles(), simulation.step_count(), simulation.time(), find_fragments(simulation).fragment_of};
 }
 
 void CaseDataFile::commit() {

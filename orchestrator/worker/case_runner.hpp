@@ -16,8 +16,8 @@ struct CaseRunOutcome {
   nlohmann::ordered_json result;  // the result document, to_json(ImpactResult)
   std::string data_file;          // the bulk file written; empty when none was asked for
   std::uintmax_t data_file_size = 0;
-  std::string data_file_sha256;   // hex, of the file as written
-  double seconds = 0.0;           // wall-clock of the whole case: parse, preparation, run, bulk file
+  std::string data_file_sha256;  // hex, of the file as written
+  double seconds = 0.0;          // wall-clock of the whole case: parse, preparation, run, bulk file
 };
 
 // Runs one case document (schemas/case.schema.json) in this process: parse_impact_case (relative

@@ -37,8 +37,7 @@ std::optional<TextMessage> try_receive_text(int source, int tag) {
   message.source = status.MPI_SOURCE;
   message.tag = status.MPI_TAG;
   message.text.resize(static_cast<std::size_t>(length));
-  MPI_Recv(message.text.data(), length, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-           MPI_STATUS_IGNORE);
+  MPI_Recv(message.text.data(), length, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
   return message;
 }
 

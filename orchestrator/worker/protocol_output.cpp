@@ -25,9 +25,7 @@ ProtocolOutput::~ProtocolOutput() {
 
 void ProtocolOutput::send(const nlohmann::ordered_json& message) { write_line(protocol_line(message)); }
 
-void ProtocolOutput::send_serialized(std::string_view message) {
-  write_line(protocol_line_from_serialized(message));
-}
+void ProtocolOutput::send_serialized(std::string_view message) { write_line(protocol_line_from_serialized(message)); }
 
 void ProtocolOutput::write_line(std::string_view line) {
   while (!line.empty()) {

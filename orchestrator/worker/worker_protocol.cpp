@@ -20,11 +20,11 @@ template <class J>
 std::int64_t integer_field(const J& message, const char* name, std::int64_t lowest, std::int64_t highest) {
   const auto found = message.find(name);
   if (found == message.end()) throw ProtocolError(std::string("/") + name + ": missing");
-  const bool fits = found->is_number_integer() &&
-                    (found->is_number_unsigned()
-                         ? found->template get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
-                         : found->template get<std::int64_t>() >= lowest &&
-                               found->template get<std::int64_t>() <= highest);
+  const bool fits =
+      found->is_number_integer() &&
+      (found->is_number_unsigned()
+           ? found->template get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
+           : found->template get<std::int64_t>() >= lowest && found->template get<std::int64_t>() <= highest);
   if (!fits)
     throw ProtocolError(std::string("/") + name + ": must be an integer in [" + std::to_string(lowest) + ", " +
                         std::to_string(highest) + "] (got " + excerpt(found->dump()) + ")");
@@ -131,8 +131,12 @@ CaseResult result_from_json(nlohmann::json&& message, std::int64_t case_id, int 
 }
 
 CaseFailed failed_from_json(const nlohmann::json& message, std::int64_t case_id, int attempt) {
-  return {case_id, attempt, rank_field(message), seconds_field(message),
-          failure_kind(string_field(message, "kind")), string_field(message, "error")};
+  return {case_id,
+          attempt,
+          rank_field(message),
+          seconds_field(message),
+          failure_kind(string_field(message, "kind")),
+          string_field(message, "error")};
 }
 
 // The typed message of a JSON object from a job (decode_job_line).
@@ -172,11 +176,16 @@ JobMessage job_message_from_json(nlohmann::json&& message) {
 
 std::string to_string(FailureKind kind) {
   switch (kind) {
-    case FailureKind::invalid: return "invalid";
-    case FailureKind::error: return "error";
-    case FailureKind::wall_time: return "wall_time";
-    case FailureKind::storage: return "storage";
-    case FailureKind::lost: return "lost";
+    case FailureKind::invalid:
+      return "invalid";
+    case FailureKind::error:
+      return "error";
+    case FailureKind::wall_time:
+      return "wall_time";
+    case FailureKind::storage:
+      return "storage";
+    case FailureKind::lost:
+      return "lost";
   }
   return "error";
 }
@@ -221,8 +230,8 @@ OrchestratorMessage decode_orchestrator_line(std::string_view line) {
 }
 
 Json to_json(const CaseAssignment& a) {
-  return Json{{"type", "case"},           {"case", a.case_id},         {"attempt", a.attempt},
-              {"document", a.document},   {"wall_time", a.wall_time},  {"data_file", a.data_file}};
+  return Json{{"type", "case"},         {"case", a.case_id},        {"attempt", a.attempt},
+              {"document", a.document}, {"wall_time", a.wall_time}, {"data_file", a.data_file}};
 }
 
 CaseAssignment assignment_from_json(const Json& message) {
@@ -247,8 +256,9 @@ Json started_message(std::int64_t case_id, int attempt, int rank, const std::str
 
 Json result_message(std::int64_t case_id, int attempt, int rank, double seconds, Json result,
                     const std::string& data_file, std::uintmax_t data_file_size, const std::string& data_file_sha256) {
-  Json message{{"type", "result"},  {"case", case_id},           {"attempt", attempt},  {"rank", rank},
-               {"seconds", seconds}, {"result", std::move(result)}, {"data_file", data_file}};
+  Json message{{"type", "result"},      {"case", case_id},    {"attempt", attempt},
+               {"rank", rank},          {"seconds", seconds}, {"result", std::move(result)},
+               {"data_file", data_file}};
   if (!data_file.empty()) {
     message["data_file_size"] = data_file_size;
     message["data_file_sha256"] = data_file_sha256;
@@ -269,8 +279,8 @@ Json protocol_error_message(const std::string& message) {
 Json heartbeat_message() { return Json{{"type", "heartbeat"}}; }
 
 Json rank_lost_message(int rank, const std::string& host, int ranks_left, double silent_seconds) {
-  return Json{{"type", "rank_lost"}, {"rank", rank}, {"host", host}, {"ranks", ranks_left},
-              {"silent_seconds", silent_seconds}};
+  return Json{
+      {"type", "rank_lost"}, {"rank", rank}, {"host", host}, {"ranks", ranks_left}, {"silent_seconds", silent_seconds}};
 }
 
 Json to_json(const StopRequest&) { return Json{{"type", "stop"}}; }

@@ -128,10 +128,10 @@ struct CaseResult {
   int attempt = 0;
   int rank = 0;
   double seconds = 0.0;
-  nlohmann::json result;               // schemas/result.schema.json
-  std::string data_file;               // the HDF5 bulk file written; empty: none
-  std::int64_t data_file_size = -1;    // bytes; -1: not given (no data file)
-  std::string data_file_sha256;        // empty: not given
+  nlohmann::json result;             // schemas/result.schema.json
+  std::string data_file;             // the HDF5 bulk file written; empty: none
+  std::int64_t data_file_size = -1;  // bytes; -1: not given (no data file)
+  std::string data_file_sha256;      // empty: not given
 };
 
 struct CaseFailed {

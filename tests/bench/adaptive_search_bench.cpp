@@ -62,10 +62,12 @@ Summary summarise(std::vector<int> cases) {
 int main(int argc, char** argv) {
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 100;
   const SyntheticLaw law;
-  std::printf("synthetic law: P(break-up) = L((ln v - ln %.3g) / %.3g); search range %.3g-%.3g d/tau, "
-              "%d repetitions\n\n", law.break_up_speed, law.spread, 0.005, 0.3, repetitions);
-  std::printf("%-14s %-26s %-30s %-10s\n", "relative width", "adaptive: mean (median) n", "best uniform grid: mean (median) n",
-              "ratio");
+  std::printf(
+      "synthetic law: P(break-up) = L((ln v - ln %.3g) / %.3g); search range %.3g-%.3g d/tau, "
+      "%d repetitions\n\n",
+      law.break_up_speed, law.spread, 0.005, 0.3, repetitions);
+  std::printf("%-14s %-26s %-30s %-10s\n", "relative width", "adaptive: mean (median) n",
+              "best uniform grid: mean (median) n", "ratio");
   for (const double width : {0.5, 0.3, 0.2}) {
     const auto spec = speed_search(width, 5000);
     std::vector<int> adaptive;
@@ -78,14 +80,16 @@ int main(int argc, char** argv) {
     int best_points = 0;
     for (const int points : {6, 8, 12, 16, 24, 32}) {
       std::vector<int> grid;
-      for (int r = 0; r < repetitions; ++r) grid.push_back(grid_cases(spec, points, 9000 + static_cast<std::uint64_t>(r), 400));
+      for (int r = 0; r < repetitions; ++r)
+        grid.push_back(grid_cases(spec, points, 9000 + static_cast<std::uint64_t>(r), 400));
       const Summary g = summarise(grid);
-      std::printf("  grid of %2d speeds, width %.2f: mean %.0f, median %.0f cases (%d of %d reached it)\n", points, width,
-                  g.mean, g.median, g.reached, repetitions);
+      std::printf("  grid of %2d speeds, width %.2f: mean %.0f, median %.0f cases (%d of %d reached it)\n", points,
+                  width, g.mean, g.median, g.reached, repetitions);
       if (g.reached == repetitions && (best_points == 0 || g.mean < best.mean)) best = g, best_points = points;
     }
-    std::printf("%-14.2f %6.0f (%4.0f) %3d/%-3d        %2d speeds: %6.0f (%4.0f)           %.2f\n\n", width, a.mean, a.median,
-                a.reached, repetitions, best_points, best.mean, best.median, best.mean > 0 ? a.mean / best.mean : 0.0);
+    std::printf("%-14.2f %6.0f (%4.0f) %3d/%-3d        %2d speeds: %6.0f (%4.0f)           %.2f\n\n", width, a.mean,
+                a.median, a.reached, repetitions, best_points, best.mean, best.median,
+                best.mean > 0 ? a.mean / best.mean : 0.0);
   }
   return 0;
 }

@@ -36,13 +36,18 @@ CaseOutcome draw_case(std::size_t point, double speed, double primaries, double 
   c.grid_point = point;
   c.primaries = static_cast<std::int64_t>(primaries);
   const double u = uniform();
-  c.outcome = u < law.probability(speed) ? Outcome::break_up : u < law.probability(speed) + 0.03 ? Outcome::bounce : Outcome::stick;
+  c.outcome = u < law.probability(speed)          ? Outcome::break_up
+              : u < law.probability(speed) + 0.03 ? Outcome::bounce
+                                                  : Outcome::stick;
   c.energy_per_contact = 3.0 * std::pow(speed / v50, 2.0) * (0.8 + 0.4 * uniform());
-  c.retained_mass_fraction = c.outcome == Outcome::stick ? 1.0 : c.outcome == Outcome::bounce ? 0.0 : 0.2 + 0.6 * uniform();
+  c.retained_mass_fraction = c.outcome == Outcome::stick    ? 1.0
+                             : c.outcome == Outcome::bounce ? 0.0
+                                                            : 0.2 + 0.6 * uniform();
   c.damage_ratio = 0.1 * uniform();
   c.small_strain_exceeded = speed > 4.0 * v50;
   if (c.outcome == Outcome::break_up)
-    for (int k = 0; k < 6; ++k) c.reentrained_sizes.push_back(1 + static_cast<std::int64_t>(std::pow(uniform(), -0.8)) % 20);
+    for (int k = 0; k < 6; ++k)
+      c.reentrained_sizes.push_back(1 + static_cast<std::int64_t>(std::pow(uniform(), -0.8)) % 20);
   return c;
 }
 
@@ -78,9 +83,10 @@ void time_fitting(const CaseOutcomeTable& table) {
     fits = set.logistic.size() + set.multinomial.size() + set.scaling.size() + set.retained_fraction.size() +
            set.fragment_sizes.size();
   }
-  std::printf("compute_correlations: %zu results, %zu grid points, %zu fits: %.3f s wall, %.3f s CPU on %u threads "
-              "(best of 3)\n", table.cases.size(), table.grid_points.size(), fits, best, best_cpu,
-              std::thread::hardware_concurrency());
+  std::printf(
+      "compute_correlations: %zu results, %zu grid points, %zu fits: %.3f s wall, %.3f s CPU on %u threads "
+      "(best of 3)\n",
+      table.cases.size(), table.grid_points.size(), fits, best, best_cpu, std::thread::hardware_concurrency());
 }
 
 StudySubmission submission_of(const CaseOutcomeTable& table) {
@@ -88,8 +94,10 @@ StudySubmission submission_of(const CaseOutcomeTable& table) {
   study.hash = "correlation-bench";
   study.name = "correlation bench";
   study.document = {{"name", study.name},
-                    {"axes", {{"impact_speed", {{"values", kSpeeds}}}, {"primaries", {{"values", kPrimaries}}},
-                              {"gamma_over_kn", {{"values", kGammas}}}}}};
+                    {"axes",
+                     {{"impact_speed", {{"values", kSpeeds}}},
+                      {"primaries", {{"values", kPrimaries}}},
+                      {"gamma_over_kn", {{"values", kGammas}}}}}};
   for (std::size_t i = 0; i < table.cases.size(); ++i) {
     StudySubmission::Case c;
     c.grid_point = table.grid_points[table.cases[i].grid_point];
@@ -115,12 +123,13 @@ void write_results(const std::filesystem::path& file, const CaseOutcomeTable& ta
     const CaseOutcome& c = table.cases[i];
     const auto id = static_cast<std::int64_t>(i + 1);
     result.reset();
-    result.bind_all(id, std::string(to_string(c.outcome)), *c.retained_mass_fraction, *c.damage_ratio, *c.energy_per_contact,
-                    static_cast<std::int64_t>(c.small_strain_exceeded));
+    result.bind_all(id, std::string(to_string(c.outcome)), *c.retained_mass_fraction, *c.damage_ratio,
+                    *c.energy_per_contact, static_cast<std::int64_t>(c.small_strain_exceeded));
     result.run();
     for (std::size_t k = 0; k < c.reentrained_sizes.size(); ++k) {
       fragment.reset();
-      fragment.bind_all(id, static_cast<std::int64_t>(k), c.reentrained_sizes[k], static_cast<double>(c.reentrained_sizes[k]));
+      fragment.bind_all(id, static_cast<std::int64_t>(k), c.reentrained_sizes[k],
+                        static_cast<double>(c.reentrained_sizes[k]));
       fragment.run();
     }
   }
@@ -143,9 +152,10 @@ int bench_store(const CaseOutcomeTable& table, const std::filesystem::path& file
   const double cold = seconds_since(start);
   start = std::chrono::steady_clock::now();
   cache.current(study, ask);
-  std::printf("store %s: first request (read, hash, fit, store) %.3f s, of which fitting %.3f s; "
-              "second request (from the store) %.2f ms; summary %zu bytes\n",
-              file.c_str(), cold, first->fit_seconds, 1e3 * seconds_since(start), first->summary.size());
+  std::printf(
+      "store %s: first request (read, hash, fit, store) %.3f s, of which fitting %.3f s; "
+      "second request (from the store) %.2f ms; summary %zu bytes\n",
+      file.c_str(), cold, first->fit_seconds, 1e3 * seconds_since(start), first->summary.size());
   return 0;
 }
 

@@ -43,7 +43,8 @@ aerobreak::StudySubmission synthetic_study() {
     for (const auto& n : axes["primaries"])
       for (const auto& gamma : axes["gamma_over_kn"])
         for (const auto& friction : axes["/model/friction"]) {
-          const Json point{{"impact_speed", speed}, {"primaries", n}, {"gamma_over_kn", gamma}, {"/model/friction", friction}};
+          const Json point{
+              {"impact_speed", speed}, {"primaries", n}, {"gamma_over_kn", gamma}, {"/model/friction", friction}};
           for (int r = 0; r < kReplicates; ++r) {
             const std::string hash = point.dump() + "#" + std::to_string(r);
             study.cases.push_back({hash, Json{{"synthetic", hash}}, point, point.dump(), r});
@@ -90,7 +91,8 @@ OutcomeColumns outcome_columns(const Json& point, const Draw& draw, std::mt19937
   const double speed = point["impact_speed"];
   const std::int64_t contacts = n - 1 + n / 4;
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const double broken = double(draw.fragments.size() - 1) + (draw.outcome == "break-up" ? uniform(random) * n / 8 : 0.0);
+  const double broken =
+      double(draw.fragments.size() - 1) + (draw.outcome == "break-up" ? uniform(random) * n / 8 : 0.0);
   return {contacts, 0.5 * n * speed * speed / (double(contacts) * 1e-4), std::min(1.0, broken / double(contacts)),
           draw.outcome == "stick" && speed > draw.v50 / 2 && uniform(random) < 0.2 ? 1 : 0,
           speed > 0.1 && uniform(random) < 0.5 ? 1 : 0};
@@ -100,7 +102,8 @@ void write_results(SqliteDatabase& db, std::size_t document_bytes) {
   std::mt19937_64 random(2026);
   std::normal_distribution<double> normal(0.0, 1.0);
   const std::string document = Json{{"synthetic", true}, {"padding", std::string(document_bytes, 'x')}}.dump();
-  auto cases = db.prepare("SELECT c.id, sc.grid_point FROM study_cases sc JOIN cases c ON c.id = sc.case_id ORDER BY sc.position");
+  auto cases = db.prepare(
+      "SELECT c.id, sc.grid_point FROM study_cases sc JOIN cases c ON c.id = sc.case_id ORDER BY sc.position");
   auto result = db.prepare(
       "INSERT INTO results (case_id, attempt, outcome, restitution, largest_fragment_share, fragment_count, "
       "retained_mass_fraction, reentrained_mass_fraction, impact_energy, wall_clock_seconds, data_file, document, "
@@ -115,7 +118,9 @@ void write_results(SqliteDatabase& db, std::size_t document_bytes) {
     const auto point = Json::parse(cases.text(1));
     const auto draw = draw_outcome(point, random);
     const int n = point["primaries"];
-    const double on_wall = draw.outcome == "stick" ? 1.0 : draw.outcome == "bounce" ? 0.0 : double(draw.fragments[0]) / n;
+    const double on_wall = draw.outcome == "stick"    ? 1.0
+                           : draw.outcome == "bounce" ? 0.0
+                                                      : double(draw.fragments[0]) / n;
     const auto columns = outcome_columns(point, draw, random);
     result.reset();
     result.bind_all(id, draw.outcome, 0.1 * normal(random) + (draw.outcome == "bounce" ? 0.3 : 0.0),

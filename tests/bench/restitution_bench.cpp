@@ -75,9 +75,10 @@ int main() {
     }
   std::printf("worst restitution error: adaptive %.3f %%, one step per run %.3f %% (the tests ask for 1 %%)\n",
               100.0 * worst[0], 100.0 * worst[1]);
-  std::printf("sticking speed within 1 %% (0.99 v_stick sticks, 1.01 leaves, 8 places each): adaptive %s, one step "
-              "per run %s\n",
-              sticking[0] ? "yes" : "NO", sticking[1] ? "yes" : "NO");
+  std::printf(
+      "sticking speed within 1 %% (0.99 v_stick sticks, 1.01 leaves, 8 places each): adaptive %s, one step "
+      "per run %s\n",
+      sticking[0] ? "yes" : "NO", sticking[1] ? "yes" : "NO");
   std::printf("CPU seconds of the restitution runs: adaptive %.2f, one step per run %.2f\n", cpu[0], cpu[1]);
   return 0;
 }

@@ -102,11 +102,16 @@ std::string file_system_of(const std::filesystem::path& directory) {
   struct statfs info {};
   if (statfs(directory.c_str(), &info) != 0) return "?";
   switch (info.f_type) {
-    case 0xEF53: return "ext4";
-    case 0x01021994: return "tmpfs";
-    case 0x794c7630: return "overlayfs";
-    case 0x58465342: return "xfs";
-    case 0x9123683E: return "btrfs";
+    case 0xEF53:
+      return "ext4";
+    case 0x01021994:
+      return "tmpfs";
+    case 0x794c7630:
+      return "overlayfs";
+    case 0x58465342:
+      return "xfs";
+    case 0x9123683E:
+      return "btrfs";
     default: {
       char hex[32];
       std::snprintf(hex, sizeof hex, "type 0x%lx", static_cast<unsigned long>(info.f_type));
@@ -134,8 +139,8 @@ int main(int argc, char** argv) {
   std::printf("store in %s (%s); result documents of %ju bytes (a real case's); synthetic cases of %g s\n",
               directory.c_str(), file_system_of(directory).c_str(), std::filesystem::file_size(result), delay);
   std::printf("%6s | %26s | cases of %g s\n", "", "saturation (cases at once)", delay);
-  std::printf("%6s | %6s %9s %9s | %6s %7s %7s %12s %10s\n", "ranks", "cases", "commits/s", "CPU ms", "cases",
-              "wall s", "ideal s", "lost ms/case", "efficiency");
+  std::printf("%6s | %6s %9s %9s | %6s %7s %7s %12s %10s\n", "ranks", "cases", "commits/s", "CPU ms", "cases", "wall s",
+              "ideal s", "lost ms/case", "efficiency");
   for (const int ranks : {1, 16, 64, 256}) {
     const Measurement saturated = run_study(directory, worker, ranks, 0.0, 3000);
     const Measurement timed = run_study(directory, worker, ranks, delay, std::max(20, 8 * ranks));

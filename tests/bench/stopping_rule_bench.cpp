@@ -92,7 +92,9 @@ std::vector<std::pair<std::string, Rule>> rules() {
     };
   };
   const auto with_at_least = [](int cases) {
-    return [cases](const std::vector<Decision>& t, std::size_t k, double w) { return narrow(t[k], w) && t[k].cases >= cases; };
+    return [cases](const std::vector<Decision>& t, std::size_t k, double w) {
+      return narrow(t[k], w) && t[k].cases >= cases;
+    };
   };
   const auto after_overlap = [](int cases) {
     return [cases](const std::vector<Decision>& t, std::size_t k, double w) {
@@ -134,8 +136,8 @@ void report(const std::vector<std::vector<Decision>>& trajectories, double width
         }
     const double rate = stopped ? static_cast<double>(covered) / stopped : 0.0;
     std::printf("  %-38s %4d of %4d stopped, covered %5.1f %% (SE %.1f %%), mean cases %5.1f\n", name.c_str(), stopped,
-                static_cast<int>(trajectories.size()), 100.0 * rate, 100.0 * std::sqrt(0.95 * 0.05 / std::max(stopped, 1)),
-                stopped ? cases / stopped : 0.0);
+                static_cast<int>(trajectories.size()), 100.0 * rate,
+                100.0 * std::sqrt(0.95 * 0.05 / std::max(stopped, 1)), stopped ? cases / stopped : 0.0);
   }
 }
 
@@ -148,7 +150,8 @@ int main(int argc, char** argv) {
   std::vector<std::vector<Decision>> trajectories;
   for (int s = 0; s < searches; ++s) trajectories.push_back(trajectory(spec, 1000 + static_cast<std::uint64_t>(s)));
   const double truth = SyntheticLaw{}.crossing("break-up", 0.5);
-  std::printf("%d seeded searches for v50 = %.3g on the synthetic law, %d cases each at most\n\n", searches, truth, budget);
+  std::printf("%d seeded searches for v50 = %.3g on the synthetic law, %d cases each at most\n\n", searches, truth,
+              budget);
   for (const double width : {0.5, 0.3, 0.2}) report(trajectories, width, truth);
   return 0;
 }

@@ -145,11 +145,12 @@ int main(int argc, char** argv) {
     cpu_early += first.cpu_seconds;
     cpu_quiet += last.cpu_seconds;
   }
-  std::printf("summary: %d seeds, %d without a verdict by the time limit, %d settled first by another rule than "
-              "quiet, %d compared with the state at the time limit (the quiet rule never settled); %d "
-              "differ from the quiet rule's outcome (class, retained, fragments, largest); largest restitution "
-              "difference %.3g; CPU s to the first verdict %.2f, to the quiet rule's (or the limit) %.2f\n",
-              last_seed - first_seed + 1, no_verdict, early_seeds, against_limit, differ, worst_restitution, cpu_early,
-              cpu_quiet);
+  std::printf(
+      "summary: %d seeds, %d without a verdict by the time limit, %d settled first by another rule than "
+      "quiet, %d compared with the state at the time limit (the quiet rule never settled); %d "
+      "differ from the quiet rule's outcome (class, retained, fragments, largest); largest restitution "
+      "difference %.3g; CPU s to the first verdict %.2f, to the quiet rule's (or the limit) %.2f\n",
+      last_seed - first_seed + 1, no_verdict, early_seeds, against_limit, differ, worst_restitution, cpu_early,
+      cpu_quiet);
   return 0;
 }

@@ -40,8 +40,8 @@ TEST_CASE("aerobreak bench prints particle-steps per second and the share of ste
   // the CPU time of the stepping is never more than its wall-clock time (one thread)
   CHECK(std::stod(small[10]) <= std::stod(small[4]) * 1.01 + 0.002);
   CHECK(std::stod(large[11]) > 0.0);
-  CHECK(small[9] == "0%");   // below --wavefront-from: one step at a time
-  CHECK(large[9] != "0%");   // from it on: in wavefronts
+  CHECK(small[9] == "0%");  // below --wavefront-from: one step at a time
+  CHECK(large[9] != "0%");  // from it on: in wavefronts
   CHECK(std::stoi(large[2]) == 40);
 }
 
@@ -54,8 +54,9 @@ TEST_CASE("aerobreak bench's header names the model the options set") {
                                 " bench --sizes 64 --steps 2 --damping 0 --no-rolling --no-twisting --separation force"
                                 " --no-wall-adhesion");
   REQUIRE(bare.exit_code == 0);
-  CHECK_THAT(bare.text, Catch::Contains("JKR (force rule) + no damping + Mindlin (mu = 0.5) + no rolling + no twisting; "
-                                        "non-adhesive wall"));
+  CHECK_THAT(bare.text,
+             Catch::Contains("JKR (force rule) + no damping + Mindlin (mu = 0.5) + no rolling + no twisting; "
+                             "non-adhesive wall"));
 }
 
 TEST_CASE("aerobreak bench refuses a wavefront depth below 1") {

@@ -82,8 +82,8 @@ TEST_CASE("cluster generate stores relaxed clusters that analyze reports as a ta
     CHECK(cluster.at("component_count") == 1);
     CHECK(cluster.at("relaxed") == true);
     CHECK(cluster.at("generator") == "ballistic");
-    for (const char* key : {"name", "radius_of_gyration", "maximum_extent", "contact_count",
-                            "mean_coordination_number", "filling_factor", "porosity", "mass_radius_dimension"})
+    for (const char* key : {"name", "radius_of_gyration", "maximum_extent", "contact_count", "mean_coordination_number",
+                            "filling_factor", "porosity", "mass_radius_dimension"})
       CHECK(cluster.contains(key));
     CHECK(cluster.at("radius_of_gyration").get<double>() > 1.0);
   }
@@ -183,8 +183,8 @@ TEST_CASE("cluster convert turns a library entry into XYZ and back without chang
   REQUIRE(run_aerobreak("cluster convert " + back + " " + again + " --name one").exit_code == 0);
   CHECK(file_bytes(again) == file_bytes(xyz));
 
-  const nlohmann::json original =
-      nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json --name ballistic-N32-seed5-1 " + library).text);
+  const nlohmann::json original = nlohmann::json::parse(
+      run_aerobreak_stdout("cluster analyze --json --name ballistic-N32-seed5-1 " + library).text);
   const nlohmann::json converted = nlohmann::json::parse(run_aerobreak_stdout("cluster analyze --json " + xyz).text);
   CHECK(converted.at("clusters")[0].at("radius_of_gyration") == original.at("clusters")[0].at("radius_of_gyration"));
   CHECK(converted.at("clusters")[0].at("name") == "one");

@@ -125,8 +125,8 @@ TEST_CASE("a truncated cluster library is an invalid case naming the file, not a
     const CommandOutput impact = run_aerobreak("impact " + options + case_file.string());
     INFO(impact.text);
     CHECK(impact.exit_code == 2);  // an invalid case (README, "Exit status")
-    CHECK_THAT(impact.text, Catch::Contains("/cluster/file/path") && Catch::Contains(library) &&
-                                Catch::Contains("truncated file"));
+    CHECK_THAT(impact.text,
+               Catch::Contains("/cluster/file/path") && Catch::Contains(library) && Catch::Contains("truncated file"));
   }
 }
 

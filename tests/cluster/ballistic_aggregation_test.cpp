@@ -41,8 +41,7 @@ TEST_CASE("BCCA with lognormal radii is connected, touching and overlap-free") {
   for (std::size_t n : {2, 3, 7, 64, 100, 500}) {
     INFO("N = " << n);
     const Cluster c = ballistic_cluster_cluster_aggregation(
-        {.primary_count = n, .geometric_mean_diameter = 2.0, .geometric_standard_deviation = 1.6},
-        7 * n);
+        {.primary_count = n, .geometric_mean_diameter = 2.0, .geometric_standard_deviation = 1.6}, 7 * n);
     require_one_rigid_touching_cluster(c, n);
   }
 }
@@ -52,8 +51,7 @@ TEST_CASE("BCCA lognormal diameters have the requested geometric mean and deviat
   const double sigma_g = 1.5;
   const std::size_t n = 4000;
   const Cluster c = ballistic_cluster_cluster_aggregation(
-      {.primary_count = n, .geometric_mean_diameter = dg, .geometric_standard_deviation = sigma_g},
-      2024);
+      {.primary_count = n, .geometric_mean_diameter = dg, .geometric_standard_deviation = sigma_g}, 2024);
   double mean_log = 0.0;
   for (double r : c.radius) mean_log += std::log(2.0 * r);
   mean_log /= n;
@@ -78,14 +76,10 @@ TEST_CASE("BCCA is reproducible bit for bit from its seed") {
 
 TEST_CASE("BCCA rejects bad parameters, naming them") {
   using Catch::Contains;
-  const auto run = [](BallisticAggregationParameters p) {
-    return ballistic_cluster_cluster_aggregation(p, 1);
-  };
+  const auto run = [](BallisticAggregationParameters p) { return ballistic_cluster_cluster_aggregation(p, 1); };
   REQUIRE_THROWS_WITH(run({.primary_count = 0}), Contains("primary_count"));
-  REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_mean_diameter = 0.0}),
-                      Contains("geometric_mean_diameter"));
-  REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_mean_diameter = -1.0}),
-                      Contains("geometric_mean_diameter"));
+  REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_mean_diameter = 0.0}), Contains("geometric_mean_diameter"));
+  REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_mean_diameter = -1.0}), Contains("geometric_mean_diameter"));
   REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_mean_diameter = std::nan("")}),
                       Contains("geometric_mean_diameter"));
   REQUIRE_THROWS_WITH(run({.primary_count = 4, .geometric_standard_deviation = 0.9}),

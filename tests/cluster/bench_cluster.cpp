@@ -37,15 +37,14 @@ int main(int argc, char** argv) {
   // Tunable (FracVAL) aggregation, monodisperse, at a low and a high fractal dimension; each size
   // repeated until at least a second has been spent.
   for (const auto& [df, kf] : {std::pair{1.8, 1.3}, std::pair{2.6, 1.0}}) {
-    std::printf("\nTunable (FracVAL), Df = %.1f, kf = %.1f\n%8s %10s %16s %18s\n", df, kf, "N",
-                "clusters", "clusters/s", "seconds/cluster");
+    std::printf("\nTunable (FracVAL), Df = %.1f, kf = %.1f\n%8s %10s %16s %18s\n", df, kf, "N", "clusters",
+                "clusters/s", "seconds/cluster");
     for (std::size_t n : {256, 1024, 4096}) {
       int clusters = 0;
       const auto start = clock::now();
       double elapsed = 0.0;
       while (elapsed < 1.0 || clusters < 3) {
-        aerobreak::tunable_cluster_aggregation(
-            {.primary_count = n, .fractal_dimension = df, .prefactor = kf}, seed++);
+        aerobreak::tunable_cluster_aggregation({.primary_count = n, .fractal_dimension = df, .prefactor = kf}, seed++);
         ++clusters;
         elapsed = std::chrono::duration<double>(clock::now() - start).count();
       }
@@ -57,7 +56,8 @@ int main(int argc, char** argv) {
   // cluster per size; the time varies several-fold with the seed (the last clusters meet after an
   // exponentially distributed wait). Sizes from the command line (default 256 1024 4096).
   std::printf("\nDLCA (engine/growth, sintered, defaults: volume fraction %.3g, rigid far field)\n%8s %10s %16s %18s\n",
-              aerobreak::DiffusionLimitedParameters{}.volume_fraction, "N", "clusters", "clusters/s", "seconds/cluster");
+              aerobreak::DiffusionLimitedParameters{}.volume_fraction, "N", "clusters", "clusters/s",
+              "seconds/cluster");
   for (std::size_t n : dlca_sizes) {
     aerobreak::DiffusionLimitedParameters p;
     p.primary_count = n;

@@ -97,9 +97,7 @@ TEST_CASE("A chain has n - 1 contacts, extent n d and splits where a gap opens")
 }
 
 TEST_CASE("Contacts follow the relative tolerance and count deeper overlaps") {
-  const auto pair_at = [](double distance) {
-    return Cluster{{Vec3{}, Vec3{distance, 0.0, 0.0}}, {0.5, 0.5}};
-  };
+  const auto pair_at = [](double distance) { return Cluster{{Vec3{}, Vec3{distance, 0.0, 0.0}}, {0.5, 0.5}}; };
   CHECK(find_contacts(pair_at(1.0 + 0.9e-3)).contacts.size() == 1);
   CHECK(find_contacts(pair_at(1.0 + 1.1e-3)).contacts.empty());
   CHECK(find_contacts(pair_at(1.0 - 0.9e-3)).deep_overlap_count == 0);
@@ -111,8 +109,8 @@ TEST_CASE("Contacts follow the relative tolerance and count deeper overlaps") {
 }
 
 TEST_CASE("Contact search matches brute force on a polydisperse BCCA cluster") {
-  const Cluster c = ballistic_cluster_cluster_aggregation(
-      {.primary_count = 400, .geometric_standard_deviation = 1.8}, 99);
+  const Cluster c =
+      ballistic_cluster_cluster_aggregation({.primary_count = 400, .geometric_standard_deviation = 1.8}, 99);
   const double tol = 0.05;
   std::vector<std::pair<std::size_t, std::size_t>> expected;
   for (std::size_t i = 0; i < c.size(); ++i) {
@@ -135,8 +133,8 @@ TEST_CASE("Centre of mass and Rg weight primaries by r^3") {
 
 TEST_CASE("Maximum extent equals the brute-force pair maximum on BCCA clusters") {
   for (double sigma_g : {1.0, 2.0}) {
-    const Cluster c = ballistic_cluster_cluster_aggregation(
-        {.primary_count = 700, .geometric_standard_deviation = sigma_g}, 5);
+    const Cluster c =
+        ballistic_cluster_cluster_aggregation({.primary_count = 700, .geometric_standard_deviation = sigma_g}, 5);
     CHECK(maximum_extent(c) == Approx(brute_force_extent(c)).epsilon(1e-14));
   }
 }

@@ -61,6 +61,5 @@ TEST_CASE("Fits reject unusable input") {
   CHECK_THROWS_AS(fit_fractal_scaling(one_n, 0.5), std::invalid_argument);
   const std::vector<SizeRadiusSample> flat{{10.0, 2.0}, {20.0, 2.0}, {40.0, 2.0}};
   CHECK_THROWS_AS(fit_fractal_scaling(flat, 0.5), std::invalid_argument);
-  CHECK_THROWS_AS(fit_line(std::vector<double>{1.0, 2.0}, std::vector<double>{1.0, 2.0}),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(fit_line(std::vector<double>{1.0, 2.0}, std::vector<double>{1.0, 2.0}), std::invalid_argument);
 }

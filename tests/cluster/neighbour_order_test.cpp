@@ -31,7 +31,8 @@ Cluster shuffled(const Cluster& c, std::uint64_t seed) {
 
 std::vector<std::tuple<double, double, double, double>> sorted_primaries(const Cluster& c) {
   std::vector<std::tuple<double, double, double, double>> p;
-  for (std::size_t i = 0; i < c.size(); ++i) p.emplace_back(c.position[i].x, c.position[i].y, c.position[i].z, c.radius[i]);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    p.emplace_back(c.position[i].x, c.position[i].y, c.position[i].z, c.radius[i]);
   std::sort(p.begin(), p.end());
   return p;
 }

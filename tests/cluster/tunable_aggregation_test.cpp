@@ -52,8 +52,7 @@ double closest_approach(const Cluster& c) {
   double closest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < c.size(); ++i) {
     for (std::size_t j = i + 1; j < c.size(); ++j) {
-      closest =
-          std::min(closest, norm(c.position[i] - c.position[j]) / (c.radius[i] + c.radius[j]));
+      closest = std::min(closest, norm(c.position[i] - c.position[j]) / (c.radius[i] + c.radius[j]));
     }
   }
   return closest;
@@ -82,15 +81,12 @@ TEST_CASE("Tunable clusters have the scaling law's Rg, no overlaps and one compo
   std::uint64_t seed = 11;
   for (const Request& q : requests) {
     for (double sigma : {1.0, 1.25}) {
-      const TunableAggregationParameters p{.primary_count = 256,
-                                           .fractal_dimension = q.df,
-                                           .prefactor = q.kf,
-                                           .geometric_standard_deviation = sigma};
+      const TunableAggregationParameters p{
+          .primary_count = 256, .fractal_dimension = q.df, .prefactor = q.kf, .geometric_standard_deviation = sigma};
       const Cluster c = tunable_cluster_aggregation(p, seed++);
       INFO("Df = " << q.df << ", kf = " << q.kf << ", sigma_g = " << sigma);
       REQUIRE(c.size() == 256);
-      CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, q.df, q.kf) ==
-            Approx(1.0).margin(1e-9));
+      CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, q.df, q.kf) == Approx(1.0).margin(1e-9));
       CHECK(gyration_radius(c, GyrationConvention::solid_spheres) ==
             Approx(solid_sphere_gyration_radius(c)).epsilon(1e-12));
       CHECK(closest_approach(c) >= 1.0 - 1e-9);
@@ -104,11 +100,10 @@ TEST_CASE("Every size from 3 to 40 primaries lands on the law") {
   // Sizes up to 32 are grown monomer by monomer (the particle-cluster stage alone), so each is an
   // intermediate aggregate of the others' growth; 33 to 40 add one cluster-cluster join.
   for (std::size_t n = 3; n <= 40; ++n) {
-    const Cluster c = tunable_cluster_aggregation(
-        {.primary_count = n, .fractal_dimension = 1.8, .prefactor = 1.3}, 100 + n);
+    const Cluster c =
+        tunable_cluster_aggregation({.primary_count = n, .fractal_dimension = 1.8, .prefactor = 1.3}, 100 + n);
     INFO("N = " << n);
-    CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, 1.8, 1.3) ==
-          Approx(1.0).margin(1e-9));
+    CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, 1.8, 1.3) == Approx(1.0).margin(1e-9));
     CHECK(closest_approach(c) >= 1.0 - 1e-9);
     CHECK(component_count(c) == 1);
   }
@@ -126,10 +121,8 @@ TEST_CASE("The point-mass convention matches cluster_analysis's radius of gyrati
 }
 
 TEST_CASE("A 4096-primary cluster stays exact") {
-  const Cluster c = tunable_cluster_aggregation(
-      {.primary_count = 4096, .fractal_dimension = 1.8, .prefactor = 1.3}, 2);
-  CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, 1.8, 1.3) ==
-        Approx(1.0).margin(1e-9));
+  const Cluster c = tunable_cluster_aggregation({.primary_count = 4096, .fractal_dimension = 1.8, .prefactor = 1.3}, 2);
+  CHECK(solid_sphere_gyration_radius(c) / law_gyration_radius(c, 1.8, 1.3) == Approx(1.0).margin(1e-9));
   const ContactGraph graph = find_contacts(c, 1e-9);
   CHECK(graph.deep_overlap_count == 0);
   CHECK(connected_component_sizes(c.size(), graph.contacts).size() == 1);
@@ -144,14 +137,14 @@ TEST_CASE("Ensemble fits of Df recover the request") {
       std::uint64_t seed = 300;
       for (std::size_t n : {32, 64, 128, 256, 512, 1024}) {
         for (int replicate = 0; replicate < 2; ++replicate) {
-          const Cluster c = tunable_cluster_aggregation(
-              {.primary_count = n, .fractal_dimension = q.df, .prefactor = q.kf}, seed++);
+          const Cluster c =
+              tunable_cluster_aggregation({.primary_count = n, .fractal_dimension = q.df, .prefactor = q.kf}, seed++);
           samples.push_back({static_cast<double>(n), solid_sphere_gyration_radius(c)});
         }
       }
       const FractalScalingFit fit = fit_fractal_scaling(samples, 0.5);
-      INFO("Df = " << q.df << ": fit " << fit.fractal_dimension << " +- "
-                   << fit.fractal_dimension_standard_error << ", kf " << fit.prefactor);
+      INFO("Df = " << q.df << ": fit " << fit.fractal_dimension << " +- " << fit.fractal_dimension_standard_error
+                   << ", kf " << fit.prefactor);
       CHECK(fit.fractal_dimension_standard_error < 1e-9);
       CHECK(fit.fractal_dimension == Approx(q.df).margin(1e-9));
       CHECK(fit.prefactor == Approx(q.kf).epsilon(1e-9));
@@ -171,11 +164,9 @@ TEST_CASE("Ensemble fits of Df recover the request") {
     std::uint64_t seed = 700;
     for (std::size_t n : {32, 64, 128, 256, 512, 1024}) {
       for (int replicate = 0; replicate < 8; ++replicate) {
-        const Cluster c = tunable_cluster_aggregation({.primary_count = n,
-                                                       .fractal_dimension = 1.8,
-                                                       .prefactor = 1.3,
-                                                       .geometric_standard_deviation = sigma_g},
-                                                      seed++);
+        const Cluster c = tunable_cluster_aggregation(
+            {.primary_count = n, .fractal_dimension = 1.8, .prefactor = 1.3, .geometric_standard_deviation = sigma_g},
+            seed++);
         samples.push_back({static_cast<double>(n), solid_sphere_gyration_radius(c)});
         log_n.push_back(std::log(static_cast<double>(n)));
       }
@@ -186,8 +177,7 @@ TEST_CASE("Ensemble fits of Df recover the request") {
     for (double x : log_n) sxx += (x - mean) * (x - mean);
     double slope_variance = 0.0;
     for (double x : log_n) {
-      slope_variance +=
-          std::pow((x - mean) / sxx, 2) * std::pow(std::log(sigma_g), 2) / std::exp(x);
+      slope_variance += std::pow((x - mean) / sxx, 2) * std::pow(std::log(sigma_g), 2) / std::exp(x);
     }
     const double expected_error = 1.8 * 1.8 * std::sqrt(slope_variance);
 
@@ -205,10 +195,10 @@ TEST_CASE("The internal structure follows the requested Df") {
   // structure is fractal throughout. At N = 1024 (2 d to Rg / 2, about one decade) it reads
   // 1.46-1.53 for Df = 1.6 and 2.26-2.32 for Df = 2.3 over 8 seeds: slightly low, as the local
   // slope falls towards the cluster's edge (see cluster_analysis.hpp).
-  const Cluster open = tunable_cluster_aggregation(
-      {.primary_count = 1024, .fractal_dimension = 1.6, .prefactor = 1.3}, 500);
-  const Cluster dense = tunable_cluster_aggregation(
-      {.primary_count = 1024, .fractal_dimension = 2.3, .prefactor = 1.3}, 500);
+  const Cluster open =
+      tunable_cluster_aggregation({.primary_count = 1024, .fractal_dimension = 1.6, .prefactor = 1.3}, 500);
+  const Cluster dense =
+      tunable_cluster_aggregation({.primary_count = 1024, .fractal_dimension = 2.3, .prefactor = 1.3}, 500);
   const double d_open = mass_radius_dimension(open);
   const double d_dense = mass_radius_dimension(dense);
   INFO("mass-radius D: " << d_open << " (Df 1.6), " << d_dense << " (Df 2.3)");
@@ -218,10 +208,8 @@ TEST_CASE("The internal structure follows the requested Df") {
 }
 
 TEST_CASE("Tunable aggregation is reproducible") {
-  const TunableAggregationParameters p{.primary_count = 500,
-                                       .fractal_dimension = 2.0,
-                                       .prefactor = 1.2,
-                                       .geometric_standard_deviation = 1.2};
+  const TunableAggregationParameters p{
+      .primary_count = 500, .fractal_dimension = 2.0, .prefactor = 1.2, .geometric_standard_deviation = 1.2};
   const Cluster a = tunable_cluster_aggregation(p, 42);
   const Cluster b = tunable_cluster_aggregation(p, 42);
   const Cluster other = tunable_cluster_aggregation(p, 43);
@@ -279,15 +267,13 @@ TEST_CASE("Unreachable requests throw UnreachableFractalParameters naming stage 
     return std::string("no UnreachableFractalParameters");
   };
   SECTION("kf = 0.1 at Df = 2.8: three primaries cannot be that open") {
-    const std::string m =
-        message_of({.primary_count = 100, .fractal_dimension = 2.8, .prefactor = 0.1});
+    const std::string m = message_of({.primary_count = 100, .fractal_dimension = 2.8, .prefactor = 0.1});
     CHECK_THAT(m, Catch::Contains("particle-cluster stage"));
     CHECK_THAT(m, Catch::Contains("too open"));
     CHECK_THAT(m, Catch::Contains("kf must lie in"));
   }
   SECTION("kf = 3 at Df = 2.8: three primaries cannot be that compact") {
-    const std::string m =
-        message_of({.primary_count = 100, .fractal_dimension = 2.8, .prefactor = 3.0});
+    const std::string m = message_of({.primary_count = 100, .fractal_dimension = 2.8, .prefactor = 3.0});
     CHECK_THAT(m, Catch::Contains("particle-cluster stage"));
     CHECK_THAT(m, Catch::Contains("too compact"));
   }
@@ -299,10 +285,8 @@ TEST_CASE("Unreachable requests throw UnreachableFractalParameters naming stage 
     CHECK_THAT(message_of({.primary_count = 2}), Catch::Contains("fixed Rg"));
   }
   SECTION("wide size distributions at high Df: the aggregates cannot follow the law") {
-    const std::string m = message_of({.primary_count = 1024,
-                                      .fractal_dimension = 2.6,
-                                      .prefactor = 1.0,
-                                      .geometric_standard_deviation = 1.6});
+    const std::string m = message_of(
+        {.primary_count = 1024, .fractal_dimension = 2.6, .prefactor = 1.0, .geometric_standard_deviation = 1.6});
     CHECK_THAT(m, Catch::Contains("cannot follow the scaling law"));
     CHECK_THAT(m, Catch::Contains("stage"));
     CHECK_THAT(m, Catch::Contains("Gamma"));
@@ -311,12 +295,10 @@ TEST_CASE("Unreachable requests throw UnreachableFractalParameters naming stage 
 
 TEST_CASE("The three-primary window bounds kf") {
   // Solid spheres: Rg/a from sqrt(4/3 + 3/5) (triangle) to sqrt(8/3 + 3/5) (chain).
-  const PrefactorWindow w =
-      three_primary_prefactor_window(1.8, GyrationConvention::solid_spheres, 0.0);
+  const PrefactorWindow w = three_primary_prefactor_window(1.8, GyrationConvention::solid_spheres, 0.0);
   CHECK(w.lowest == Approx(3.0 / std::pow(std::sqrt(8.0 / 3.0 + 0.6), 1.8)));
   CHECK(w.highest == Approx(3.0 / std::pow(std::sqrt(4.0 / 3.0 + 0.6), 1.8)));
-  const PrefactorWindow p =
-      three_primary_prefactor_window(1.8, GyrationConvention::point_masses, 0.0);
+  const PrefactorWindow p = three_primary_prefactor_window(1.8, GyrationConvention::point_masses, 0.0);
   CHECK(p.lowest == Approx(3.0 / std::pow(std::sqrt(8.0 / 3.0), 1.8)));
   CHECK(p.lowest > w.lowest);
 }
@@ -324,10 +306,8 @@ TEST_CASE("The three-primary window bounds kf") {
 TEST_CASE("Gamma from FracVAL eq. 6 reproduces the union's Rg") {
   // Two point clusters: masses 2 and 3 at distance 1.7, own Rg 0.4 and 0.9.
   const double m1 = 2.0, m2 = 3.0, rg1 = 0.4, rg2 = 0.9, gamma = 1.7;
-  const double rg2_union =
-      (m1 * rg1 * rg1 + m2 * rg2 * rg2 + m1 * m2 / (m1 + m2) * gamma * gamma) / (m1 + m2);
-  CHECK(centre_distance_squared(m1, rg1, m2, rg2, std::sqrt(rg2_union)) ==
-        Approx(gamma * gamma).epsilon(1e-12));
+  const double rg2_union = (m1 * rg1 * rg1 + m2 * rg2 * rg2 + m1 * m2 / (m1 + m2) * gamma * gamma) / (m1 + m2);
+  CHECK(centre_distance_squared(m1, rg1, m2, rg2, std::sqrt(rg2_union)) == Approx(gamma * gamma).epsilon(1e-12));
   CHECK(centre_distance_squared(m1, rg1, m2, rg2, 0.1) < 0.0);
 }
 

@@ -51,7 +51,7 @@ TEST_CASE("a choice takes the fastest listed pair and the fastest particle withi
   Wall side{{-100.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 0, false};  // no adhesion: its contacts have no tensile range
   const Particles p = three_particles();
   const StepChooser::Choice c = chooser.choose(p, first_two_listed(), {floor, side}, p.position, 0.4);
-  CHECK_THAT(c.pair_speed, WithinRel(0.2, 1e-9));  // head-on: all of it along the line of centres
+  CHECK_THAT(c.pair_speed, WithinRel(0.2, 1e-9));   // head-on: all of it along the line of centres
   CHECK_THAT(c.wall_speed, WithinRel(0.1, 1e-12));  // not the particle 49.5 d above the floor
   // Headroom h = 0.25 x 0.2: the pair may approach at 0.2 + 2h = 0.3, the particle the floor at 0.15.
   CHECK_THAT(c.time_step, WithinRel(0.01 / (10.0 * 0.3), 1e-9));
@@ -81,7 +81,7 @@ TEST_CASE("a pair moving apart counts its motion along the line of centres only 
   PairList pairs = first_two_listed();
   StepChooser chooser(1.0, {0.01, 0.0, 0.001, 0.0}, 10.0, 0.25);
   CHECK(chooser.choose(p, pairs, {}, p.position, 0.4).pair_speed == 0.0);  // it cannot touch without turning back
-  pairs.contact[0] = 0;  // in contact: it may let go
+  pairs.contact[0] = 0;                                                    // in contact: it may let go
   CHECK_THAT(chooser.choose(p, pairs, {}, p.position, 0.4).pair_speed, WithinRel(0.2, 1e-9));
 }
 
@@ -132,11 +132,10 @@ TEST_CASE("the adaptive step stays within the contact period's bound and resolve
   const double cap = a.time_step_estimate().period / a.time_step_estimate().steps_per_period;
   INFO("adaptive: steps " << h.steps << ", dt " << h.shortest << " - " << h.longest << ", choices " << h.choices
                           << ", fewest steps per break overlap: pairs "
-                          << a.pair_events().fewest_steps_per_break_overlap
-                          << ", wall " << a.wall_events().fewest_steps_per_break_overlap << "; fixed: steps "
-                          << f.step_count() << ", dt " << f.time_step() << ", pairs "
-                          << f.pair_events().fewest_steps_per_break_overlap << ", wall "
-                          << f.wall_events().fewest_steps_per_break_overlap);
+                          << a.pair_events().fewest_steps_per_break_overlap << ", wall "
+                          << a.wall_events().fewest_steps_per_break_overlap << "; fixed: steps " << f.step_count()
+                          << ", dt " << f.time_step() << ", pairs " << f.pair_events().fewest_steps_per_break_overlap
+                          << ", wall " << f.wall_events().fewest_steps_per_break_overlap);
   REQUIRE(a.pair_events().broken > 10);
   REQUIRE(a.wall_events().made > 10);
   CHECK(h.longest <= cap);

@@ -55,7 +55,8 @@ TEST_CASE("a rigid rotation of the whole system, wall included, rotates the resu
   Wall floor;
   Wall tilted{rotate(floor.point, axis, angle), rotate(floor.normal, axis, angle)};
   Simulation straight(std::move(p), {testing::unit_material(0.01)}, {floor}, testing::full_model(), testing::bonded());
-  Simulation rotated(std::move(turned), {testing::unit_material(0.01)}, {tilted}, testing::full_model(), testing::bonded());
+  Simulation rotated(std::move(turned), {testing::unit_material(0.01)}, {tilted}, testing::full_model(),
+                     testing::bonded());
   straight.run(4000);
   rotated.run(4000);
   REQUIRE(straight.wall_events().made > 0);

@@ -73,7 +73,7 @@ inline double integrated_loss(const Contact& c, JkrSeparation rule) {
   const auto slope = [&](double a) { return 2.0 * a / r - 0.5 * std::sqrt(2.0 * pi * w / (e * a)); };
   const double touching = std::cbrt(2.0 * pi * w * r * r / e);
   const double release = rule == JkrSeparation::displacement ? std::cbrt(pi * w * r * r / (8.0 * e))
-                                                              : std::cbrt(9.0 * pi * w * r * r / (8.0 * e));
+                                                             : std::cbrt(9.0 * pi * w * r * r / (8.0 * e));
   const int n = 100000;
   const double h = (release - touching) / n;
   double sum = 0.0;

@@ -88,8 +88,10 @@ TEST_CASE("a contact in tension separates at delta = -delta_c, or at F = -F_c by
   const SphereOnWall s = sphere_on_wall();
   const double a0 = std::cbrt(9.0 * pi * s.work * s.radius * s.radius / (2.0 * s.modulus));
   const double delta_c = a0 * a0 / (2.0 * std::cbrt(6.0) * s.radius);  // eq 3
-  const double delta_f = delta_c * 2.0 * std::cbrt(6.0) * (2.0 / 3.0 * std::pow(4.0, -1.0 / 6.0) - std::pow(4.0, -2.0 / 3.0));
-  for (auto [rule, expected] : {std::pair{JkrSeparation::displacement, delta_c}, std::pair{JkrSeparation::force, delta_f}}) {
+  const double delta_f =
+      delta_c * 2.0 * std::cbrt(6.0) * (2.0 / 3.0 * std::pow(4.0, -1.0 / 6.0) - std::pow(4.0, -2.0 / 3.0));
+  for (auto [rule, expected] :
+       {std::pair{JkrSeparation::displacement, delta_c}, std::pair{JkrSeparation::force, delta_f}}) {
     // At equilibrium, then leaving fast enough to escape: record the last overlap still in contact.
     SimulationSettings settings;
     settings.speed_scale = 0.5;

@@ -113,17 +113,19 @@ TEST_CASE("a pair on opposite faces is listed through the boundary, and the box 
 
 TEST_CASE("the simulation rejects walls or gravity with a periodic box and boxes too small for the reach") {
   const ContactModelSpec spec;
-  CHECK_THROWS_AS(Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {Wall{}}, spec,
-                             periodic({8, 8, 8})),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {Wall{}}, spec, periodic({8, 8, 8})),
+      std::invalid_argument);
   SimulationSettings falling = periodic({8, 8, 8});
   falling.body.gravity = {0.0, 0.0, -1e-3};
   CHECK_THROWS_AS(Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {}, spec, falling),
                   std::invalid_argument);
-  CHECK_THROWS_AS(Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {}, spec, periodic({2, 8, 8})),
-                  std::invalid_argument);
-  CHECK_THROWS_AS(Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {}, spec, periodic({-8, 8, 8})),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {}, spec, periodic({2, 8, 8})),
+      std::invalid_argument);
+  CHECK_THROWS_AS(
+      Simulation(sphere_pair({1, 1, 1}, {3, 3, 3}), {testing::unit_material()}, {}, spec, periodic({-8, 8, 8})),
+      std::invalid_argument);
 }
 
 TEST_CASE("a pair straddling the boundary forms a JKR contact and settles at the equilibrium overlap") {
@@ -174,7 +176,8 @@ TEST_CASE("linear momentum is conserved through the periodic images") {
   Simulation sim(std::move(p), {testing::unit_material(0.01)}, {}, testing::full_model(), periodic({edge, edge, edge}));
   const Vec3 momentum0 = testing::linear_momentum(sim.particles());
   double scale = 0.0;
-  for (std::size_t i = 0; i < sim.particles().size(); ++i) scale += sim.particles().mass[i] * norm(sim.particles().velocity[i]);
+  for (std::size_t i = 0; i < sim.particles().size(); ++i)
+    scale += sim.particles().mass[i] * norm(sim.particles().velocity[i]);
   std::size_t across = 0;
   for (int k = 0; k < 40; ++k) {
     sim.run(500);
@@ -250,5 +253,6 @@ TEST_CASE("a cluster across a corner of the box moves exactly as in open space")
   // Only round-off: the shift by 40 d costs a few ulps of 40 in every coordinate.
   CHECK(worst < 1e-9);
   const std::vector<Vec3> unwrapped = b.unwrapped_positions();
-  for (std::size_t i = 0; i < a.particles().size(); ++i) CHECK(norm(unwrapped[i] - shift - a.particles().position[i]) < 1e-9);
+  for (std::size_t i = 0; i < a.particles().size(); ++i)
+    CHECK(norm(unwrapped[i] - shift - a.particles().position[i]) < 1e-9);
 }

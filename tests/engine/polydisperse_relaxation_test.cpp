@@ -86,8 +86,8 @@ void check_relaxes_to_equilibrium(double gsd, std::size_t primaries, std::uint64
     INFO("contact " << b.i << "-" << b.j << ", R* = " << b.reduced_radius);
     CHECK(std::fabs(b.overlap - expected) < 1e-5 * expected);
     edges.push_back({b.i, b.j});
-    ContactConstants c = sphere_pair_constants(p.radius[b.i], p.mass[b.i], p.radius[b.j], p.mass[b.j],
-                                               combine(material, material));
+    ContactConstants c =
+        sphere_pair_constants(p.radius[b.i], p.mass[b.i], p.radius[b.j], p.mass[b.j], combine(material, material));
     jkr.complete(c);
     const Vec3 push = jkr.respond(b.overlap, c).force * (p.position[b.j] - p.position[b.i]) /
                       norm(p.position[b.j] - p.position[b.i]);  // on j, away from i

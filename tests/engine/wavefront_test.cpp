@@ -96,7 +96,8 @@ TEST_CASE("a wavefront in which a particle leaves the skin is undone and its ste
 TEST_CASE("a wavefront over lognormal primaries gives the steps one at a time to the last bit") {
   const Material material = testing::unit_material(0.01);
   const Cluster cluster = ballistic_cluster_cluster_aggregation({300, 1.0, 1.4}, 8);
-  Particles p = relax_cluster(particles_from_cluster(cluster, material.density), {material}, ContactModelSpec{}).particles;
+  Particles p =
+      relax_cluster(particles_from_cluster(cluster, material.density), {material}, ContactModelSpec{}).particles;
   testing::launch_above_floor(p, 0.8, {0.02, 0.01, -0.3});
   SimulationSettings one = testing::bonded();
   one.wavefront_depth = 1;

@@ -49,7 +49,8 @@ inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, 
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   double retained = 0.0;
   for (const auto& f : fragments) {
-    list.push_back({{"size", f.size}, {"mass", static_cast<double>(f.size)}, {"on_wall", f.on_wall}, {"normal_velocity", 0.001}});
+    list.push_back(
+        {{"size", f.size}, {"mass", static_cast<double>(f.size)}, {"on_wall", f.on_wall}, {"normal_velocity", 0.001}});
     if (f.on_wall) retained += f.size;
   }
   retained /= size;
@@ -70,7 +71,8 @@ inline nlohmann::ordered_json result_of(const std::vector<Fragment>& fragments, 
 }
 
 // Replicate r of a grid point: a reduced-units case of N = size ballistic primaries (seed r).
-inline StudySubmission::Case reduced_case(nlohmann::ordered_json grid_point, double speed, double gamma, int size, int r) {
+inline StudySubmission::Case reduced_case(nlohmann::ordered_json grid_point, double speed, double gamma, int size,
+                                          int r) {
   StudySubmission::Case c;
   c.grid_point = std::move(grid_point);
   c.grid_key = c.grid_point.dump();
@@ -98,8 +100,8 @@ inline StudySubmission export_submission() {
     for (const double gamma : kGammas)
       for (const int size : kSizes)
         for (int r = 0; r < kReplicates; ++r)
-          study.cases.push_back(
-              reduced_case({{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", size}}, speed, gamma, size, r));
+          study.cases.push_back(reduced_case({{"impact_speed", speed}, {"gamma_over_kn", gamma}, {"primaries", size}},
+                                             speed, gamma, size, r));
   return study;
 }
 
@@ -124,7 +126,8 @@ std::int64_t fill_study(Store& store, const StudySubmission& submission, const F
   const auto job = store.start_job("export test", 1);
   while (const auto claimed = store.claim_next_case(job)) {
     const int size = case_label(claimed->document).size;
-    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result_of(fragments_for(claimed->document), size), "", 0.1));
+    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result_of(fragments_for(claimed->document), size),
+                                "", 0.1));
   }
   return receipt.study_id;
 }
@@ -155,13 +158,15 @@ inline std::int64_t fill_wall_study(Store& store) {
     for (const int size : kSizes)
       for (const bool adhesive : {true, false})
         for (int r = 0; r < kReplicates; ++r) {
-          auto c = reduced_case({{"impact_speed", speed}, {"primaries", size}, {"/wall/adhesive", adhesive}}, speed, 0.001, size, r);
+          auto c = reduced_case({{"impact_speed", speed}, {"primaries", size}, {"/wall/adhesive", adhesive}}, speed,
+                                0.001, size, r);
           c.document["wall"] = {{"adhesive", adhesive}};
           study.cases.push_back(std::move(c));
         }
   return fill_study(store, study, [](const nlohmann::ordered_json& document) {
     const auto label = case_label(document);
-    return wall_fragments_of(document.at("wall").at("adhesive").get<bool>(), label.size, label.speed_index, label.replicate);
+    return wall_fragments_of(document.at("wall").at("adhesive").get<bool>(), label.size, label.speed_index,
+                             label.replicate);
   });
 }
 

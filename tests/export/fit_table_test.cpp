@@ -27,7 +27,8 @@ struct PooledFixture {
   ScratchDirectory directory{"fit_table"};
   Store store{directory.path() / "store.sqlite"};
   std::int64_t study = fill_pooled_study(store);
-  CorrelationSet fits = study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
+  CorrelationSet fits =
+      study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
 
   LookupTable table(ExportRequest request) {
     request.kind = TableKind::fit;
@@ -58,7 +59,8 @@ Band band_by_hand(const FitCommon& fit, double speed, double size) {
   double eta = 0.0, variance = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     eta += fit.coefficients[static_cast<Eigen::Index>(i)] * x[i];
-    for (std::size_t j = 0; j < x.size(); ++j) variance += x[i] * fit.covariance(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) * x[j];
+    for (std::size_t j = 0; j < x.size(); ++j)
+      variance += x[i] * fit.covariance(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) * x[j];
   }
   const auto p = [](double e) { return 1.0 / (1.0 + std::exp(-e)); };
   return {p(eta), p(eta - kZ * std::sqrt(variance)), p(eta + kZ * std::sqrt(variance))};
@@ -74,7 +76,8 @@ void check_row(const LookupTable& table, std::size_t row, const char* outcome, c
 
 }  // namespace
 
-TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computation from the pooled fit", "[export][fit]") {
+TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computation from the pooled fit",
+          "[export][fit]") {
   PooledFixture fixture;
   const auto& stick = fit_named(fixture.fits.logistic, "stick.speed.pooled.c1").common;
   const auto& break_up = fit_named(fixture.fits.logistic, "break-up.speed.pooled.c1").common;
@@ -94,21 +97,26 @@ TEST_CASE("Fit table at sizes not run: P and its 95 % band equal a hand computat
     CHECK(at(table, "d_ve", row) == Approx(std::cbrt(size)).epsilon(1e-12));
     if (size == 32) {  // run: the size's own fit (group g1 is N = 32)
       CHECK(at(table, "model", row) == 0.0);
-      check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.g1").common, speed, size));
-      check_row(table, row, "stick", band_by_hand(fit_named(fixture.fits.logistic, "stick.speed.g1").common, speed, size));
-      check_row(table, row, "break_up", band_by_hand(fit_named(fixture.fits.logistic, "break-up.speed.g1").common, speed, size));
+      check_row(table, row, "bounce",
+                band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.g1").common, speed, size));
+      check_row(table, row, "stick",
+                band_by_hand(fit_named(fixture.fits.logistic, "stick.speed.g1").common, speed, size));
+      check_row(table, row, "break_up",
+                band_by_hand(fit_named(fixture.fits.logistic, "break-up.speed.g1").common, speed, size));
       CHECK(at(table, "inside_validity", row) == 1.0);
       continue;
     }
     CHECK(at(table, "model", row) == 1.0);
     check_row(table, row, "stick", band_by_hand(stick, speed, size));
-    check_row(table, row, "bounce", band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.pooled.c1").common, speed, size));
+    check_row(table, row, "bounce",
+              band_by_hand(fit_named(fixture.fits.logistic, "bounce.speed.pooled.c1").common, speed, size));
     check_row(table, row, "break_up", band_by_hand(break_up, speed, size));
     // Between the sizes run (32 and 128): interpolation in ln N, inside the box; 16 and 512 outside.
     CHECK(at(table, "inside_validity", row) == (size == 64 ? 1.0 : 0.0));
   }
   CHECK(table.metadata.at("fit_models").at("pooled_ln_n").get<std::string>().find("b2 ln N") != std::string::npos);
-  CHECK(table.metadata.at("validity").at("primaries") == nlohmann::ordered_json::array({32.0, 128.0}));  // run, not tabulated
+  CHECK(table.metadata.at("validity").at("primaries") ==
+        nlohmann::ordered_json::array({32.0, 128.0}));  // run, not tabulated
   CHECK(table.metadata.at("validity").at("impact_speed") == nlohmann::ordered_json::array({0.01, 0.3}));
 }
 
@@ -133,7 +141,8 @@ TEST_CASE("Fit table at sizes not run: the rows are the pooled model R's glm rep
   const auto table = fixture.table(request);
   REQUIRE(table.rows() == 3);
   for (std::size_t row = 0; row < 3; ++row) {
-    const double eta = 6.231419790302835 + 1.974162739163768 * std::log(request.speeds[row]) - 0.350161297993368 * std::log(64.0);
+    const double eta =
+        6.231419790302835 + 1.974162739163768 * std::log(request.speeds[row]) - 0.350161297993368 * std::log(64.0);
     CHECK(at(table, "p_break_up", row) == Approx(1.0 / (1.0 + std::exp(-eta))).epsilon(1e-6));
   }
 }
@@ -148,7 +157,8 @@ CaseOutcomeTable two_walls() {
   for (const bool adhesive : {true, false})
     for (const int size : kPooledSizes)
       for (std::size_t s = 0; s < kPooledSpeeds.size(); ++s) {
-        table.grid_points.push_back({{"impact_speed", kPooledSpeeds[s]}, {"/wall/adhesive", adhesive}, {"primaries", size}});
+        table.grid_points.push_back(
+            {{"impact_speed", kPooledSpeeds[s]}, {"/wall/adhesive", adhesive}, {"primaries", size}});
         for (int r = 0; r < kPooledReplicates; ++r) {
           const auto fragments = pooled_fragments(adhesive ? size : 160 - size, s, r);
           const std::string outcome = outcome_of(fragments, adhesive ? size : 160 - size);
@@ -163,7 +173,8 @@ CaseOutcomeTable two_walls() {
 
 }  // namespace
 
-TEST_CASE("Fit table at sizes not run: one pooled fit per condition of the other axes (a boolean wall axis)", "[export][fit]") {
+TEST_CASE("Fit table at sizes not run: one pooled fit per condition of the other axes (a boolean wall axis)",
+          "[export][fit]") {
   const CaseOutcomeTable outcomes = two_walls();
   CorrelationSet set;
   set.request.speed_axis = "impact_speed";
@@ -192,7 +203,8 @@ TEST_CASE("Fit table: every outcome with its band and status: no transition give
   ScratchDirectory directory("fit_table_walls");
   Store store(directory.path() / "store.sqlite");
   const auto study = fill_wall_study(store);
-  const auto fits = study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
+  const auto fits =
+      study_correlations(store, *store.study(study), correlation_request(*store.study(study), std::nullopt));
   ExportRequest request;
   request.kind = TableKind::fit;
   request.speeds = {0.01, 0.02, 0.05};
@@ -226,10 +238,11 @@ TEST_CASE("Fit table: every outcome with its band and status: no transition give
   CHECK(table.metadata.at("fit_models").at("status").get<std::string>().find("2 = no transition") != std::string::npos);
 }
 
-TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and the range (aerobreak export)", "[export][fit]") {
+TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and the range (aerobreak export)",
+          "[export][fit]") {
   PooledFixture fixture;
-  const std::string command = std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
-                              " --kind fit --format csv -o -";
+  const std::string command = std::string(AEROBREAK_BINARY) + " export --store " +
+                              fixture.directory.file("store.sqlite") + " --kind fit --format csv -o -";
   const auto inside = run_command(command + " --speeds 0.05 --sizes 64 --strict true", true);
   REQUIRE(inside.exit_code == 0);
   CHECK(inside.text.find("pooled_ln_n") != std::string::npos);
@@ -247,7 +260,8 @@ TEST_CASE("Fit table: strict refuses a size outside the sizes run, naming it and
 TEST_CASE("Fit table: a size not run is refused with the reason when no pooled fit can be made", "[export][fit]") {
   PooledFixture fixture;
   CorrelationSet without = fixture.fits;
-  std::erase_if(without.logistic, [](const LogisticFit& fit) { return !fit.covariates.empty(); });  // as for a study of one size
+  std::erase_if(without.logistic,
+                [](const LogisticFit& fit) { return !fit.covariates.empty(); });  // as for a study of one size
   ExportRequest request;
   request.kind = TableKind::fit;
   request.sizes = {64};
@@ -279,7 +293,8 @@ namespace aerobreak::testing {
 // much smaller than the mean free path settles like a unit-density sphere of rho_p/rho_0 times its
 // diameter (Cc proportional to 1/d), a much larger one like sqrt(rho_p/rho_0) times (Cc -> 1); each
 // diameter turned back into N gives N.
-TEST_CASE("Equivalent diameters: the aerodynamic limits of a sphere, and N back from every diameter", "[export][fit][diameters]") {
+TEST_CASE("Equivalent diameters: the aerodynamic limits of a sphere, and N back from every diameter",
+          "[export][fit][diameters]") {
   const double density = 1725.0;
   CHECK(aerodynamic_diameter(1.0, 1e-9, density) == Approx(1e-9 * density / kUnitDensity).epsilon(2e-3));
   CHECK(aerodynamic_diameter(1.0, 1e-4, density) == Approx(1e-4 * std::sqrt(density / kUnitDensity)).epsilon(2e-3));
@@ -294,7 +309,8 @@ TEST_CASE("Equivalent diameters: the aerodynamic limits of a sphere, and N back 
   CHECK(aerodynamic_diameter(4675.0, 2e-8, density) < 2e-8 * std::cbrt(4675.0) * std::sqrt(density / kUnitDensity));
 }
 
-TEST_CASE("Fit table at diameters: each diameter's N, its rows those of that size, aerodynamic only with SI", "[export][fit][diameters]") {
+TEST_CASE("Fit table at diameters: each diameter's N, its rows those of that size, aerodynamic only with SI",
+          "[export][fit][diameters]") {
   PooledFixture fixture;
   ExportRequest by_diameter;
   by_diameter.speeds = {0.02, 0.1};
@@ -305,7 +321,8 @@ TEST_CASE("Fit table at diameters: each diameter's N, its rows those of that siz
   const auto diameters = fixture.table(by_diameter), sizes = fixture.table(by_size);
   REQUIRE(diameters.rows() == 4);
   for (const char* column : {"primaries", "p_break_up", "p_break_up_lo", "p_break_up_hi", "inside_validity", "model"})
-    for (std::size_t row = 0; row < 4; ++row) CHECK(at(diameters, column, row) == Approx(at(sizes, column, row)).epsilon(1e-12));
+    for (std::size_t row = 0; row < 4; ++row)
+      CHECK(at(diameters, column, row) == Approx(at(sizes, column, row)).epsilon(1e-12));
   CHECK(at(diameters, "d_mob", 0) == Approx(5.0).epsilon(1e-12));
   CHECK(at(diameters, "inside_validity", 0) == 1.0);  // 5^2.16 = 32.3 lies between the sizes run, 32 and 128
   CHECK(at(diameters, "inside_validity", 2) == 0.0);  // 20^2.16 = 646 beyond them: extrapolated, flagged

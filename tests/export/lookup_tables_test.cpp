@@ -20,7 +20,8 @@ namespace {
 std::size_t row_of(const LookupTable& table, std::initializer_list<std::pair<const char*, double>> where) {
   for (std::size_t row = 0; row < table.rows(); ++row) {
     bool match = true;
-    for (const auto& [name, value] : where) match = match && std::abs(table.find(name)->values[row] - value) <= 1e-12 * std::abs(value);
+    for (const auto& [name, value] : where)
+      match = match && std::abs(table.find(name)->values[row] - value) <= 1e-12 * std::abs(value);
     if (match) return row;
   }
   FAIL("no such row");
@@ -173,7 +174,8 @@ TEST_CASE("Grid table of a study on two walls: one row per wall, each counted by
   CHECK(at(table, "p_bounce", row_of(table, {{"impact_speed", 0.01}, {"primaries", 8}, {"wall_adhesive", 0}})) == 1.0);
 }
 
-TEST_CASE("Sections table of a study on two walls: one matrix per wall, columns summing to 1, counted by hand", "[export][axes]") {
+TEST_CASE("Sections table of a study on two walls: one matrix per wall, columns summing to 1, counted by hand",
+          "[export][axes]") {
   WallFixture fixture;
   ExportRequest request;
   request.kind = TableKind::sections;
@@ -198,11 +200,16 @@ TEST_CASE("Sections table of a study on two walls: one matrix per wall, columns 
   CHECK(at(table, "results", bare) == 4);
 }
 
-TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index with its labels in the metadata", "[export][axes]") {
+TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index with its labels in the metadata",
+          "[export][axes]") {
   const std::vector<nlohmann::ordered_json> points{
       {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", true}, {"/model/friction", 0.3}, {"/odd", 1}},
       {{"primaries", 8}, {"generator", "dlca"}, {"/wall/adhesive", false}, {"/model/friction", 0.5}, {"/odd", "x"}},
-      {{"primaries", 8}, {"generator", "ballistic"}, {"/wall/adhesive", false}, {"/model/friction", 0.3}, {"/odd", true}}};
+      {{"primaries", 8},
+       {"generator", "ballistic"},
+       {"/wall/adhesive", false},
+       {"/model/friction", 0.3},
+       {"/odd", true}}};
   std::vector<const nlohmann::ordered_json*> pointers;
   for (const auto& point : points) pointers.push_back(&point);
   const auto axes = axis_columns(pointers, {"primaries"}, false);
@@ -235,7 +242,8 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
   CHECK_FALSE(metadata.at("axis_labels").contains("wall_adhesive"));
 }
 
-TEST_CASE("select=NAME:VALUE keeps the rows of one condition, an unknown column or no match is refused naming select", "[export][axes]") {
+TEST_CASE("select=NAME:VALUE keeps the rows of one condition, an unknown column or no match is refused naming select",
+          "[export][axes]") {
   WallFixture fixture;
   ExportRequest request;
   request.select = {{"wall_adhesive", 0}, {"primaries", 32}};
@@ -243,7 +251,8 @@ TEST_CASE("select=NAME:VALUE keeps the rows of one condition, an unknown column 
   REQUIRE(table.rows() == kSpeeds.size());
   for (std::size_t row = 0; row < table.rows(); ++row) CHECK(at(table, "wall_adhesive", row) == 0.0);
   CHECK(at(table, "p_break_up", row_of(table, {{"impact_speed", 0.05}})) == 0.5);
-  for (const auto& select : std::vector<std::pair<std::string, double>>{{"wall_colour", 1}, {"wall_adhesive", 2}, {"p_stick", 1}}) {
+  for (const auto& select :
+       std::vector<std::pair<std::string, double>>{{"wall_colour", 1}, {"wall_adhesive", 2}, {"p_stick", 1}}) {
     request.select = {select};
     try {
       fixture.table(request);
@@ -289,7 +298,10 @@ TEST_CASE("SI columns for a material: speeds in m/s and sizes in m, checked by h
   CHECK_FALSE(reduced.metadata.at("diameters").contains("primary_density_kg_m3"));
 }
 
-TEST_CASE("A material outside the study's gamma/k_n range is refused, and one between two values is taken only when interpolated", "[export]") {
+TEST_CASE(
+    "A material outside the study's gamma/k_n range is refused, and one between two values is taken only when "
+    "interpolated",
+    "[export]") {
   ExportFixture fixture;
   ExportRequest request;
   for (const double outside : {0.02, 0.0005}) {
@@ -338,8 +350,11 @@ TEST_CASE("Export parameters: unknown, malformed or half a material are refused 
   CHECK(field_of({{"colour", "red"}}) == "colour");
   CHECK(field_of({{"section_ratio", "1.0"}}) == "section_ratio");
   CHECK(field_of({{"youngs_modulus", "1e10"}}) == "poisson_ratio");
-  CHECK(field_of({{"youngs_modulus", "-1"}, {"poisson_ratio", "0.3"}, {"density", "1"}, {"surface_energy", "1"}, {"diameter", "1"}}) ==
-        "youngs_modulus");
+  CHECK(field_of({{"youngs_modulus", "-1"},
+                  {"poisson_ratio", "0.3"},
+                  {"density", "1"},
+                  {"surface_energy", "1"},
+                  {"diameter", "1"}}) == "youngs_modulus");
   CHECK(field_of({{"speeds", "1,x"}}) == "speeds");
   CHECK(field_of({{"select", "wall_adhesive"}}) == "select");
   CHECK(field_of({{"select", "Wall:1"}}) == "select");

@@ -88,13 +88,15 @@ struct Stores {
 
 }  // namespace
 
-TEST_CASE("MELCOR: every outcome with its interval, the restitution and the retained mass, per wall and size", "[export][melcor]") {
+TEST_CASE("MELCOR: every outcome with its interval, the restitution and the retained mass, per wall and size",
+          "[export][melcor]") {
   Stores stores;
   const auto table = stores.table(stores.walls, TableKind::grid);
   const auto deck = parse(melcor_text(table));
   REQUIRE(deck.conditions.size() == 4);  // 2 sizes x 2 walls
   std::size_t adhesive = 0;
-  for (const auto& [number, text] : deck.conditions) adhesive += text.find("wall_adhesive = " + number_text(1.0)) != std::string::npos;
+  for (const auto& [number, text] : deck.conditions)
+    adhesive += text.find("wall_adhesive = " + number_text(1.0)) != std::string::npos;
   CHECK(adhesive == 2);
   std::map<std::string, std::size_t> per_quantity;
   std::set<std::string> names;
@@ -111,7 +113,8 @@ TEST_CASE("MELCOR: every outcome with its interval, the restitution and the reta
   }
   // Every probability and its interval ends, per condition; the retained mass; the restitution where
   // something bounced: not N = 8 on the adhesive wall (7 of 8 primaries leaving is below the 0.9 share).
-  for (const char* quantity : {"PSTK_", "PSTKL", "PSTKU", "PBNC_", "PBNCL", "PBNCU", "PBRK_", "PBRKL", "PBRKU", "RETN_"}) {
+  for (const char* quantity :
+       {"PSTK_", "PSTKL", "PSTKU", "PBNC_", "PBNCL", "PBNCU", "PBRK_", "PBRKL", "PBRKU", "RETN_"}) {
     INFO(quantity);
     CHECK(per_quantity[quantity] == 4);
   }
@@ -121,7 +124,9 @@ TEST_CASE("MELCOR: every outcome with its interval, the restitution and the reta
   for (const auto& function : deck.functions)
     if (function.name.ends_with("PBRK_001"))
       for (std::size_t k = 0; k < function.x.size(); ++k)
-        CHECK(std::find_if(p.begin(), p.end(), [&](double v) { return std::abs(v - function.y[k]) <= 5e-10 * std::max(1.0, v); }) != p.end());
+        CHECK(std::find_if(p.begin(), p.end(), [&](double v) {
+                return std::abs(v - function.y[k]) <= 5e-10 * std::max(1.0, v);
+              }) != p.end());
 }
 
 TEST_CASE("MELCOR: names are unique across quantities, conditions, table kinds and studies", "[export][melcor]") {
@@ -133,7 +138,8 @@ TEST_CASE("MELCOR: names are unique across quantities, conditions, table kinds a
   }
   // The fit table at sizes and at mobility diameters, as aerobreak run writes both, of a third study.
   const auto pooled = fill_pooled_wall_study(stores.store);
-  const auto fits = study_correlations(stores.store, *stores.store.study(pooled), correlation_request(*stores.store.study(pooled), std::nullopt));
+  const auto fits = study_correlations(stores.store, *stores.store.study(pooled),
+                                       correlation_request(*stores.store.study(pooled), std::nullopt));
   ExportRequest at_sizes, at_diameters;
   at_sizes.kind = at_diameters.kind = TableKind::fit;
   at_diameters.diameters = {5.0, 8.0};  // in d: N = 32.3 and 89

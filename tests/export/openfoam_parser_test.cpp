@@ -22,8 +22,8 @@ CommandOutput foam_dictionary(const ScratchDirectory& directory, const std::stri
   const std::string bashrc = AEROBREAK_OPENFOAM_BASHRC;
   INFO("OpenFOAM is needed (scripts/setup.sh installs Debian's openfoam)");
   REQUIRE_FALSE(bashrc.empty());
-  return run_command("bash -c 'source " + bashrc + " >/dev/null 2>&1; cd " + directory.path().string() + " && foamDictionary " +
-                     arguments + "'");
+  return run_command("bash -c 'source " + bashrc + " >/dev/null 2>&1; cd " + directory.path().string() +
+                     " && foamDictionary " + arguments + "'");
 }
 
 // The numbers of an OpenFOAM list as printed, in order (parentheses dropped).
@@ -59,15 +59,17 @@ TEST_CASE("OpenFOAM: its own parser reads the interpolation2DTable and the Funct
 
   const auto table2d = openfoam_table2d(table, "p_break_up");
   std::ofstream(directory.file("table2d")) << table2d;
-  std::ofstream(directory.file("wrapper")) << "FoamFile { version 2.0; format ascii; class dictionary; object wrapper; }\n"
-                                              "values\n#include \"table2d\"\n;\n";
+  std::ofstream(directory.file("wrapper"))
+      << "FoamFile { version 2.0; format ascii; class dictionary; object wrapper; }\n"
+         "values\n#include \"table2d\"\n;\n";
   const auto read = foam_dictionary(directory, "wrapper -entry values -value");
   INFO(read.text);
   REQUIRE(read.exit_code == 0);
   const auto parsed = numbers_of(read.text), written = numbers_without_comments(table2d);
   REQUIRE(parsed.size() == written.size());
   REQUIRE(parsed.size() == kSpeeds.size() * (1 + 2 * kSizes.size()));
-  for (std::size_t i = 0; i < parsed.size(); ++i) CHECK(parsed[i] == Approx(written[i]).epsilon(1e-5));  // printed to 6 digits
+  for (std::size_t i = 0; i < parsed.size(); ++i)
+    CHECK(parsed[i] == Approx(written[i]).epsilon(1e-5));  // printed to 6 digits
 
   std::ofstream(directory.file("p_break_up.csv")) << openfoam_csv(table, "p_break_up");
   std::ofstream(directory.file("entries")) << openfoam_dictionary(table, "p_break_up", "p_break_up.csv");

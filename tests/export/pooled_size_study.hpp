@@ -42,7 +42,8 @@ inline std::int64_t fill_pooled_study(Store& store) {
   return fill_study(store, pooled_submission(), [](const nlohmann::ordered_json& document) {
     const auto& generator = document.at("cluster").at("generator");
     const double speed = document.at("impact").at("speed");
-    const auto s = static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
+    const auto s =
+        static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
     return pooled_fragments(generator.at("primaries"), s, generator.at("seed"));
   });
 }
@@ -59,14 +60,16 @@ inline std::int64_t fill_pooled_wall_study(Store& store) {
     for (const bool adhesive : {true, false})
       for (const int size : kPooledSizes)
         for (int r = 0; r < kPooledReplicates; ++r) {
-          auto c = reduced_case({{"impact_speed", speed}, {"/wall/adhesive", adhesive}, {"primaries", size}}, speed, 0.001, size, r);
+          auto c = reduced_case({{"impact_speed", speed}, {"/wall/adhesive", adhesive}, {"primaries", size}}, speed,
+                                0.001, size, r);
           c.document["wall"] = {{"adhesive", adhesive}};
           study.cases.push_back(std::move(c));
         }
   return fill_study(store, study, [](const nlohmann::ordered_json& document) {
     const auto& generator = document.at("cluster").at("generator");
     const double speed = document.at("impact").at("speed");
-    const auto s = static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
+    const auto s =
+        static_cast<std::size_t>(std::find(kPooledSpeeds.begin(), kPooledSpeeds.end(), speed) - kPooledSpeeds.begin());
     const int size = generator.at("primaries");
     const int replicate = generator.at("seed");
     if (document.at("wall").at("adhesive").get<bool>()) return pooled_fragments(size, s, replicate);

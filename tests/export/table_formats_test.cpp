@@ -40,9 +40,12 @@ Records strict_csv(const std::string& text) {
       std::string& field = records.back().back();
       for (++i;; ++i) {
         REQUIRE(i < text.size());
-        if (text[i] != '"') field += text[i];
-        else if (i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
-        else break;
+        if (text[i] != '"')
+          field += text[i];
+        else if (i + 1 < text.size() && text[i + 1] == '"')
+          field += '"', ++i;
+        else
+          break;
       }
       ++i;
       REQUIRE((i == text.size() || text[i] == ',' || text[i] == '\r'));
@@ -143,8 +146,10 @@ TEST_CASE("CSV: a strict RFC 4180 reader finds the header block, names, units an
       CHECK(records[header + 1][c] == table.columns[c].unit);
       for (std::size_t row = 0; row < table.rows(); ++row) {
         const auto& field = records[header + 2 + row][c];
-        if (std::isnan(table.columns[c].values[row])) CHECK(field.empty());
-        else check_value(std::stod(field), table.columns[c].values[row]);
+        if (std::isnan(table.columns[c].values[row]))
+          CHECK(field.empty());
+        else
+          check_value(std::stod(field), table.columns[c].values[row]);
       }
     }
     bool hash_found = false;
@@ -153,14 +158,16 @@ TEST_CASE("CSV: a strict RFC 4180 reader finds the header block, names, units an
   }
 }
 
-TEST_CASE(".dat: a Fortran program (gfortran, list-directed input) reads every value to the printed precision", "[export][formats]") {
+TEST_CASE(".dat: a Fortran program (gfortran, list-directed input) reads every value to the printed precision",
+          "[export][formats]") {
   FormatsFixture fixture;
   const auto reader = compiled_dat_reader(fixture.directory);
   for (const char* kind : {"grid", "sections"}) {
     const auto dat = fixture.directory.file(std::string(kind) + ".dat");
-    const auto exported = run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
-                                      " --kind " + kind + " --format dat --youngs-modulus 1e10 --poisson-ratio 0.3 --density 1725" +
-                                      " --surface-energy " + std::to_string(0.001 * 1e10 * 2e-8 / 2.73) + " --diameter 2e-8 -o " + dat);
+    const auto exported =
+        run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
+                    " --kind " + kind + " --format dat --youngs-modulus 1e10 --poisson-ratio 0.3 --density 1725" +
+                    " --surface-energy " + std::to_string(0.001 * 1e10 * 2e-8 / 2.73) + " --diameter 2e-8 -o " + dat);
     INFO(exported.text);
     REQUIRE(exported.exit_code == 0);
     auto request = with_material();
@@ -183,8 +190,10 @@ TEST_CASE("JSON: valid against schemas/lookup.schema.json, values as in the tabl
     for (std::size_t c = 0; c < table.columns.size(); ++c)
       for (std::size_t row = 0; row < table.rows(); ++row) {
         const auto& value = document.at("columns")[c].at("values")[row];
-        if (std::isnan(table.columns[c].values[row])) CHECK(value.is_null());
-        else CHECK(value.get<double>() == table.columns[c].values[row]);
+        if (std::isnan(table.columns[c].values[row]))
+          CHECK(value.is_null());
+        else
+          CHECK(value.get<double>() == table.columns[c].values[row]);
       }
   }
   auto broken = table_json(fixture.table());
@@ -235,7 +244,8 @@ std::vector<std::string> tokens(const std::string& text, const std::string& mark
 
 }  // namespace
 
-TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and entries that match it", "[export][formats]") {
+TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and entries that match it",
+          "[export][formats]") {
   FormatsFixture fixture;
   const auto table = fixture.table(with_material());
   const auto words = tokens(openfoam_table2d(table, "p_break_up"), "//");
@@ -248,7 +258,8 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
     if (c == '(' || c == ')' || c == ' ') {
       if (!current.empty()) parts.push_back(current), current.clear();
       if (c != ' ') parts.emplace_back(1, c);
-    } else current += c;
+    } else
+      current += c;
   }
   std::size_t i = 0;
   REQUIRE(parts.at(i++) == "(");
@@ -303,7 +314,8 @@ TEST_CASE("OpenFOAM: interpolation2DTable ascending in both, csvFile data and en
         count_of(dictionary, "outOfBounds         error;"));
   CHECK(count_of(dictionary, "outOfBounds         clamp") == 0);
   for (const auto& text : {dictionary, openfoam_table2d(table, "p_break_up")})
-    CHECK(text.find("// outside its speeds and sizes this table has no value: read it with outOfBounds error") != std::string::npos);
+    CHECK(text.find("// outside its speeds and sizes this table has no value: read it with outOfBounds error") !=
+          std::string::npos);
 
   try {
     openfoam_table2d(fixture.table(), "p_stick");  // both gamma/k_n: two conditions
@@ -323,7 +335,8 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   request.sizes = {32, 64, 128};
   StudyFits fits(store);
   const auto table = export_lookup_table(store, fits, *store.study(study), request);
-  const auto model = std::find_if(table.columns.begin(), table.columns.end(), [](const TableColumn& c) { return c.name == "model"; });
+  const auto model =
+      std::find_if(table.columns.begin(), table.columns.end(), [](const TableColumn& c) { return c.name == "model"; });
   REQUIRE(model != table.columns.end());
   CHECK(std::prev(model)->name == "inside_validity");
   CHECK(model->values == std::vector<double>{0, 0, 0, 1, 1, 1, 0, 0, 0});  // 64 was not run
@@ -343,7 +356,8 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   std::ofstream(h5, std::ios::binary) << hdf5_image(table);
   const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   REQUIRE(file >= 0);
-  CHECK(read_string_attribute(file, "fit_models.column") == std::vector<std::string>{"model: 0 = per_size, 1 = pooled_ln_n"});
+  CHECK(read_string_attribute(file, "fit_models.column") ==
+        std::vector<std::string>{"model: 0 = per_size, 1 = pooled_ln_n"});
   H5Fclose(file);
   const auto melcor = melcor_text(table);
   CHECK(melcor.find("! fit_models.pooled_ln_n: ") != std::string::npos);
@@ -351,7 +365,8 @@ TEST_CASE("Fit table with a size not run: the model column and fit_models in eve
   const auto openfoam = openfoam_table2d(table, "p_break_up");  // one condition: the model varies with the size
   CHECK(openfoam.find("// fit_models.per_size: ") != std::string::npos);
   std::size_t opened = 0;
-  for (const auto& word : tokens(openfoam, "//")) opened += static_cast<std::size_t>(std::count(word.begin(), word.end(), '('));
+  for (const auto& word : tokens(openfoam, "//"))
+    opened += static_cast<std::size_t>(std::count(word.begin(), word.end(), '('));
   CHECK(opened == 1 + 3 * 2 + 3 * 3);  // the list, per speed two, per (speed, size) one
 }
 
@@ -391,11 +406,13 @@ TEST_CASE("Two walls: wall_adhesive (1/0) is a column of the grid and sections t
     const auto* wall = table.find("wall_adhesive");
     REQUIRE(wall);
     REQUIRE(table.rows() == kSpeeds.size() * kSizes.size() * 2);
-    CHECK(std::count(wall->values.begin(), wall->values.end(), 1.0) == static_cast<long>(kSpeeds.size() * kSizes.size()));
+    CHECK(std::count(wall->values.begin(), wall->values.end(), 1.0) ==
+          static_cast<long>(kSpeeds.size() * kSizes.size()));
     CHECK(csv_column(strict_csv(csv_text(table)), "wall_adhesive") == wall->values);
     const auto dat = fixture.directory.file(std::string(kind) + ".dat");
-    const auto exported = run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
-                                      " --kind " + kind + " --format dat -o " + dat);
+    const auto exported =
+        run_command(std::string(AEROBREAK_BINARY) + " export --store " + fixture.directory.file("store.sqlite") +
+                    " --kind " + kind + " --format dat -o " + dat);
     INFO(exported.text);
     REQUIRE(exported.exit_code == 0);
     check_dat_read_back(reader, dat, table);
@@ -438,7 +455,8 @@ TEST_CASE("Two walls: OpenFOAM refuses naming wall_adhesive until select picks o
     } catch (const ExportError& error) {
       CHECK(error.status == 422);
       CHECK(error.field == "format");
-      CHECK_THAT(error.what(), Catch::Contains("differing in wall_adhesive") && Catch::Contains("select=wall_adhesive:1"));
+      CHECK_THAT(error.what(),
+                 Catch::Contains("differing in wall_adhesive") && Catch::Contains("select=wall_adhesive:1"));
     }
     request.select = {{"wall_adhesive", 0}};
     const auto bare_wall = openfoam_table2d(fixture.table(request), "p_break_up");

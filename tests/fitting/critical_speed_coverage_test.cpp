@@ -26,8 +26,9 @@ TEST_CASE("The 95 % profile-likelihood interval of v50 covers the truth in 93-97
     const CaseOutcomeTable table = synthetic::draw_study(law, speeds, 20, uniform);
     const auto groups = group_cases(table, request.speed_axis);
     REQUIRE(groups.size() == 1);
-    const LogisticFit fit = fit_logistic({}, Outcome::break_up, "impact_speed",
-                                         speed_rows(table, groups[0].grid_points, Outcome::break_up, request), request, {});
+    const LogisticFit fit =
+        fit_logistic({}, Outcome::break_up, "impact_speed",
+                     speed_rows(table, groups[0].grid_points, Outcome::break_up, request), request, {});
     REQUIRE(fit.critical.size() == 3);
     const CriticalValue& v50 = fit.critical[0];
     if (fit.common.status == FitStatus::ok) ++fitted;

@@ -24,8 +24,10 @@ CaseOutcomeTable study_of(const std::vector<double>& speeds, const std::vector<s
     for (const char letter : outcomes[g]) {
       CaseOutcome c;
       c.grid_point = g;
-      c.outcome = letter == 's' ? Outcome::stick : letter == 'b' ? Outcome::bounce : letter == 'u' ? Outcome::break_up
-                                                                                                     : Outcome::undetermined;
+      c.outcome = letter == 's'   ? Outcome::stick
+                  : letter == 'b' ? Outcome::bounce
+                  : letter == 'u' ? Outcome::break_up
+                                  : Outcome::undetermined;
       c.retained_mass_fraction = c.outcome == Outcome::stick ? 1.0 : 0.5;
       table.cases.push_back(c);
     }
@@ -119,7 +121,8 @@ TEST_CASE("A one-point grid says it has too few points, for every fit", "[fittin
 
 TEST_CASE("Grid points whose cases are all undetermined are counted, left out of the fits, and never guessed",
           "[fitting][edge]") {
-  const auto set = correlations_of(study_of({0.01, 0.02, 0.04, 0.08, 0.16}, {"sssss", "sssus", "?????", "uusuu", "uuuuu"}));
+  const auto set =
+      correlations_of(study_of({0.01, 0.02, 0.04, 0.08, 0.16}, {"sssss", "sssus", "?????", "uusuu", "uuuuu"}));
   const GridPointSummary& unknown = set.grid_points[2];
   CHECK(unknown.cases == 5);
   CHECK(unknown.undetermined == 5);
@@ -161,8 +164,7 @@ TEST_CASE("Fragment sizes drawn from a power law give back its exponent, and the
   for (std::int64_t s = 1; s <= kLargest; ++s) cdf.push_back(sum += std::pow(double(s), -2.0) / norm);
   synthetic::Uniform uniform(42);
   std::vector<std::int64_t> sizes;
-  for (int i = 0; i < 4000; ++i)
-    sizes.push_back(std::lower_bound(cdf.begin(), cdf.end(), uniform()) - cdf.begin() + 1);
+  for (int i = 0; i < 4000; ++i) sizes.push_back(std::lower_bound(cdf.begin(), cdf.end(), uniform()) - cdf.begin() + 1);
   const FragmentSizeFit fit = fit_fragment_sizes(sizes, kLargest);
   REQUIRE(fit.common.status == FitStatus::ok);
   // Within three standard errors of the truth.

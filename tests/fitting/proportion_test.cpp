@@ -23,8 +23,7 @@ TEST_CASE("Wilson interval: textbook values and edge cases", "[statistics]") {
   CHECK_THROWS(wilson_interval(3, 2));
 }
 
-TEST_CASE("Wilson interval: the bound at k = 0 is exactly 0 and at k = n exactly 1, not round-off",
-          "[statistics]") {
+TEST_CASE("Wilson interval: the bound at k = 0 is exactly 0 and at k = n exactly 1, not round-off", "[statistics]") {
   // Centre and half-width are equal in exact arithmetic there; in doubles their difference was
   // 5.55e-17 for k = 0 of n = 20, printed in the outcome table.
   for (std::size_t n = 1; n <= 1000; ++n) {

@@ -92,8 +92,9 @@ const Counts kLarge{{19, 17, 14, 11, 7, 4, 2, 1}, {1, 2, 4, 5, 5, 4, 3, 1}, {0, 
 void add_group(CaseOutcomeTable& table, double primaries, const Counts& counts) {
   for (std::size_t s = 0; s < kSpeeds.size(); ++s) {
     table.grid_points.push_back({{"impact_speed", kSpeeds[s]}, {"primaries", primaries}});
-    const std::pair<Outcome, int> outcomes[] = {
-        {Outcome::stick, counts.stick[s]}, {Outcome::bounce, counts.bounce[s]}, {Outcome::break_up, counts.break_up[s]}};
+    const std::pair<Outcome, int> outcomes[] = {{Outcome::stick, counts.stick[s]},
+                                                {Outcome::bounce, counts.bounce[s]},
+                                                {Outcome::break_up, counts.break_up[s]}};
     for (const auto& [outcome, n] : outcomes)
       for (int i = 0; i < n; ++i) {
         CaseOutcome c;
@@ -153,7 +154,8 @@ void check_critical(const CriticalValue& value, double estimate, double lower, d
 LogisticFit group_fit(const CaseOutcomeTable& table, Outcome response) {
   const auto groups = group_cases(table, "impact_speed");
   const auto request = speed_request();
-  return fit_logistic({}, response, "impact_speed", speed_rows(table, groups[0].grid_points, response, request), request, {});
+  return fit_logistic({}, response, "impact_speed", speed_rows(table, groups[0].grid_points, response, request),
+                      request, {});
 }
 
 }  // namespace
@@ -182,8 +184,8 @@ TEST_CASE("The pooled model with log N as covariate agrees with R", "[fitting][r
   request.covariates = {{"primaries", true}};
   std::vector<std::size_t> all(table.grid_points.size());
   std::iota(all.begin(), all.end(), 0);
-  const LogisticFit pooled =
-      fit_logistic({}, Outcome::break_up, "impact_speed", speed_rows(table, all, Outcome::break_up, request), request, {});
+  const LogisticFit pooled = fit_logistic({}, Outcome::break_up, "impact_speed",
+                                          speed_rows(table, all, Outcome::break_up, request), request, {});
   check_estimate(pooled.common, 0, 6.231419790302835, 1.144144841333684);
   check_estimate(pooled.common, 1, 1.974162739163768, 0.210954716603717);
   check_estimate(pooled.common, 2, -0.350161297993368, 0.226739531429917);
@@ -197,7 +199,8 @@ TEST_CASE("Pooled models pool along N only: one per wall, each R's glm on that w
   request.covariates = {{"primaries", true}};
   const CorrelationSet set = compute_correlations(two_wall_study(), request, {});
   const auto named = [&set](const std::string& name) -> const LogisticFit& {
-    const auto found = std::find_if(set.logistic.begin(), set.logistic.end(), [&](const LogisticFit& f) { return f.common.name == name; });
+    const auto found = std::find_if(set.logistic.begin(), set.logistic.end(),
+                                    [&](const LogisticFit& f) { return f.common.name == name; });
     REQUIRE(found != set.logistic.end());
     return *found;
   };
@@ -223,16 +226,18 @@ TEST_CASE("Pooled models pool along N only: one per wall, each R's glm on that w
     CHECK(fit.common.group.contains("/wall/adhesive"));
     CHECK(fit.common.cases == 320);
     // P(bounce) never reaches 0.5 in these counts: no v50, no law, and the fit says why.
-    CHECK(fit.axes == (fit.response == Outcome::bounce ? std::vector<std::string>{} : std::vector<std::string>{"primaries"}));
+    CHECK(fit.axes ==
+          (fit.response == Outcome::bounce ? std::vector<std::string>{} : std::vector<std::string>{"primaries"}));
     CHECK(fit.common.status == (fit.response == Outcome::bounce ? FitStatus::insufficient_data : FitStatus::ok));
   }
 }
 
 TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting][reference]") {
-  const std::vector<double> energy{0.3, 0.327, 0.3564, 0.3885, 0.4235, 0.4616, 0.5031, 0.5484, 0.5978, 0.6516, 0.7102, 0.7741,
-                                   0.8438, 0.9197, 1.0025, 1.0927, 1.1911, 1.2983, 1.4151, 1.5425, 1.6813, 1.8326, 1.9976, 2.1774,
-                                   2.3733, 2.5869, 2.8197, 3.0735, 3.3501, 3.6517, 3.9803, 4.3385, 4.729, 5.1546, 5.6185, 6.1242,
-                                   6.6754, 7.2762, 7.931, 8.6448, 9.4228, 10.2709, 11.1953, 12.2028, 13.3011, 14.4982, 15.803, 17.2253};
+  const std::vector<double> energy{0.3,    0.327,   0.3564,  0.3885,  0.4235,  0.4616,  0.5031, 0.5484, 0.5978, 0.6516,
+                                   0.7102, 0.7741,  0.8438,  0.9197,  1.0025,  1.0927,  1.1911, 1.2983, 1.4151, 1.5425,
+                                   1.6813, 1.8326,  1.9976,  2.1774,  2.3733,  2.5869,  2.8197, 3.0735, 3.3501, 3.6517,
+                                   3.9803, 4.3385,  4.729,   5.1546,  5.6185,  6.1242,  6.6754, 7.2762, 7.931,  8.6448,
+                                   9.4228, 10.2709, 11.1953, 12.2028, 13.3011, 14.4982, 15.803, 17.2253};
   const std::vector<int> broke{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1,
                                1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
   CaseOutcomeTable table;
@@ -258,8 +263,9 @@ TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting]
 }
 
 TEST_CASE("The quasi-binomial retained-fraction fit agrees with R", "[fitting][reference]") {
-  const std::vector<double> fractions{0.928, 0.871, 0.976, 0.834, 0.721, 0.905, 0.792, 0.814, 0.854, 0.597, 0.577, 0.464,
-                                      0.443, 0.345, 0.358, 0.16,  0.184, 0.219, 0.244, 0,     0.025, 0.101, 0.198, 0.128};
+  const std::vector<double> fractions{0.928, 0.871, 0.976, 0.834, 0.721, 0.905, 0.792, 0.814,
+                                      0.854, 0.597, 0.577, 0.464, 0.443, 0.345, 0.358, 0.16,
+                                      0.184, 0.219, 0.244, 0,     0.025, 0.101, 0.198, 0.128};
   CaseOutcomeTable table;
   table.axes = {"impact_speed"};
   for (std::size_t s = 0; s < kSpeeds.size(); ++s) {
@@ -280,7 +286,8 @@ TEST_CASE("The quasi-binomial retained-fraction fit agrees with R", "[fitting][r
 }
 
 TEST_CASE("The weighted power law of v50 agrees with R's weighted least squares", "[fitting][reference]") {
-  const double v50[] = {0.041, 0.052, 0.078, 0.094}, primaries[] = {32, 128, 32, 128}, gamma[] = {0.001, 0.001, 0.01, 0.01};
+  const double v50[] = {0.041, 0.052, 0.078, 0.094}, primaries[] = {32, 128, 32, 128},
+               gamma[] = {0.001, 0.001, 0.01, 0.01};
   const double sigma[] = {0.05, 0.06, 0.04, 0.08};  // standard errors of log v50
   std::vector<LogisticFit> groups(4);
   for (std::size_t g = 0; g < 4; ++g) {

@@ -29,8 +29,8 @@ struct LogisticLaw {
 
 // `speeds` grid points on the axis "impact_speed" (and one more axis "primaries" = N), `replicates`
 // cases each: break-up with the law's probability, stick otherwise.
-inline CaseOutcomeTable draw_study(const LogisticLaw& law, const std::vector<double>& speeds, int replicates, Uniform& uniform,
-                               double primaries = 32) {
+inline CaseOutcomeTable draw_study(const LogisticLaw& law, const std::vector<double>& speeds, int replicates,
+                                   Uniform& uniform, double primaries = 32) {
   CaseOutcomeTable table;
   table.axes = {"impact_speed", "primaries"};
   for (const double speed : speeds) {

@@ -41,7 +41,8 @@ TEST_CASE("group gaps are exact within the search gap and lower bounds beyond, c
   }
   std::vector<double> exact(groups, std::numeric_limits<double>::infinity());
   std::vector<std::pair<std::uint32_t, std::uint32_t>> close;
-  std::vector<std::vector<double>> pair_gap(groups, std::vector<double>(groups, std::numeric_limits<double>::infinity()));
+  std::vector<std::vector<double>> pair_gap(groups,
+                                            std::vector<double>(groups, std::numeric_limits<double>::infinity()));
   for (std::size_t i = 0; i < position.size(); ++i)
     for (std::size_t j = i + 1; j < position.size(); ++j) {
       if (group[i] == group[j]) continue;

@@ -80,8 +80,8 @@ TEST_CASE("the growth stops at the step limit, saying how many clusters remain")
   p.max_steps = 20000;
   std::vector<std::size_t> seen;
   const auto record = [&](const DiffusionLimitedProgress& g) { seen.push_back(g.clusters); };
-  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record), Catch::Contains("clusters remain") &&
-                                                              Catch::Contains("after 20000 steps"));
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record),
+                    Catch::Contains("clusters remain") && Catch::Contains("after 20000 steps"));
   REQUIRE(seen.size() == 21);  // at steps 0, 1000, ..., 20000
   CHECK(seen.front() == 40);
   CHECK(seen.back() < 40);
@@ -94,8 +94,8 @@ TEST_CASE("the rigid far-field growth stops at its rigid step limit and looks wh
   p.max_steps = 200;
   std::vector<std::size_t> seen;
   const auto record = [&](const DiffusionLimitedProgress& g) { seen.push_back(g.clusters); };
-  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record), Catch::Contains("clusters remain") &&
-                                                              Catch::Contains("after 200 rigid steps"));
+  CHECK_THROWS_WITH(grow_diffusion_limited(p, 1, record),
+                    Catch::Contains("clusters remain") && Catch::Contains("after 200 rigid steps"));
   REQUIRE(seen.size() >= 2);
   CHECK(seen.front() == 40);
   CHECK(std::adjacent_find(seen.begin(), seen.end()) == seen.end());
@@ -152,8 +152,8 @@ TEST_CASE("the DLCA ensemble fractal dimension is the measured 1.64 within what 
     for (const SizeRadiusSample& s : history.samples()) samples.push_back(s);
   }
   const FractalScalingFit fit = fit_fractal_scaling(samples, 0.5);
-  INFO("D_f = " << fit.fractal_dimension << " +- " << fit.fractal_dimension_standard_error << ", k_f = "
-                << fit.prefactor << ", " << samples.size() << " clusters");
+  INFO("D_f = " << fit.fractal_dimension << " +- " << fit.fractal_dimension_standard_error
+                << ", k_f = " << fit.prefactor << ", " << samples.size() << " clusters");
   REQUIRE(samples.size() > 300);
   CHECK(fit.max_primary_count == 64);
   CHECK(fit.fractal_dimension > 1.64 - 0.15);

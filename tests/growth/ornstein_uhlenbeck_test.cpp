@@ -20,15 +20,18 @@ TEST_CASE("the step's variances and covariance are those of the Ornstein-Uhlenbe
     CHECK(s.velocity_decay == Approx(mu).epsilon(1e-12));
     CHECK(s.velocity_spread * s.velocity_spread == Approx(sigma2 * (1.0 - mu * mu)).epsilon(1e-12));
     CHECK(s.correlated_spread * s.velocity_spread == Approx(sigma2 * (1.0 - mu) * (1.0 - mu) / gamma).epsilon(1e-12));
-    const double position_variance = s.correlated_spread * s.correlated_spread + s.independent_spread * s.independent_spread;
+    const double position_variance =
+        s.correlated_spread * s.correlated_spread + s.independent_spread * s.independent_spread;
     CHECK(position_variance == Approx(sigma2 / (gamma * gamma) * (2.0 * x - 3.0 + 4.0 * mu - mu * mu)).epsilon(1e-9));
   }
   // Short steps: the series (2/3) x^3 - x^4 / 2 + ... instead of the cancelling closed form;
   // ballistic limit (kT / M) dt^2 for the spread of x' and v' together.
   const double x = 1e-4, dt = x / gamma;
   const OrnsteinUhlenbeckStep s = ornstein_uhlenbeck_step(mass, drag, kt, dt);
-  const double position_variance = s.correlated_spread * s.correlated_spread + s.independent_spread * s.independent_spread;
-  CHECK(position_variance == Approx(sigma2 / (gamma * gamma) * (2.0 / 3.0) * x * x * x * (1.0 - 0.75 * x)).epsilon(1e-7));
+  const double position_variance =
+      s.correlated_spread * s.correlated_spread + s.independent_spread * s.independent_spread;
+  CHECK(position_variance ==
+        Approx(sigma2 / (gamma * gamma) * (2.0 / 3.0) * x * x * x * (1.0 - 0.75 * x)).epsilon(1e-7));
   CHECK(s.drift_per_velocity == Approx(dt).epsilon(1e-4));
 }
 

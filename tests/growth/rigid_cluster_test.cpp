@@ -53,7 +53,8 @@ TEST_CASE("a rigid cluster keeps its primaries' positions and rigid motion") {
   double spread = 0.0;
   for (const Vec3& p : x) spread += norm2(p - centre);
   CHECK(c.inertia.x + c.inertia.y + c.inertia.z == Approx(2.0 * spread + 12.0 * 0.1));
-  CHECK(c.rotational_drag.x + c.rotational_drag.y + c.rotational_drag.z == Approx(0.2 * (2.0 * spread) + 12.0 * 0.2 / 3.0));
+  CHECK(c.rotational_drag.x + c.rotational_drag.y + c.rotational_drag.z ==
+        Approx(0.2 * (2.0 * spread) + 12.0 * 0.2 / 3.0));
   CHECK(c.reach == Approx(std::sqrt(norm2(x[0] - centre)) + 0.5));
 }
 
@@ -131,8 +132,9 @@ TEST_CASE("a rigid dimer's axis decorrelates by rotational diffusion, and its sp
     const Vec3 axis = member_positions(c)[1] - member_positions(c)[0];
     for (int s = 0; s < 40; ++s) propagate(c, t / 40.0, bath.temperature, random);
     correlation += dot(member_positions(c)[1] - member_positions(c)[0], axis) / dimers;
-    equipartition += (c.inertia.x * c.spin.x * c.spin.x + c.inertia.y * c.spin.y * c.spin.y +
-                      c.inertia.z * c.spin.z * c.spin.z) / (3.0 * dimers);
+    equipartition +=
+        (c.inertia.x * c.spin.x * c.spin.x + c.inertia.y * c.spin.y * c.spin.y + c.inertia.z * c.spin.z * c.spin.z) /
+        (3.0 * dimers);
   }
   INFO("<u(0).u(t)> " << correlation << " against " << std::exp(-angle_variance) << ", <I Omega^2> / kT "
                       << equipartition / bath.temperature);

@@ -77,7 +77,8 @@ TEST_CASE("the study cases of figure 4 are valid cases") {
     CHECK_THAT(adhesion_energy_ratio(c.material, 1.0, c.speed), WithinRel(constant * 0.01 * 200.0, 1e-9));
   }
   CHECK(load_impact_case(testing::source_path("studies/figure4_impact.case.json")).cluster.generator.primaries == 4096);
-  CHECK(load_impact_case(testing::source_path("studies/figure4_impact_n256.case.json")).cluster.generator.primaries == 256);
+  CHECK(load_impact_case(testing::source_path("studies/figure4_impact_n256.case.json")).cluster.generator.primaries ==
+        256);
 }
 
 TEST_CASE("invalid cases are rejected with errors that name the field") {
@@ -176,14 +177,18 @@ TEST_CASE("invalid cases are rejected with errors that name the field") {
     CHECK(names(v, "/impact/speed", "must be > 0"));
   }
   SECTION("a schema error does not hide an error of the rules the schema cannot state") {
-    c["model"] = {{"friction", -1.0}, {"normal", "hertz"}, {"rolling", {{"enabled", true}, {"critical_displacement", 0.01}}}};
+    c["model"] = {
+        {"friction", -1.0}, {"normal", "hertz"}, {"rolling", {{"enabled", true}, {"critical_displacement", 0.01}}}};
     const auto v = rejection(c);
     CHECK(names(v, "/model/friction", "must be >= 0"));
     CHECK(names(v, "/model/rolling/enabled", "adhesive normal law"));
     CHECK(v.size() == 2);
   }
   SECTION("a material in SI without \"units\": the hint, then the case's problems in the units it meant") {
-    c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0}, {"surface_energy", 0.05},
+    c["material"] = {{"youngs_modulus", 2.5e10},
+                     {"poisson_ratio", 0.3},
+                     {"density", 1725.0},
+                     {"surface_energy", 0.05},
                      {"diameter", 2e-8}};
     c["run"] = {{"time_limit_s", 3e-7}};
     c["model"] = {{"friction", -1.0}};
@@ -196,11 +201,9 @@ TEST_CASE("invalid cases are rejected with errors that name the field") {
 }
 
 TEST_CASE("a file that is not JSON is rejected naming the parse error") {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("aerobreak_impact_not_json_" + std::to_string(::getpid()) + ".json");
-  {
-    std::ofstream(path) << "{\"cluster\": ";
-  }
+  const auto path =
+      std::filesystem::temp_directory_path() / ("aerobreak_impact_not_json_" + std::to_string(::getpid()) + ".json");
+  { std::ofstream(path) << "{\"cluster\": "; }
   CHECK_THROWS_WITH(load_impact_case(path), Contains("is not valid JSON"));
   std::filesystem::remove(path);
 }
@@ -225,8 +228,11 @@ TEST_CASE("physical units keep gamma/k_n and lambda (eq 19)") {
 TEST_CASE("a physical case may give its time limit in seconds") {
   Json c = testing::minimal_case();
   c["units"] = "physical";
-  c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0},
-                   {"surface_energy", 0.05},   {"diameter", 2e-8}};
+  c["material"] = {{"youngs_modulus", 2.5e10},
+                   {"poisson_ratio", 0.3},
+                   {"density", 1725.0},
+                   {"surface_energy", 0.05},
+                   {"diameter", 2e-8}};
   c["impact"]["speed"] = 1.0;
   c["run"] = {{"time_limit_s", 2e-8}};
   const ImpactCase p = parse_impact_case(c);

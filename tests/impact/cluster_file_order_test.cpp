@@ -62,9 +62,8 @@ TEST_CASE("a cluster read from a file in any order is listed along its neighbour
   CHECK(widest_bond(listed) <= widest_bond(generated) + 64);
   REQUIRE(listed.size() == generated.size());
   auto sorted = [](std::vector<Vec3> x) {
-    std::sort(x.begin(), x.end(), [](const Vec3& a, const Vec3& b) {
-      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-    });
+    std::sort(x.begin(), x.end(),
+              [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
     return x;
   };
   const auto a = sorted(listed.position), b = sorted(generated.position);

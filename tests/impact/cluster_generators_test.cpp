@@ -42,7 +42,8 @@ std::vector<GeneratorRequest> one_of_each() {
 }
 
 bool same_request(const GeneratorRequest& a, const GeneratorRequest& b) {
-  const bool own_tunable = a.method != "tunable" || (a.fractal_dimension == b.fractal_dimension && a.prefactor == b.prefactor);
+  const bool own_tunable =
+      a.method != "tunable" || (a.fractal_dimension == b.fractal_dimension && a.prefactor == b.prefactor);
   const bool own_dlca = a.method != "dlca" || a.sintering == b.sintering;
   return a.method == b.method && a.primaries == b.primaries && a.seed == b.seed &&
          a.geometric_standard_deviation == b.geometric_standard_deviation && own_tunable && own_dlca;
@@ -83,7 +84,8 @@ TEST_CASE("the generator registry round trips: names, aliases, requests to case 
   }
   // An alias is read as its generator and written under the registered name.
   std::vector<GeneratorViolation> violations;
-  const GeneratorRequest alias = read_generator_request({{"method", "bcca"}, {"primaries", 8}, {"seed", 1}}, violations);
+  const GeneratorRequest alias =
+      read_generator_request({{"method", "bcca"}, {"primaries", 8}, {"seed", 1}}, violations);
   CHECK(violations.empty());
   CHECK(alias.method == "ballistic");
   CHECK(generator_document(alias)["method"] == "ballistic");
@@ -91,12 +93,14 @@ TEST_CASE("the generator registry round trips: names, aliases, requests to case 
 
 TEST_CASE("a generator refuses another generator's fields and requires its own") {
   std::vector<GeneratorViolation> violations;
-  read_generator_request({{"method", "ballistic"}, {"primaries", 8}, {"seed", 1}, {"fractal_dimension", 1.8}}, violations);
+  read_generator_request({{"method", "ballistic"}, {"primaries", 8}, {"seed", 1}, {"fractal_dimension", 1.8}},
+                         violations);
   REQUIRE(fields_of(violations) == std::vector<std::string>{"fractal_dimension"});
   CHECK_THAT(violations[0].message, Contains("applies to the tunable generator only, not to ballistic"));
 
   violations.clear();
-  read_generator_request({{"method", "tunable"}, {"primaries", 8}, {"seed", 1}, {"fractal_dimension", 1.8}}, violations);
+  read_generator_request({{"method", "tunable"}, {"primaries", 8}, {"seed", 1}, {"fractal_dimension", 1.8}},
+                         violations);
   REQUIRE(fields_of(violations) == std::vector<std::string>{"prefactor"});
   CHECK_THAT(violations[0].message, Contains("required by the tunable generator"));
 
@@ -106,8 +110,12 @@ TEST_CASE("a generator refuses another generator's fields and requires its own")
   CHECK(fields_of(violations) == std::vector<std::string>{"geometric_standard_deviation"});
 
   violations.clear();
-  read_generator_request({{"method", "tunable"}, {"primaries", 8}, {"seed", 1}, {"fractal_dimension", 3.0},
-                          {"prefactor", 1.3}, {"sintering", true}},
+  read_generator_request({{"method", "tunable"},
+                          {"primaries", 8},
+                          {"seed", 1},
+                          {"fractal_dimension", 3.0},
+                          {"prefactor", 1.3},
+                          {"sintering", true}},
                          violations);
   CHECK(fields_of(violations) == std::vector<std::string>{"sintering", "fractal_dimension"});
 }
@@ -115,8 +123,8 @@ TEST_CASE("a generator refuses another generator's fields and requires its own")
 TEST_CASE("each generator of the registry builds what its own generator function builds") {
   const std::vector<GeneratorRequest> requests = one_of_each();
   const GeneratorRequest& b = requests[0];
-  CHECK(same_cluster(generate_cluster(b),
-                     ballistic_cluster_cluster_aggregation({b.primaries, 1.0, b.geometric_standard_deviation}, b.seed)));
+  CHECK(same_cluster(generate_cluster(b), ballistic_cluster_cluster_aggregation(
+                                              {b.primaries, 1.0, b.geometric_standard_deviation}, b.seed)));
   DiffusionLimitedParameters dlca;
   dlca.primary_count = requests[1].primaries;
   dlca.sintering = requests[1].sintering;

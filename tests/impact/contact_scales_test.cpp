@@ -64,9 +64,8 @@ TEST_CASE("E_break = 1.5426 F_c delta_c: the JKR work from the zero-load equilib
   CHECK_THAT(integrated, WithinRel(closed_form, 1e-6));
   CHECK_THAT(closed_form, WithinAbs(1.54, 0.005));  // the coefficient of Chokshi et al. 1993, Wada et al. 2007
 
-  const ContactEnergies e = contact_energies(*law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0,
-                                                                         MaterialTable({reduced_material(0.001, 0.3)}).pair(0, 0)),
-                                             0.0);
+  const ContactEnergies e = contact_energies(
+      *law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, MaterialTable({reduced_material(0.001, 0.3)}).pair(0, 0)), 0.0);
   CHECK_THAT(e.equilibrium_overlap, WithinRel(equilibrium, 1e-12));
   CHECK_THAT(e.breaking_energy / scale, WithinRel(closed_form, 1e-9));
   CHECK(std::isnan(e.rolling_energy));
@@ -77,9 +76,8 @@ TEST_CASE("E_break with the force-controlled separation is the work to F = -F_c,
   const ContactConstants c = primary_pair(*law, 0.01);
   const double equilibrium = c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius);
   const double integrated = work_pulling(*law, c, equilibrium, -c.break_overlap);
-  const ContactEnergies e = contact_energies(*law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0,
-                                                                         MaterialTable({reduced_material(0.01, 0.3)}).pair(0, 0)),
-                                             0.0);
+  const ContactEnergies e = contact_energies(
+      *law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, MaterialTable({reduced_material(0.01, 0.3)}).pair(0, 0)), 0.0);
   CHECK_THAT(e.breaking_energy, WithinRel(integrated, 1e-6));
   CHECK_THAT(e.breaking_energy / (c.pull_off_force * c.critical_overlap), WithinAbs(1.0691, 1e-4));
 }
@@ -90,7 +88,8 @@ TEST_CASE("the contact scales of the reference pair of the literature (gamma/k_n
   // xi_crit = 0.01 d; in k_n d^2 all are 1e5 times smaller.
   const auto law = make_contact_forces(jkr(), NormalLaw::jkr);
   const MaterialTable materials({reduced_material(0.001, 0.3)});
-  const ContactEnergies e = contact_energies(*law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.01);
+  const ContactEnergies e =
+      contact_energies(*law, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.01);
   CHECK_THAT(e.pull_off_force * e.critical_overlap * 1e5, WithinRel(2.893, 5e-4));
   CHECK_THAT(e.breaking_energy * 1e5, WithinRel(1.5426 * 2.893, 5e-4));
   CHECK_THAT(e.rolling_energy, WithinRel(6.0 * pi * pi * 0.001 * 0.25 * 0.01, 1e-12));
@@ -104,7 +103,8 @@ TEST_CASE("E_break of the DMT law is 3/5 F_c delta_0, a law without adhesion has
   spec.normal = NormalLaw::dmt;
   const auto dmt = make_contact_forces(spec, NormalLaw::dmt);
   const MaterialTable materials({reduced_material(0.001, 0.3)});
-  const ContactEnergies e = contact_energies(*dmt, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.0);
+  const ContactEnergies e =
+      contact_energies(*dmt, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.0);
   // Hertz K delta0^(3/2) = F_c at zero load; U(delta0) = (2/5) K delta0^(5/2) - F_c delta0; the
   // contact lets go at delta = 0, where U = 0.
   const double fc = 2.0 * pi * 0.002 * 0.25;
@@ -116,7 +116,8 @@ TEST_CASE("E_break of the DMT law is 3/5 F_c delta_0, a law without adhesion has
 
   spec.normal = NormalLaw::hertz;
   const auto hertz = make_contact_forces(spec, NormalLaw::hertz);
-  const ContactEnergies none = contact_energies(*hertz, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.0);
+  const ContactEnergies none =
+      contact_energies(*hertz, sphere_pair_constants(0.5, 1.0, 0.5, 1.0, materials.pair(0, 0)), 0.0);
   CHECK(none.breaking_energy == 0.0);
   const EnergyGroups g = energy_groups(1.0, 10, none);
   CHECK(std::isnan(g.energy_per_contact));
@@ -143,7 +144,9 @@ TEST_CASE("the small-strain check: contact radius and overlap over the primary r
   wall.material = 1;
   const ContactModelSpec spec = jkr();
   // Zero load: a = a0, a0 = (9 pi w R*^2 / (2 E*))^(1/3) with w = 2 gamma, E* = 3/2; delta = a0^2/(3 R*).
-  const auto a0 = [&](double reduced_radius) { return std::cbrt(9.0 * pi * 2.0 * gamma * reduced_radius * reduced_radius / 3.0); };
+  const auto a0 = [&](double reduced_radius) {
+    return std::cbrt(9.0 * pi * 2.0 * gamma * reduced_radius * reduced_radius / 3.0);
+  };
   const double pair_a0 = a0(0.25), wall_a0 = a0(0.5);
 
   SECTION("at rest: pairs inside the range, the same primary on an adhesive wall of its material outside it") {
@@ -152,7 +155,7 @@ TEST_CASE("the small-strain check: contact radius and overlap over the primary r
     deepest.wall = wall_a0 * wall_a0 / (3.0 * 0.5) / 0.5;
     const SmallStrainCheck check = check_small_strain(deepest, p, materials, wall, spec);
     CHECK_THAT(check.pair.contact_radius_ratio, WithinRel(pair_a0 / 0.5, 1e-9));  // 0.455
-    CHECK_THAT(check.pair.overlap_ratio, WithinRel(*deepest.pair / 2.0, 1e-14));   // R* = R/2
+    CHECK_THAT(check.pair.overlap_ratio, WithinRel(*deepest.pair / 2.0, 1e-14));  // R* = R/2
     CHECK_THAT(check.wall.contact_radius_ratio, WithinRel(wall_a0 / 0.5, 1e-9));  // 0.722
     CHECK_THAT(check.wall.overlap_ratio, WithinRel(*deepest.wall, 1e-14));        // R* = R
     CHECK(check.pair.contact_radius_ratio < 0.5);

@@ -252,16 +252,19 @@ TEST_CASE("the outcome-fixed judgement: a break-up that can no longer become any
 
   SECTION("what the settle judgement refuses, this one refuses too") {
     mean[0].z = -0.05;
-    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds), Catch::Matchers::Contains("not at rest"));
+    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds),
+               Catch::Matchers::Contains("not at rest"));
   }
   SECTION("pieces in flight on course to meet") {
     mean[1] = {0.2, 0.0, 0.5};
     mean[2] = {-0.2, 0.0, 0.5};
-    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds), Catch::Matchers::Contains("approaching"));
+    CHECK_THAT(outcome_open_reason(f, mean, gap_before, up, 0.01, thresholds),
+               Catch::Matchers::Contains("approaching"));
   }
   SECTION("a stick or a bounce is not fixed by this rule") {
     const std::vector<Fragment> deposit{f[0]};
-    CHECK_THAT(outcome_open_reason(deposit, {mean[0]}, {0.0}, up, 0.01, thresholds), Catch::Matchers::Contains("stick"));
+    CHECK_THAT(outcome_open_reason(deposit, {mean[0]}, {0.0}, up, 0.01, thresholds),
+               Catch::Matchers::Contains("stick"));
     std::vector<Fragment> bouncing{fragment(95, false, 0.5), fragment(5, true, 0.0)};
     bouncing[0].centre_of_mass = {0.0, 0.0, 12.0};
     bouncing[0].lowest_gap = 9.5;

@@ -65,7 +65,8 @@ TEST_CASE("aerobreak impact refuses an invalid case and names the field") {
   const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   Json c = testing::minimal_case();
   c["model"] = {{"friction", -0.5}};
-  const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c.dump(2)).string());
+  const auto out =
+      run_command(std::string(AEROBREAK_BINARY) + " impact " + scratch.write("bad.json", c.dump(2)).string());
   CHECK(out.exit_code == 2);
   CHECK_THAT(out.text, Contains("/model/friction: must be >= 0 (got -0.5)"));
 }
@@ -95,8 +96,11 @@ TEST_CASE("aerobreak impact --check prints tau, the time step, lambda and the en
   const aerobreak::testing::ScratchDirectory scratch("impact_cli");
   Json c = testing::minimal_case();
   c["units"] = "physical";
-  c["material"] = {{"youngs_modulus", 2.5e10}, {"poisson_ratio", 0.3}, {"density", 1725.0},
-                   {"surface_energy", 0.05},   {"diameter", 2e-8}};
+  c["material"] = {{"youngs_modulus", 2.5e10},
+                   {"poisson_ratio", 0.3},
+                   {"density", 1725.0},
+                   {"surface_energy", 0.05},
+                   {"diameter", 2e-8}};
   c["impact"]["speed"] = 1.0;
   c["model"] = {{"rolling", {{"enabled", true}, {"critical_displacement", 0.02}}}};
   const auto out = run_command(std::string(AEROBREAK_BINARY) + " impact -o /dev/null --check " +
@@ -113,7 +117,8 @@ TEST_CASE("aerobreak impact --check prints tau, the time step, lambda and the en
   };
   CHECK_THAT(out.text, Contains(line("time unit tau = sqrt(m/k_n) = %.4g s", parsed.physical->time_unit())));
   CHECK_THAT(out.text, Contains(line("time step %.6g tau", prepared.time_step)));
-  CHECK_THAT(out.text, Contains(line("lambda (eq 19) = %.6g", adhesion_energy_ratio(parsed.material, 1.0, parsed.speed))));
+  CHECK_THAT(out.text,
+             Contains(line("lambda (eq 19) = %.6g", adhesion_energy_ratio(parsed.material, 1.0, parsed.speed))));
   CHECK_THAT(out.text, Contains(line("E_kin / (N_c E_break) = %.6g", prepared.energy_groups.energy_per_contact)));
   CHECK_THAT(out.text, Contains(line("E_kin / E_roll = %.6g", prepared.energy_groups.energy_over_rolling)));
   CHECK_THAT(out.text, Contains("(1.5426 F_c delta_c)"));

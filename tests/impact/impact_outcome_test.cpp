@@ -184,7 +184,8 @@ TEST_CASE("a physical case gives its times, velocities, energies and restitution
   const double E = 2.5e10, nu = 0.3, rho = 1725.0, gamma = 0.05, d = 2e-8, v = 5.0, xi = 0.02;
   Json c = testing::minimal_case();
   c["units"] = "physical";
-  c["material"] = {{"youngs_modulus", E}, {"poisson_ratio", nu}, {"density", rho}, {"surface_energy", gamma}, {"diameter", d}};
+  c["material"] = {
+      {"youngs_modulus", E}, {"poisson_ratio", nu}, {"density", rho}, {"surface_energy", gamma}, {"diameter", d}};
   c["model"] = {{"damping", {{"law", "viscoelastic"}, {"dissipative_time", 0.05}}},
                 {"rolling", {{"enabled", true}, {"critical_displacement", xi}}}};
   c["impact"]["speed"] = v;
@@ -214,8 +215,7 @@ TEST_CASE("a physical case gives its times, velocities, energies and restitution
              WithinRel(6.0 * std::numbers::pi * std::numbers::pi * gamma * d / 4.0 * xi * d, 1e-9));
   const Json& inputs = si["restitution_inputs"];
   CHECK_THAT(inputs["impact_normal_velocity_m_per_s"].get<double>(), WithinRel(-v, 1e-12));
-  CHECK_THAT(inputs["rebound_normal_velocity_m_per_s"].get<double>(),
-             WithinAbs(r.restitution_normal * v, 1e-9 * v));
+  CHECK_THAT(inputs["rebound_normal_velocity_m_per_s"].get<double>(), WithinAbs(r.restitution_normal * v, 1e-9 * v));
   REQUIRE(si["reentrained_fragments"].size() == r.classification.reentrained.size());
   for (std::size_t k = 0; k < r.classification.reentrained.size(); ++k)
     CHECK_THAT(si["reentrained_fragments"][k]["mass_kg"].get<double>(),
@@ -224,7 +224,8 @@ TEST_CASE("a physical case gives its times, velocities, energies and restitution
 }
 
 TEST_CASE("the outcome examples of docs/IMPACT.md are valid cases, and the robust ones give their class") {
-  for (const char* name : {"stick", "stick_fractured", "monomer_lost", "bounce", "break_up", "undetermined", "physical"})
+  for (const char* name :
+       {"stick", "stick_fractured", "monomer_lost", "bounce", "break_up", "undetermined", "physical"})
     CHECK_NOTHROW(load_impact_case(testing::source_path(std::string("studies/examples/") + name + ".case.json")));
   // The others hinge on one cluster's details (which primary lets go), which the last bits of
   // the arithmetic can move; these do not.

@@ -26,20 +26,35 @@ namespace {
 // The suite's file for each implemented keyword. Keywords absent here have no file in the suite
 // (annotations, which assert nothing) or are tested by json_schema_test.cpp ($defs, which draft 7
 // calls "definitions" and tests only through its meta-schema, a remote reference).
-const std::map<std::string, std::string> kSuiteFile{
-    {"type", "type"},          {"enum", "enum"},         {"const", "const"},
-    {"multipleOf", "multipleOf"}, {"minimum", "minimum"}, {"maximum", "maximum"},
-    {"exclusiveMinimum", "exclusiveMinimum"},             {"exclusiveMaximum", "exclusiveMaximum"},
-    {"minLength", "minLength"}, {"maxLength", "maxLength"}, {"minItems", "minItems"},
-    {"maxItems", "maxItems"},  {"items", "items"},       {"required", "required"},
-    {"properties", "properties"}, {"additionalProperties", "additionalProperties"},
-    {"allOf", "allOf"},        {"anyOf", "anyOf"},       {"oneOf", "oneOf"},
-    {"not", "not"},            {"if", "if-then-else"},   {"then", "if-then-else"},
-    {"else", "if-then-else"},  {"$ref", "ref"},          {"default", "default"}};
+const std::map<std::string, std::string> kSuiteFile{{"type", "type"},
+                                                    {"enum", "enum"},
+                                                    {"const", "const"},
+                                                    {"multipleOf", "multipleOf"},
+                                                    {"minimum", "minimum"},
+                                                    {"maximum", "maximum"},
+                                                    {"exclusiveMinimum", "exclusiveMinimum"},
+                                                    {"exclusiveMaximum", "exclusiveMaximum"},
+                                                    {"minLength", "minLength"},
+                                                    {"maxLength", "maxLength"},
+                                                    {"minItems", "minItems"},
+                                                    {"maxItems", "maxItems"},
+                                                    {"items", "items"},
+                                                    {"required", "required"},
+                                                    {"properties", "properties"},
+                                                    {"additionalProperties", "additionalProperties"},
+                                                    {"allOf", "allOf"},
+                                                    {"anyOf", "anyOf"},
+                                                    {"oneOf", "oneOf"},
+                                                    {"not", "not"},
+                                                    {"if", "if-then-else"},
+                                                    {"then", "if-then-else"},
+                                                    {"else", "if-then-else"},
+                                                    {"$ref", "ref"},
+                                                    {"default", "default"}};
 // Boolean schemas (true, false) are implemented too: not a keyword, a file of their own.
 const std::string kBooleanSchemaFile = "boolean_schema";
-const std::set<std::string> kTestedElsewhere{"$defs",  "$schema",    "$id",      "$comment", "title",    "description",
-                                             "examples", "format", "deprecated", "readOnly", "writeOnly"};
+const std::set<std::string> kTestedElsewhere{"$defs",    "$schema", "$id",        "$comment", "title",    "description",
+                                             "examples", "format",  "deprecated", "readOnly", "writeOnly"};
 
 // A group (test empty: all its tests) or one test that needs what the validator does not implement.
 struct Skip {
@@ -62,7 +77,8 @@ const std::vector<Skip> kSkips{
     {"ref", "Recursive references between schemas", "",
      "$id below the root (a new base URI for references) is not implemented"},
     {"properties", "properties, patternProperties, additionalProperties interaction", "", kPatternProperties},
-    {"additionalProperties", "additionalProperties being false does not allow other properties", "", kPatternProperties},
+    {"additionalProperties", "additionalProperties being false does not allow other properties", "",
+     kPatternProperties},
     {"additionalProperties", "non-ASCII pattern with additionalProperties", "", kPatternProperties},
 };
 
@@ -84,8 +100,9 @@ std::filesystem::path newest_draft(const std::filesystem::path& suite) {
 
 std::filesystem::path suite_directory() {
   const std::filesystem::path suite(JSON_SCHEMA_TEST_SUITE_DIR);
-  INFO("JSON-Schema-Test-Suite not found at configure time (" << suite << "): scripts/setup.sh installs Debian's "
-       "json-schema-test-suite; re-run cmake afterwards");
+  INFO("JSON-Schema-Test-Suite not found at configure time (" << suite
+                                                              << "): scripts/setup.sh installs Debian's "
+                                                                 "json-schema-test-suite; re-run cmake afterwards");
   REQUIRE(std::filesystem::is_directory(suite / "tests"));
   return suite;
 }

@@ -169,5 +169,6 @@ TEST_CASE("annotations are accepted and assert nothing") {
   const Json schema = Json::parse(R"({"$schema": "https://json-schema.org/draft/2020-12/schema", "$id": "urn:x",
       "$comment": "c", "title": "t", "description": "d", "default": 1, "examples": [1], "format": "email",
       "deprecated": true, "readOnly": true, "writeOnly": false})");
-  for (const auto& document : {Json("not an email"), Json(nullptr), Json::object(), Json::array({1})}) CHECK(valid(schema, document));
+  for (const auto& document : {Json("not an email"), Json(nullptr), Json::object(), Json::array({1})})
+    CHECK(valid(schema, document));
 }

@@ -67,7 +67,8 @@ TEST_CASE("observers see the simulation at each of their own moments, in their o
   Recorder every3(1, 3, log), every5(2, 5, log);
   CHECK_FALSE(run_observed(*run.simulation, 16 * kStep, {&every3, &every5}));
   CHECK(run.simulation->step_count() == 16);
-  const std::vector<std::pair<int, std::int64_t>> expected{{1, 3}, {2, 5}, {1, 6}, {1, 9}, {2, 10}, {1, 12}, {1, 15}, {2, 15}};
+  const std::vector<std::pair<int, std::int64_t>> expected{{1, 3},  {2, 5},  {1, 6},  {1, 9},
+                                                           {2, 10}, {1, 12}, {1, 15}, {2, 15}};
   CHECK(log == expected);
 }
 

@@ -112,9 +112,9 @@ TEST_CASE("a stored name is kept unless overwriting is asked for") {
   store_cluster(file.path(), "a", first, bcca_origin(1));
   store_cluster(file.path(), "b", first, bcca_origin(1));
 
-  CHECK_THROWS_WITH(store_cluster(file.path(), "a", second, bcca_origin(2)),
-                    Catch::Contains("'a'") && Catch::Contains("already stored") &&
-                        Catch::Contains(file.path().string()));
+  CHECK_THROWS_WITH(store_cluster(file.path(), "a", second, bcca_origin(2)), Catch::Contains("'a'") &&
+                                                                                 Catch::Contains("already stored") &&
+                                                                                 Catch::Contains(file.path().string()));
   CHECK(bit_identical(read_cluster(file.path(), "a").cluster, first));
 
   store_cluster(file.path(), "a", second, bcca_origin(2), ExistingCluster::overwrite);
@@ -127,9 +127,9 @@ TEST_CASE("reading a cluster that is not there names it and the file") {
   const TemporaryPath file(".h5");
   store_cluster(file.path(), "present", awkward_cluster(), bcca_origin(1));
   CHECK_THROWS_AS(read_cluster(file.path(), "absent"), std::runtime_error);
-  CHECK_THROWS_WITH(read_cluster(file.path(), "absent"),
-                    Catch::Contains("'absent'") && Catch::Contains(file.path().string()) &&
-                        Catch::Contains("'present'"));
+  CHECK_THROWS_WITH(read_cluster(file.path(), "absent"), Catch::Contains("'absent'") &&
+                                                             Catch::Contains(file.path().string()) &&
+                                                             Catch::Contains("'present'"));
   CHECK(open_hdf5_objects() == 0);
 }
 

@@ -124,8 +124,10 @@ TEST_CASE("80 sockets dripping headers and 70 dripping bodies, reconnecting, sta
   }
   int reconnects = 0;
   for (const auto& sender : senders) reconnects += sender.reconnects;
-  std::printf("slow senders: health answered %d of %d, another client %d of %d; senders cut off and reconnected %d "
-              "times\n", health_answered, health_asked, other_answered, other_asked, reconnects);
+  std::printf(
+      "slow senders: health answered %d of %d, another client %d of %d; senders cut off and reconnected %d "
+      "times\n",
+      health_answered, health_asked, other_answered, other_asked, reconnects);
   CHECK(health_asked >= 40);
   CHECK(health_answered == health_asked);
   CHECK(other_answered == other_asked);
@@ -133,9 +135,10 @@ TEST_CASE("80 sockets dripping headers and 70 dripping bodies, reconnecting, sta
   CHECK(reconnects > 300);
 }
 
-TEST_CASE("Past --max-connections a newcomer takes the slot of a connection awaiting its request, health keeps slots "
-          "of its own, and the rest get an immediate 503",
-          "[service][hostile]") {
+TEST_CASE(
+    "Past --max-connections a newcomer takes the slot of a connection awaiting its request, health keeps slots "
+    "of its own, and the rest get an immediate 503",
+    "[service][hostile]") {
   ScratchDirectory scratch("max-connections");
   ServiceProcess service(scratch.path(), {"--max-connections", "4"});
   {
@@ -172,8 +175,7 @@ TEST_CASE("Past --max-connections a newcomer takes the slot of a connection awai
   CHECK(eventually([&] { return health_answers(service.port()); }, 5s));
 }
 
-TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port",
-          "[service][hostile]") {
+TEST_CASE("A port another service listens on is refused: serve stops, run moves to a free port", "[service][hostile]") {
   ScratchDirectory scratch("port-taken");
   ServiceProcess first(scratch.path());
   const std::string port = std::to_string(first.port());

@@ -65,9 +65,11 @@ Evaluations parse_output(const std::string& output) {
   return evaluations;
 }
 
-std::string fortran_driver(const Json& description, const std::vector<Point>& points, const std::vector<double>& sizes) {
-  std::string text = "program drive\n  use aerobreak_study1\n  implicit none\n  integer, parameter :: dp = kind(1.0d0)\n"
-                     "  real(dp) :: value, lo, hi\n  logical :: inside\n  integer :: status\n";
+std::string fortran_driver(const Json& description, const std::vector<Point>& points,
+                           const std::vector<double>& sizes) {
+  std::string text =
+      "program drive\n  use aerobreak_study1\n  implicit none\n  integer, parameter :: dp = kind(1.0d0)\n"
+      "  real(dp) :: value, lo, hi\n  logical :: inside\n  integer :: status\n";
   const auto literal = [](double x) {
     char s[40];
     std::snprintf(s, sizeof s, "%.17e", x);
@@ -79,8 +81,9 @@ std::string fortran_driver(const Json& description, const std::vector<Point>& po
   for (const auto& f : description.at("functions")) {
     const std::string p = f.at("p"), v50 = f.at("v50");
     for (const auto& point : points)
-      text += "  value = " + p + "(" + literal(point.v) + ", " + literal(point.n) + ", lo, hi, inside, status)\n  write(*, " +
-              format + ") &\n    '" + p + "', " + literal(point.v) + ", " + literal(point.n) + ", &\n    value, lo, hi, inside, status\n";
+      text += "  value = " + p + "(" + literal(point.v) + ", " + literal(point.n) +
+              ", lo, hi, inside, status)\n  write(*, " + format + ") &\n    '" + p + "', " + literal(point.v) + ", " +
+              literal(point.n) + ", &\n    value, lo, hi, inside, status\n";
     for (const double n : sizes)
       text += "  value = " + v50 + "(" + literal(n) + ", lo, hi, inside, status)\n  write(*, " +
               "'(A,1X,ES25.16E3,1X,A,3(1X,ES25.16E3),1X,L1,1X,I0)') &\n    '" + v50 + "', " + literal(n) +
@@ -90,8 +93,9 @@ std::string fortran_driver(const Json& description, const std::vector<Point>& po
 }
 
 std::string c_driver(const Json& description, const std::vector<Point>& points, const std::vector<double>& sizes) {
-  std::string text = "#include <stdio.h>\n#include \"study1_correlations.h\"\nint main(void) {\n  double value, lo, hi;\n"
-                     "  int inside, status;\n";
+  std::string text =
+      "#include <stdio.h>\n#include \"study1_correlations.h\"\nint main(void) {\n  double value, lo, hi;\n"
+      "  int inside, status;\n";
   for (const auto& f : description.at("functions")) {
     const std::string p = f.at("p"), v50 = f.at("v50");
     for (const auto& point : points) {
@@ -126,8 +130,10 @@ std::string number_list(const std::vector<double>& values) {
 }
 
 void check_close(double got, double expected) {
-  if (expected == 0.0) CHECK(std::abs(got) <= 1e-300);
-  else CHECK(std::abs(got - expected) <= kRelative * std::abs(expected));
+  if (expected == 0.0)
+    CHECK(std::abs(got) <= 1e-300);
+  else
+    CHECK(std::abs(got - expected) <= kRelative * std::abs(expected));
 }
 
 // The service's fit table as rows: (wall 1/0, n, v) -> column -> value.
@@ -138,19 +144,20 @@ std::map<std::tuple<double, double, double>, std::map<std::string, double>> fit_
   for (std::size_t r = 0; r < table.at("rows").get<std::size_t>(); ++r) {
     auto& row = rows[{columns.at("wall_adhesive")->at(r).get<double>(), columns.at("primaries")->at(r).get<double>(),
                       columns.at("impact_speed")->at(r).get<double>()}];
-    for (const auto& [name, values] : columns)
-      row[name] = values->at(r).is_null() ? NAN : values->at(r).get<double>();
+    for (const auto& [name, values] : columns) row[name] = values->at(r).is_null() ? NAN : values->at(r).get<double>();
   }
   return rows;
 }
 
 // Every function at every point equals the service's row (value, band, status, validity flag).
-void check_against_table(const Evaluations& code, const Json& description, const std::vector<Point>& points, const Json& table) {
+void check_against_table(const Evaluations& code, const Json& description, const std::vector<Point>& points,
+                         const Json& table) {
   const auto rows = fit_rows(table);
   std::size_t compared = 0;
   for (const auto& f : description.at("functions")) {
     const double wall = f.at("group").at("/wall/adhesive").get<bool>() ? 1.0 : 0.0;
-    const std::string outcome = f.at("outcome") == "break-up" ? "p_break_up" : "p_" + f.at("outcome").get<std::string>();
+    const std::string outcome =
+        f.at("outcome") == "break-up" ? "p_break_up" : "p_" + f.at("outcome").get<std::string>();
     for (const auto& point : points) {
       const auto& name = f.at("p").get<std::string>();
       INFO(name << " at v = " << point.v << ", n = " << point.n);
@@ -169,7 +176,8 @@ void check_against_table(const Evaluations& code, const Json& description, const
 }
 
 // v50 at the sizes run: the pooled fits' critical values as served (delta method).
-void check_v50(const ServiceProcess& service, const Evaluations& code, const Json& description, const std::vector<double>& sizes) {
+void check_v50(const ServiceProcess& service, const Evaluations& code, const Json& description,
+               const std::vector<double>& sizes) {
   std::size_t compared = 0;
   for (const auto& f : description.at("functions")) {
     if (f.at("status") != 0) continue;
@@ -225,12 +233,13 @@ TEST_CASE("Correlations as code: gfortran and gcc programs agree with the servic
   std::vector<Point> points;
   std::vector<double> speeds, sizes;
   for (int i = 0; i < 5; ++i) speeds.push_back(0.01 * std::pow(30.0, unit(random)));  // inside 0.01-0.3
-  for (int i = 0; i < 3; ++i) sizes.push_back(32.0 * std::pow(4.0, unit(random)));   // inside 32-128
-  speeds.push_back(0.6), sizes.push_back(300.0);                                       // and outside both
+  for (int i = 0; i < 3; ++i) sizes.push_back(32.0 * std::pow(4.0, unit(random)));    // inside 32-128
+  speeds.push_back(0.6), sizes.push_back(300.0);                                      // and outside both
   for (const double n : sizes)
     for (const double v : speeds) points.push_back({v, n});
-  const Json table = Json::parse(text_of(service, "/api/studies/1/tables?kind=fit&format=json&speeds=" + number_list(speeds) +
-                                                      "&sizes=" + number_list(sizes)));
+  const Json table =
+      Json::parse(text_of(service, "/api/studies/1/tables?kind=fit&format=json&speeds=" + number_list(speeds) +
+                                       "&sizes=" + number_list(sizes)));
   const std::vector<double> run{32.0, 128.0};
 
   SECTION("the Fortran 90 module, compiled by gfortran") {
@@ -238,8 +247,10 @@ TEST_CASE("Correlations as code: gfortran and gcc programs agree with the servic
     REQUIRE_FALSE(gfortran.empty());
     std::ofstream(scratch.file("study1_correlations.f90")) << text_of(service, tables + "fortran");
     std::ofstream(scratch.file("drive.f90")) << fortran_driver(description, points, run);
-    const auto code = built_and_run(scratch, gfortran + " -std=f2008 -Wall -Werror -Wno-unused-dummy-argument "
-                                                        "-ffpe-trap=invalid,zero,overflow -o drive study1_correlations.f90 drive.f90");
+    const auto code =
+        built_and_run(scratch, gfortran +
+                                   " -std=f2008 -Wall -Werror -Wno-unused-dummy-argument "
+                                   "-ffpe-trap=invalid,zero,overflow -o drive study1_correlations.f90 drive.f90");
     check_against_table(code, description, points, table);
     check_v50(service, code, description, run);
   }

@@ -93,7 +93,8 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   REQUIRE(unchanged);
   CHECK(unchanged->status == 304);
   CHECK(unchanged->body.empty());
-  const auto other = client.Get("/api/studies/1/correlations/break-up.speed.g1", httplib::Headers{{"If-None-Match", etag}});
+  const auto other =
+      client.Get("/api/studies/1/correlations/break-up.speed.g1", httplib::Headers{{"If-None-Match", etag}});
   REQUIRE(other);
   CHECK(other->status == 200);
   CHECK(other->get_header_value("ETag") != etag);
@@ -103,7 +104,8 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   CHECK(unknown.body.at("error").get<std::string>().find("no fit 'break-up.speed.g9'") != std::string::npos);
   const Answer covariate = get(service, "/api/studies/1/correlations?covariates=angle");
   CHECK(covariate.status == 400);
-  CHECK(covariate.body.at("error").get<std::string>().find("covariate 'angle' is not an axis of study 1") != std::string::npos);
+  CHECK(covariate.body.at("error").get<std::string>().find("covariate 'angle' is not an axis of study 1") !=
+        std::string::npos);
   const Answer no_results = get(service, "/api/studies/2/correlations");
   CHECK(no_results.status == 404);
   CHECK(no_results.body.at("error").get<std::string>().find("no results") != std::string::npos);
@@ -122,7 +124,8 @@ TEST_CASE("GET .../correlations serves every fit, one fit with its data and curv
   CHECK(service.kill(SIGTERM) == 0);
 }
 
-TEST_CASE("Every served correlation document is valid against schemas/correlation.schema.json", "[service][correlations]") {
+TEST_CASE("Every served correlation document is valid against schemas/correlation.schema.json",
+          "[service][correlations]") {
   ScratchDirectory directory("correlation_schema");
   prepare_store(directory.path() / "store.sqlite");
   ServiceProcess service(directory.path());
@@ -144,7 +147,8 @@ TEST_CASE("Every served correlation document is valid against schemas/correlatio
     check(document, name);
   }
   // Every kind of document was among them, a fit with covariates too.
-  CHECK(kinds == std::set<std::string>{"grid-points", "logistic", "multinomial", "scaling", "retained-fraction", "fragment-sizes"});
+  CHECK(kinds == std::set<std::string>{"grid-points", "logistic", "multinomial", "scaling", "retained-fraction",
+                                       "fragment-sizes"});
   check(service.get("/api/studies/1/correlations/break-up.energy.pooled.c1?covariates=N"), "pooled energy fit");
 
   // The schema is a contract, not a formality: a document that breaks it is refused.

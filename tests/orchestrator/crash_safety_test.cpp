@@ -27,9 +27,8 @@ TEST_CASE("SIGKILL of the orchestrator mid-study: the restarted one finishes it,
   {
     ServiceProcess service(scratch.path());
     study = submit(service, slow_study("sigkill", 10)).at("id").get<std::int64_t>();
-    REQUIRE(eventually([&] {
-      return service.get(study_path(study, "/progress")).at("counts").at("done").get<int>() >= 2;
-    }, 60s));
+    REQUIRE(eventually(
+        [&] { return service.get(study_path(study, "/progress")).at("counts").at("done").get<int>() >= 2; }, 60s));
     const auto health = service.get("/api/health");
     REQUIRE(health.at("scheduler").at("job").is_object());
     job_pid = health.at("scheduler").at("job").at("pid").get<pid_t>();
@@ -69,12 +68,14 @@ TEST_CASE("A killed worker job: its in-flight cases are queued again and the stu
   ServiceProcess service(scratch.path());
   const auto study = submit(service, slow_study("killed worker", 6)).at("id").get<std::int64_t>();
   pid_t job_pid = 0;
-  REQUIRE(eventually([&] {
-    const auto job = service.get("/api/health").at("scheduler").at("job");
-    if (!job.is_object() || job.at("in_flight").get<int>() == 0) return false;
-    job_pid = job.at("pid").get<pid_t>();
-    return true;
-  }, 30s));
+  REQUIRE(eventually(
+      [&] {
+        const auto job = service.get("/api/health").at("scheduler").at("job");
+        if (!job.is_object() || job.at("in_flight").get<int>() == 0) return false;
+        job_pid = job.at("pid").get<pid_t>();
+        return true;
+      },
+      30s));
   ::kill(job_pid, SIGKILL);
   REQUIRE(eventually([&] { return study_complete(service, study); }, 120s));
 

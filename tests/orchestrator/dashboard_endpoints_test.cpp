@@ -115,7 +115,8 @@ TEST_CASE("Dashboard endpoints: grid statistics, case table, fragment sizes and 
     for (const auto& row : all.at("items"))
       for (const auto& result : results)
         if (result.at("case") == row.at("id"))
-          for (const char* column : {"damage_ratio", "fractured_on_wall", "small_strain_exceeded", "retained_mass_fraction"})
+          for (const char* column :
+               {"damage_ratio", "fractured_on_wall", "small_strain_exceeded", "retained_mass_fraction"})
             CHECK(row.at(column) == result.at(column));
 
     CHECK(get(service, study + "/case-table?axis.friction=0.3").status == 400);

@@ -104,8 +104,8 @@ TEST_CASE("A store moved or copied with its data folder finds every data file: n
   const auto first = scratch.path() / "first";
   std::filesystem::create_directories(first);
   const auto study_file = scratch.write("moved.study.json", small_study("moved", {0.01, 0.05}, 1).dump());
-  const std::string run = "timeout 120 " + std::string(AEROBREAK_BINARY) + " run " + study_file.string() +
-                          " --ranks 1 --port 0 --store ";
+  const std::string run =
+      "timeout 120 " + std::string(AEROBREAK_BINARY) + " run " + study_file.string() + " --ranks 1 --port 0 --store ";
   REQUIRE(run_command(run + (first / "s.sqlite").string()).exit_code == 0);
 
   // Moved: the store and its data folder (s.data) together.

@@ -32,9 +32,8 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
   const auto study_file = scratch.path() / "study.json";
   std::ofstream(study_file) << small_study("end to end", {0.005, 0.02, 0.08}, 2).dump(2);
 
-  const auto submitted =
-      run_command(std::string(AEROBREAK_BINARY) + " study submit --json --url " + service.url() + " " +
-                  study_file.string(), true);
+  const auto submitted = run_command(
+      std::string(AEROBREAK_BINARY) + " study submit --json --url " + service.url() + " " + study_file.string(), true);
   INFO(submitted.text);
   REQUIRE(submitted.exit_code == 0);
   const auto receipt = Json::parse(submitted.text);
@@ -60,8 +59,7 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
   // Both ranks of the job got work: cases are handed out one at a time to whichever rank is free.
   std::set<std::string> workers;
   const auto cases = service.get("/api/studies/" + std::to_string(study) + "/cases");
-  for (const auto& record : cases.at("items"))
-    workers.insert(record.at("worker").get<std::string>());
+  for (const auto& record : cases.at("items")) workers.insert(record.at("worker").get<std::string>());
   CHECK(workers.size() == 2);
 
   // The outcome table counts, per grid point, the results flagged outside the small-strain range
@@ -100,8 +98,8 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
   CHECK(overlapping.at("already_done") == 2);
   CHECK(overlapping.at("new_cases") == 2);
 
-  const auto status = run_command(std::string(AEROBREAK_BINARY) + " study status --url " + service.url() + " " +
-                                  std::to_string(study));
+  const auto status =
+      run_command(std::string(AEROBREAK_BINARY) + " study status --url " + service.url() + " " + std::to_string(study));
   CHECK(status.exit_code == 0);
   CHECK_THAT(status.text, Catch::Contains("6 done") && Catch::Contains("(complete)"));
   const auto table_text = run_command(std::string(AEROBREAK_BINARY) + " study results --url " + service.url() + " " +

@@ -71,8 +71,7 @@ TEST_CASE("An axis pointer with a huge array index is refused without allocating
   CHECK(still_serving(service));
 }
 
-TEST_CASE("Bodies and parameters that are not UTF-8 or not representable get a 4xx, not a 500",
-          "[service][hostile]") {
+TEST_CASE("Bodies and parameters that are not UTF-8 or not representable get a 4xx, not a 500", "[service][hostile]") {
   ScratchDirectory scratch("encodings");
   ServiceProcess service(scratch.path());
   const int port = service.port();
@@ -95,8 +94,7 @@ TEST_CASE("Bodies and parameters that are not UTF-8 or not representable get a 4
   CHECK(still_serving(service));
 }
 
-TEST_CASE("Without a token, a POST must be JSON and every request must name a loopback host",
-          "[service][hostile]") {
+TEST_CASE("Without a token, a POST must be JSON and every request must name a loopback host", "[service][hostile]") {
   ScratchDirectory scratch("csrf");
   ServiceProcess service(scratch.path());
   const int port = service.port();
@@ -108,11 +106,12 @@ TEST_CASE("Without a token, a POST must be JSON and every request must name a lo
   CHECK(service.get("/api/studies").at("total") == 0);
 
   // DNS rebinding: a page at evil.example whose name now resolves to 127.0.0.1.
-  const std::string rebound = "GET /api/health HTTP/1.1\r\nHost: evil.example:" + std::to_string(port) +
-                              "\r\nConnection: close\r\n\r\n";
+  const std::string rebound =
+      "GET /api/health HTTP/1.1\r\nHost: evil.example:" + std::to_string(port) + "\r\nConnection: close\r\n\r\n";
   CHECK(refused_with(round_trip(port, rebound)) == 403);
   CHECK(refused_with(round_trip(port, "GET /api/health HTTP/1.0\r\n\r\n")) == 403);
-  for (const std::string& host : {"127.0.0.1:" + std::to_string(port), "localhost:" + std::to_string(port), std::string("[::1]")}) {
+  for (const std::string& host :
+       {"127.0.0.1:" + std::to_string(port), "localhost:" + std::to_string(port), std::string("[::1]")}) {
     const std::string answer =
         round_trip(port, "GET /api/health HTTP/1.1\r\nHost: " + host + "\r\nConnection: close\r\n\r\n");
     CHECK(status_of(answer) == 200);
@@ -137,8 +136,7 @@ TEST_CASE("Header sections are bounded in lines and bytes while they arrive", "[
   CHECK(still_serving(service));
 }
 
-TEST_CASE("Request framing: conflicting or missing lengths are refused before the body is read",
-          "[service][hostile]") {
+TEST_CASE("Request framing: conflicting or missing lengths are refused before the body is read", "[service][hostile]") {
   ScratchDirectory scratch("framing");
   ServiceProcess service(scratch.path());
   const int port = service.port();

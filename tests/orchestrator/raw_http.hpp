@@ -53,7 +53,8 @@ class RawConnection {
     const auto deadline = std::chrono::steady_clock::now() + limit;
     char buffer[65536];
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
       pollfd watched{fd_, POLLIN, 0};
       if (left.count() <= 0 || ::poll(&watched, 1, static_cast<int>(left.count())) <= 0) break;
       const ssize_t n = ::recv(fd_, buffer, sizeof buffer, 0);

@@ -53,7 +53,8 @@ TEST_CASE("The outcome table's and the grid statistics' ETags follow the study's
     const auto table = Json::parse(after[i].body);
     REQUIRE(table.at("grid_points").size() == 2);
     for (const auto& point : table.at("grid_points")) CHECK(point.at("finished") == 2);
-    for (const std::string& tags : {after[i].etag, "W/" + after[i].etag, std::string("*"), "\"other\", " + after[i].etag}) {
+    for (const std::string& tags :
+         {after[i].etag, "W/" + after[i].etag, std::string("*"), "\"other\", " + after[i].etag}) {
       INFO("If-None-Match: " << tags);
       const Answer cached = get(service, paths[i], tags);
       CHECK(cached.status == 304);
@@ -121,8 +122,9 @@ TEST_CASE("A study's and a case's answers name their units, and the templates ho
   physical["replicates"] = {{"count", 1}, {"seed", 1}};
   const auto physical_id = submit(service, physical).at("id").get<std::int64_t>();
   const auto reduced_id = submit(service, small_study("reduced", {0.01}, 1, 8)).at("id").get<std::int64_t>();
-  const Json si{{"system", "physical"}, {"length", "m"}, {"mass", "kg"}, {"time", "s"}, {"speed", "m/s"}, {"energy", "J"}};
-  const Json reduced{{"system", "reduced"}, {"length", "d"},     {"mass", "m"},
+  const Json si{{"system", "physical"}, {"length", "m"},  {"mass", "kg"},
+                {"time", "s"},          {"speed", "m/s"}, {"energy", "J"}};
+  const Json reduced{{"system", "reduced"}, {"length", "d"},    {"mass", "m"},
                      {"time", "tau"},       {"speed", "d/tau"}, {"energy", "k_n d^2"}};
   for (const auto& [id, units] : {std::pair{physical_id, si}, std::pair{reduced_id, reduced}}) {
     INFO("study " << id);
@@ -133,10 +135,12 @@ TEST_CASE("A study's and a case's answers name their units, and the templates ho
     CHECK(detail.at("units") == units);
   }
   for (const auto& study : service.get("/api/progress").at("items")) CHECK(study.at("units").at("system").is_string());
-  for (const auto id : {physical_id, reduced_id}) REQUIRE(eventually([&] { return study_complete(service, id); }, 120s));
+  for (const auto id : {physical_id, reduced_id})
+    REQUIRE(eventually([&] { return study_complete(service, id); }, 120s));
 }
 
-TEST_CASE("Answers of 1 kB or more go out gzip-compressed for a client that accepts gzip, none with Brotli", "[service]") {
+TEST_CASE("Answers of 1 kB or more go out gzip-compressed for a client that accepts gzip, none with Brotli",
+          "[service]") {
   ScratchDirectory scratch("read-endpoints-gzip");
   ServiceProcess service(scratch.path());
   const auto plain = service.client().Get("/api/openapi.json", httplib::Headers{{"Accept-Encoding", "identity"}});

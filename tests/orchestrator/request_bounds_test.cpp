@@ -131,8 +131,9 @@ TEST_CASE("A query parameter that takes one value refuses a second, on every end
     CHECK_THAT(body_of(answer).at("violations").dump(), Catch::Contains("\"parameter\""));
   }
   // axis.NAME takes several values (any of them).
-  CHECK(status_of(round_trip(port, http_request("GET", "/api/studies/1/case-table?axis.impact_speed=0.01&"
-                                                        "axis.impact_speed=0.02"))) == 200);
+  CHECK(status_of(round_trip(port, http_request("GET",
+                                                "/api/studies/1/case-table?axis.impact_speed=0.01&"
+                                                "axis.impact_speed=0.02"))) == 200);
 }
 
 TEST_CASE("Every JSON pointer a study names is bounded before anything is set, the search axis too",

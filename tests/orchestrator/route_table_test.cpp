@@ -75,13 +75,16 @@ TEST_CASE("Every documented operation answers over HTTP with a status its descri
   ScratchDirectory scratch("routes");
   ::setenv("AEROBREAK_SYNTHETIC_RANKS", "4", 1);
   ::setenv("AEROBREAK_SYNTHETIC_DELAY", "0", 1);
-  ServiceProcess service(scratch.path(), {"--launcher", "direct", "--ranks", "1", "--worker-program",
-                                          AEROBREAK_SYNTHETIC_WORKER});
+  ServiceProcess service(scratch.path(),
+                         {"--launcher", "direct", "--ranks", "1", "--worker-program", AEROBREAK_SYNTHETIC_WORKER});
   const Json study = grid_study();
   const auto study_id = submit(service, study).at("id").get<std::int64_t>();
   REQUIRE(eventually([&] { return study_complete(service, study_id); }, 120s));
   const auto case_id = service.get("/api/studies/" + std::to_string(study_id) + "/cases?limit=1")
-                           .at("items").at(0).at("id").get<std::int64_t>();
+                           .at("items")
+                           .at(0)
+                           .at("id")
+                           .get<std::int64_t>();
   const auto fits = service.get("/api/studies/" + std::to_string(study_id) + "/correlations").at("fits");
   REQUIRE_FALSE(fits.empty());
   const std::string fit = fits.at(0).at("name").get<std::string>();
@@ -93,8 +96,8 @@ TEST_CASE("Every documented operation answers over HTTP with a status its descri
     for (const auto& [method, operation] : item.items()) {
       const std::string target = filled(path, study_id, case_id, fit);
       INFO(method << " " << target);
-      const auto response = method == "post" ? client.Post(target.c_str(), study.dump(), "application/json")
-                                             : client.Get(target.c_str());
+      const auto response =
+          method == "post" ? client.Post(target.c_str(), study.dump(), "application/json") : client.Get(target.c_str());
       REQUIRE(response);
       INFO("-> " << response->status << " " << response->body.substr(0, 300));
       CHECK(operation.at("responses").contains(std::to_string(response->status)));

@@ -43,8 +43,11 @@ StudySubmission cases_study(double wall_time, int cases, int max_attempts) {
   submission.max_attempts = max_attempts;
   submission.case_wall_time = wall_time;
   for (int c = 0; c < cases; ++c)
-    submission.cases.push_back({"stuck-case-" + std::to_string(c), nlohmann::ordered_json::object(),
-                                {{"impact_speed", 0.01 * (c + 1)}}, "k" + std::to_string(c), 0});
+    submission.cases.push_back({"stuck-case-" + std::to_string(c),
+                                nlohmann::ordered_json::object(),
+                                {{"impact_speed", 0.01 * (c + 1)}},
+                                "k" + std::to_string(c),
+                                0});
   return submission;
 }
 
@@ -67,8 +70,7 @@ bool within(std::chrono::seconds limit, Condition condition) {
 
 }  // namespace
 
-TEST_CASE("A case killed at its hard limit is reported with the time it had really run",
-          "[scheduler]") {
+TEST_CASE("A case killed at its hard limit is reported with the time it had really run", "[scheduler]") {
   ScratchDirectory scratch("hard-limit");
   const auto worker = scratch.write("stuck-worker.sh", kStuckWorker);
   std::filesystem::permissions(worker, std::filesystem::perms::owner_all);
@@ -137,7 +139,7 @@ TEST_CASE("A rank the job gives up: its case goes back to the queue with a failu
   const auto status = scheduler.status();
   scheduler.stop();
 
-  CHECK(status.in_flight == 1);  // the second case, still with the job's one live rank
+  CHECK(status.in_flight == 1);                               // the second case, still with the job's one live rank
   CHECK(store.progress(study)->by_status.at("queued") == 3);  // stopping requeued it
   int lost = 0;
   for (const auto& item : store.cases(study, CaseStatus::queued, {10, 0}).items) {

@@ -46,9 +46,8 @@ class ServiceProcess {
       : directory_(directory), store_file_(store_file.empty() ? directory / "store.sqlite" : store_file) {
     const auto port_file = directory_ / "port";
     std::filesystem::remove(port_file);
-    std::vector<std::string> arguments{program,          "serve",  "--store", store_file_.string(),
-                                       "--port",         "0",      "--port-file", port_file.string(),
-                                       "--idle-shutdown", "1"};
+    std::vector<std::string> arguments{program, "serve",       "--store",          store_file_.string(), "--port",
+                                       "0",     "--port-file", port_file.string(), "--idle-shutdown",    "1"};
     // Two ranks unless the test chooses (an option may be given once).
     if (std::find(extra_arguments.begin(), extra_arguments.end(), "--ranks") == extra_arguments.end())
       arguments.insert(arguments.end(), {"--ranks", "2"});

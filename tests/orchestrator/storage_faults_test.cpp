@@ -34,7 +34,8 @@ class SmallFileSystem {
     std::FILE* out = std::fopen(file.c_str(), "wb");
     REQUIRE(out);
     const std::string block(1 << 16, 'x');
-    while (std::fwrite(block.data(), 1, block.size(), out) == block.size() && std::fflush(out) == 0) {}
+    while (std::fwrite(block.data(), 1, block.size(), out) == block.size() && std::fflush(out) == 0) {
+    }
     std::fclose(out);
   }
 
@@ -56,9 +57,10 @@ bool no_case_failed(const ServiceProcess& service, std::int64_t study) {
 
 }  // namespace
 
-TEST_CASE("A full disk under the store fails no case, keeps serve up, shows in health, and the study finishes once "
-          "space returns",
-          "[service][crash]") {
+TEST_CASE(
+    "A full disk under the store fails no case, keeps serve up, shows in health, and the study finishes once "
+    "space returns",
+    "[service][crash]") {
   if (::geteuid() != 0) {
     WARN("skipped: mounting a small tmpfs needs root (CI runs as root)");
     return;
@@ -70,17 +72,19 @@ TEST_CASE("A full disk under the store fails no case, keeps serve up, shows in h
   ServiceProcess service(scratch.path(), {}, scratch.path() / "disk" / "store.sqlite");
   const auto study = submit(service, slow_study("disk full", 8)).at("id").get<std::int64_t>();
   // Filled once cases are being handed out and committed: results, claims and data files all meet it.
-  REQUIRE(eventually([&] {
-    return service.get("/api/studies/" + std::to_string(study) + "/progress").at("counts").at("done") >= 1;
-  }, 60s));
+  REQUIRE(eventually(
+      [&] { return service.get("/api/studies/" + std::to_string(study) + "/progress").at("counts").at("done") >= 1; },
+      60s));
   const auto filler = scratch.path() / "disk" / "filler";
   disk.fill(filler);
 
   Json health;
-  REQUIRE(eventually([&] {
-    health = service.get("/api/health");
-    return health.at("status") == "degraded" && !health.at("scheduler").at("storage_fault").is_null();
-  }, 60s));
+  REQUIRE(eventually(
+      [&] {
+        health = service.get("/api/health");
+        return health.at("status") == "degraded" && !health.at("scheduler").at("storage_fault").is_null();
+      },
+      60s));
   INFO(health.dump());
   CHECK(health.at("scheduler").at("storage_fault").at("error").is_string());
   CHECK(no_case_failed(service, study));
@@ -94,15 +98,16 @@ TEST_CASE("A full disk under the store fails no case, keeps serve up, shows in h
   CHECK(service.get("/api/health").at("scheduler").at("storage_fault").is_null());
 }
 
-TEST_CASE("A second orchestrator on a store in use is refused and the first runs on undisturbed",
-          "[service][crash]") {
+TEST_CASE("A second orchestrator on a store in use is refused and the first runs on undisturbed", "[service][crash]") {
   ScratchDirectory scratch("store-lock");
   ServiceProcess service(scratch.path());
   const auto study = submit(service, slow_study("store lock", 4)).at("id").get<std::int64_t>();
-  REQUIRE(eventually([&] {
-    const auto job = service.get("/api/health").at("scheduler").at("job");
-    return job.is_object() && job.at("in_flight").get<int>() > 0;
-  }, 30s));
+  REQUIRE(eventually(
+      [&] {
+        const auto job = service.get("/api/health").at("scheduler").at("job");
+        return job.is_object() && job.at("in_flight").get<int>() > 0;
+      },
+      30s));
 
   // `timeout`: before the fix the second service would run on for good.
   const std::string in_use = "is in use by process " + std::to_string(service.pid());

@@ -38,7 +38,8 @@ void check_refused(const ServiceProcess& service, const std::string& path, int s
 
 }  // namespace
 
-TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals naming the parameter", "[service][export]") {
+TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals naming the parameter",
+          "[service][export]") {
   ScratchDirectory scratch("table_endpoints");
   ServiceProcess service(scratch.path());
   const auto id = submit(service, small_study("tables", {0.005, 0.3}, 3, 8)).at("id").get<std::int64_t>();
@@ -93,7 +94,8 @@ TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals n
     check_refused(service, tables + "?youngs_modulus=1e10&poisson_ratio=0.3", 400, "density");
     check_refused(service, tables + "?section_ratio=0.5&kind=sections", 400, "section_ratio");
     check_refused(service, tables + "?select=wall_adhesive", 400, "select");
-    check_refused(service, tables + "?select=wall_adhesive:1", 422, "select");  // this study has one wall: no such column
+    check_refused(service, tables + "?select=wall_adhesive:1", 422,
+                  "select");  // this study has one wall: no such column
     // gamma/k_n = 3 gamma (1 - nu^2) / (E d) = 0.0273 for this material; the study has 0.001 only.
     check_refused(service,
                   tables + "?youngs_modulus=1e10&poisson_ratio=0.3&density=1725&surface_energy=2&diameter=2e-8", 422,
@@ -102,7 +104,8 @@ TEST_CASE("Lookup-table endpoint: formats, file names, HEAD, fits and refusals n
   }
 }
 
-TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused by strict naming sizes", "[service][export]") {
+TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused by strict naming sizes",
+          "[service][export]") {
   ScratchDirectory scratch("table_endpoints_sizes");
   std::int64_t id = 0;
   {
@@ -123,8 +126,9 @@ TEST_CASE("Lookup-table endpoint: kind=fit at sizes not run, flagged or refused 
   CHECK(get(service, tables + "&sizes=64&strict=true").status == 200);
   check_refused(service, tables + "&sizes=512&strict=true", 422, "sizes");
   const auto refused = Json::parse(get(service, tables + "&sizes=16&strict=true").body);
-  CHECK(refused.at("violations").at(0).at("message").get<std::string>().find("from 3.200000000e+01 to 1.280000000e+02") !=
-        std::string::npos);
+  CHECK(
+      refused.at("violations").at(0).at("message").get<std::string>().find("from 3.200000000e+01 to 1.280000000e+02") !=
+      std::string::npos);
 }
 
 }  // namespace aerobreak::testing
@@ -134,7 +138,8 @@ namespace aerobreak::testing {
 // A table is built once per result-set version and request, then kept: the same ETag (304 for a
 // client holding it) until a result changes; gzip for a client that accepts it, the same table once
 // inflated.
-TEST_CASE("Lookup-table endpoint: kept per result-set version and request, with an ETag, sent gzip", "[service][export]") {
+TEST_CASE("Lookup-table endpoint: kept per result-set version and request, with an ETag, sent gzip",
+          "[service][export]") {
   ScratchDirectory scratch("table_endpoints_kept");
   std::int64_t id = 0;
   {

@@ -125,8 +125,8 @@ TEST_CASE("The same results in any order give the same round", "[search]") {
 
 TEST_CASE("Separated outcomes: the round fills the gap between them (phase I)", "[search]") {
   const auto spec = speed_search();
-  const std::vector<SearchObservation> observations{
-      {0.005, "stick"}, {0.01, "stick"}, {0.02, "stick"}, {0.04, "break-up"}, {0.1, "break-up"}, {0.3, "break-up"}};
+  const std::vector<SearchObservation> observations{{0.005, "stick"},   {0.01, "stick"},   {0.02, "stick"},
+                                                    {0.04, "break-up"}, {0.1, "break-up"}, {0.3, "break-up"}};
   const auto plan = plan_round(spec, observations, RoundContext{1, 6, 1, 0});
   REQUIRE(plan.state == GroupState::searching);
   REQUIRE(plan.values.size() == 10);

@@ -38,8 +38,9 @@ Json search_study(const std::string& name) {
 std::unique_ptr<ServiceProcess> synthetic_service(const std::filesystem::path& directory, const char* delay) {
   ::setenv("AEROBREAK_SYNTHETIC_DELAY", delay, 1);
   ::setenv("AEROBREAK_SYNTHETIC_RANKS", "4", 1);
-  return std::make_unique<ServiceProcess>(directory, std::vector<std::string>{"--launcher", "direct", "--ranks", "1",
-                                                                              "--worker-program", AEROBREAK_SYNTHETIC_WORKER});
+  return std::make_unique<ServiceProcess>(
+      directory,
+      std::vector<std::string>{"--launcher", "direct", "--ranks", "1", "--worker-program", AEROBREAK_SYNTHETIC_WORKER});
 }
 
 Json search_of(const ServiceProcess& service, std::int64_t study) {
@@ -139,12 +140,14 @@ TEST_CASE("SIGKILL of the orchestrator mid-search: the restarted one goes on wit
   {
     auto service = synthetic_service(scratch.path(), "0.1");
     id = submit(*service, search_study("adaptive sigkill")).at("id").get<std::int64_t>();
-    const bool mid_search = eventually([&] {
-      const auto search = search_of(*service, id);
-      for (const auto& group : search.at("groups"))
-        if (group.at("rounds").get<int>() >= 3) return true;
-      return false;
-    }, 60s);
+    const bool mid_search = eventually(
+        [&] {
+          const auto search = search_of(*service, id);
+          for (const auto& group : search.at("groups"))
+            if (group.at("rounds").get<int>() >= 3) return true;
+          return false;
+        },
+        60s);
     if (!mid_search) FAIL(service->log() << search_of(*service, id).dump());
     rounds_before = search_of(*service, id).at("groups");
     results_before = service->get("/api/studies/" + std::to_string(id) + "/results?limit=1000").at("items");

@@ -10,7 +10,8 @@
 
 namespace aerobreak::testing {
 
-TEST_CASE("The store reads a study's outcomes with fragments, and counts changes of its result set", "[store][correlations]") {
+TEST_CASE("The store reads a study's outcomes with fragments, and counts changes of its result set",
+          "[store][correlations]") {
   TemporaryStoreFile file("correlation_reader");
   Store store(file.path());
   const auto id = finished_correlation_study(store, "reader", 3, 1);
@@ -38,7 +39,8 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
   CHECK(store.study_versions(id)->result_set == 48);
 }
 
-TEST_CASE("Fits are stored, served while the result set is unchanged, refitted when it changes", "[store][correlations]") {
+TEST_CASE("Fits are stored, served while the result set is unchanged, refitted when it changes",
+          "[store][correlations]") {
   TemporaryStoreFile file("correlation_cache");
   Store store(file.path());
   const auto id = finished_correlation_study(store, "cache", 4, 2);
@@ -127,15 +129,17 @@ TEST_CASE("The export reads the study's stored fits back instead of fitting it a
     CHECK(a.common.coefficients == b.common.coefficients);  // bitwise: JSON keeps doubles exactly
     CHECK(a.common.covariance == b.common.covariance);
     REQUIRE(a.common.validity.size() == b.common.validity.size());
-    for (std::size_t k = 0; k < a.common.validity.size(); ++k) CHECK(a.common.validity[k].max == b.common.validity[k].max);
+    for (std::size_t k = 0; k < a.common.validity.size(); ++k)
+      CHECK(a.common.validity[k].max == b.common.validity[k].max);
     CHECK(a.covariates.size() == b.covariates.size());
     CHECK(a.data.successes.sum() == b.data.successes.sum());
     CHECK(a.critical.size() == b.critical.size());
   }
   CHECK(fits.logistic_fits(study) == read);  // kept per stored set
   SqliteDatabase db(file.path());
-  db.execute("UPDATE correlation_fits SET document = json_set(document, '$.parameters[0].estimate', 42.0) "
-             "WHERE name = 'break-up.speed.g1'");
+  db.execute(
+      "UPDATE correlation_fits SET document = json_set(document, '$.parameters[0].estimate', 42.0) "
+      "WHERE name = 'break-up.speed.g1'");
   StudyFits again(store);
   const auto changed = again.logistic_fits(study);
   for (const auto& fit : changed->logistic)

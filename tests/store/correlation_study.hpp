@@ -36,15 +36,20 @@ inline StudySubmission correlation_study_submission(const std::string& hash, int
 // four fragments of sizes 1 and 3 off the wall, bounce one fragment of N; the energy per contact
 // grows as the speed squared (5 at 0.05, with a +-10 % spread between replicates), and results from
 // 0.2 on are flagged outside the small-strain range.
-inline nlohmann::ordered_json correlation_result(const std::string& outcome, int primaries, double retained, double speed,
-                                                 double spread) {
+inline nlohmann::ordered_json correlation_result(const std::string& outcome, int primaries, double retained,
+                                                 double speed, double spread) {
   nlohmann::ordered_json fragments = nlohmann::ordered_json::array();
   const auto fragment = [&fragments](int size, bool on_wall) {
-    fragments.push_back({{"size", size}, {"mass", double(size)}, {"on_wall", on_wall}, {"normal_velocity", 0.01},
+    fragments.push_back({{"size", size},
+                         {"mass", double(size)},
+                         {"on_wall", on_wall},
+                         {"normal_velocity", 0.01},
                          {"radius_of_gyration", 1.0}});
   };
-  if (outcome == "bounce") fragment(primaries, false);
-  else fragment(static_cast<int>(std::lround(retained * primaries)), true);
+  if (outcome == "bounce")
+    fragment(primaries, false);
+  else
+    fragment(static_cast<int>(std::lround(retained * primaries)), true);
   if (outcome == "break-up")
     for (int k = 0; k < 4; ++k) fragment(k % 2 ? 3 : 1, false);
   return {{"outcome",
@@ -56,14 +61,16 @@ inline nlohmann::ordered_json correlation_result(const std::string& outcome, int
             {"reentrained_mass_fraction", 1.0 - retained},
             {"damage_ratio", outcome == "stick" ? 0.02 : 0.2}}},
           {"validity", {{"small_strain", speed < 0.2}}},
-          {"dimensionless", {{"energy_per_contact", 5.0 * std::pow(speed / 0.05, 2.0) * (1.0 + spread)},
-                             {"initial_contacts", primaries - 1}}},
+          {"dimensionless",
+           {{"energy_per_contact", 5.0 * std::pow(speed / 0.05, 2.0) * (1.0 + spread)},
+            {"initial_contacts", primaries - 1}}},
           {"setup", {{"impact_kinetic_energy", 0.002}}},
           {"fragments", {{"list", fragments}}}};
 }
 
 // Submits the study and commits a result for every case; returns the study id.
-inline std::int64_t finished_correlation_study(Store& store, const std::string& hash, int replicates, std::uint64_t seed) {
+inline std::int64_t finished_correlation_study(Store& store, const std::string& hash, int replicates,
+                                               std::uint64_t seed) {
   const auto receipt = store.submit_study(correlation_study_submission(hash, replicates));
   std::mt19937_64 engine(seed);
   const auto job = store.start_job("test", 1);
@@ -76,8 +83,8 @@ inline std::int64_t finished_correlation_study(Store& store, const std::string& 
     const std::string outcome = u < p ? "break-up" : (u < p + 0.05 ? "bounce" : "stick");
     const double retained = outcome == "stick" ? 1.0 : outcome == "bounce" ? 0.0 : 1.0 - p * 0.8;
     const double spread = 0.2 * (static_cast<double>(engine() >> 11) * 0x1.0p-53 - 0.5);
-    store.commit_result(claimed->case_id, claimed->attempt, correlation_result(outcome, primaries, retained, speed, spread), "",
-                        0.1);
+    store.commit_result(claimed->case_id, claimed->attempt,
+                        correlation_result(outcome, primaries, retained, speed, spread), "", 0.1);
   }
   store.end_job(job, 0, "done");
   return receipt.study_id;

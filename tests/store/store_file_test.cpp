@@ -58,7 +58,8 @@ TEST_CASE("Another program's SQLite database is refused as a store, and left unc
   const std::string bytes = bytes_of(file.path());
   CHECK(inspect_store_file(file.path()).kind == StoreFileState::Kind::foreign);
   CHECK_THROWS_WITH(Store(file.path()), Catch::Contains("is an SQLite database of another program, not an aerobreak "
-                                                        "store") && Catch::Contains("addresses"));
+                                                        "store") &&
+                                            Catch::Contains("addresses"));
   CHECK_THROWS_AS(Store(file.path(), Store::Access::reader), StoreFileRefused);
   check_untouched(file.path(), bytes);
 }
@@ -123,15 +124,18 @@ TEST_CASE("Migration 8 makes the absolute data-file paths of a version-7 store r
   {
     SqliteDatabase db(file.path());
     migrate_store(db, store_migrations().first(7));
-    db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
-               "VALUES (1, 'study', 'old', '{}', 'active', 1, 60, 0)");
+    db.execute(
+        "INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
+        "VALUES (1, 'study', 'old', '{}', 'active', 1, 60, 0)");
     for (const int id : {1, 2}) {
-      db.prepare("INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
-                 "VALUES (?, ?, '{}', 'done', 1, 60, 0)")
+      db.prepare(
+            "INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
+            "VALUES (?, ?, '{}', 'done', 1, 60, 0)")
           .bind_all(id, "hash" + std::to_string(id))
           .run();
-      db.prepare("INSERT INTO results (case_id, attempt, outcome, document, committed_at, data_file) "
-                 "VALUES (?, 1, 'stick', '{}', 0, ?)")
+      db.prepare(
+            "INSERT INTO results (case_id, attempt, outcome, document, committed_at, data_file) "
+            "VALUES (?, 1, 'stick', '{}', 0, ?)")
           .bind_all(id, id == 1 ? "/old/place/store.data/cases/hash1.h5" : "/elsewhere/other.h5")
           .run();
     }

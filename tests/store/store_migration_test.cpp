@@ -31,9 +31,12 @@ Json former_document(const FormerResult& r) {
   Json list = Json::array();
   int total = 0, on_wall = 0;
   for (const auto& f : r.fragments) {
-    list.push_back({{"size", f.primaries}, {"mass", static_cast<double>(f.primaries)},
-                    {"velocity", {0.0, 0.0, f.normal_speed + 0.001}}, {"normal_velocity", f.normal_speed + 0.001},
-                    {"mean_velocity", {0.0, 0.0, f.normal_speed}}, {"on_wall", f.on_wall}});
+    list.push_back({{"size", f.primaries},
+                    {"mass", static_cast<double>(f.primaries)},
+                    {"velocity", {0.0, 0.0, f.normal_speed + 0.001}},
+                    {"normal_velocity", f.normal_speed + 0.001},
+                    {"mean_velocity", {0.0, 0.0, f.normal_speed}},
+                    {"on_wall", f.on_wall}});
     total += f.primaries;
     if (f.on_wall) on_wall += f.primaries;
   }
@@ -42,11 +45,12 @@ Json former_document(const FormerResult& r) {
           {"case", {{"classification", {{"largest_fragment_share", r.threshold}}}}},
           {"setup", {{"wall_normal", {0.0, 0.0, 1.0}}, {"impact_kinetic_energy", 0.5}}},
           {"run", {{"settled", r.settled}}},
-          {"outcome", {{"class", r.former_class},
-                       {"reason", "the former rule"},
-                       {"thresholds", {{"largest_fragment_share", r.threshold}}},
-                       {"fragment_count", r.fragments.size()},
-                       {"mass_fraction_on_wall", static_cast<double>(on_wall) / total}}},
+          {"outcome",
+           {{"class", r.former_class},
+            {"reason", "the former rule"},
+            {"thresholds", {{"largest_fragment_share", r.threshold}}},
+            {"fragment_count", r.fragments.size()},
+            {"mass_fraction_on_wall", static_cast<double>(on_wall) / total}}},
           {"contacts", {{"initial", total - 1}}},
           {"fragments", {{"list", list}}}};
 }
@@ -56,29 +60,36 @@ void write_version_1_store(const std::filesystem::path& file, const std::vector<
   SqliteDatabase db(file);
   db.execute(store_migrations()[0].sql);
   db.execute("PRAGMA user_version = 1");
-  db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
-             "VALUES (1, 'study', 'former', '{}', 'active', 1, 60, 0)");
+  db.execute(
+      "INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
+      "VALUES (1, 'study', 'former', '{}', 'active', 1, 60, 0)");
   for (std::size_t k = 0; k < results.size(); ++k) {
     const auto id = static_cast<std::int64_t>(k + 1);
     const Json document = former_document(results[k]);
-    db.prepare("INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
-               "VALUES (?, ?, '{}', 'done', 1, 60, 0)")
+    db.prepare(
+          "INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
+          "VALUES (?, ?, '{}', 'done', 1, 60, 0)")
         .bind_all(id, "case" + std::to_string(k))
         .run();
     const Json grid_point = {{"impact_speed", static_cast<int>(k)}};
-    db.prepare("INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
-               "VALUES (1, ?, ?, ?, ?, 0)")
+    db.prepare(
+          "INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
+          "VALUES (1, ?, ?, ?, ?, 0)")
         .bind_all(id, id, grid_point.dump(), grid_point.dump())
         .run();
-    db.prepare("INSERT INTO results (case_id, attempt, outcome, fragment_count, mass_fraction_on_wall, document, "
-               "committed_at) VALUES (?, 1, ?, ?, ?, ?, 0)")
+    db.prepare(
+          "INSERT INTO results (case_id, attempt, outcome, fragment_count, mass_fraction_on_wall, document, "
+          "committed_at) VALUES (?, 1, ?, ?, ?, ?, 0)")
         .bind_all(id, results[k].former_class, results[k].fragments.size(),
                   document["outcome"]["mass_fraction_on_wall"].get<double>(), document.dump())
         .run();
     int rank = 0;
     for (const auto& f : results[k].fragments)
-      db.prepare("INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity) VALUES (?, ?, ?, ?, ?, ?)")
-          .bind_all(id, rank++, f.primaries, static_cast<double>(f.primaries), f.on_wall ? 1 : 0, f.normal_speed + 0.001)
+      db.prepare(
+            "INSERT INTO fragments (case_id, rank, primaries, mass, on_wall, normal_velocity) VALUES (?, ?, ?, ?, ?, "
+            "?)")
+          .bind_all(id, rank++, f.primaries, static_cast<double>(f.primaries), f.on_wall ? 1 : 0,
+                    f.normal_speed + 0.001)
           .run();
   }
 }
@@ -89,12 +100,12 @@ TEST_CASE("Migration 2 classifies the results of a version-1 store again by what
   testing::TemporaryStoreFile file("migration-2");
   const std::vector<FormerResult> former{
       {"break-up", {{60, true, 0.0}, {30, true, 0.0}, {10, true, 0.0}}},  // torn on the wall: now a stick
-      {"stick", {{99, true, 0.0}, {1, false, 0.02}}},                      // a monomer left: now a break-up
-      {"bounce", {{100, false, 0.3}}},                                     // still a bounce
-      {"break-up", {{85, false, 0.1}, {15, false, 0.2}}},                  // still a break-up
-      {"stick", {{100, true, 0.0}}, false},                                // the time limit came first
-      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.8},          // the case's own bounce share
-      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.3},          // a share the rule refuses: 0.9
+      {"stick", {{99, true, 0.0}, {1, false, 0.02}}},                     // a monomer left: now a break-up
+      {"bounce", {{100, false, 0.3}}},                                    // still a bounce
+      {"break-up", {{85, false, 0.1}, {15, false, 0.2}}},                 // still a break-up
+      {"stick", {{100, true, 0.0}}, false},                               // the time limit came first
+      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.8},         // the case's own bounce share
+      {"bounce", {{85, false, 0.1}, {15, true, 0.0}}, true, 0.3},         // a share the rule refuses: 0.9
   };
   write_version_1_store(file.path(), former);
 
@@ -119,7 +130,7 @@ TEST_CASE("Migration 2 classifies the results of a version-1 store again by what
   CHECK(r[6].outcome == "break-up");
   for (const auto& result : r) {
     INFO("case " << result.case_id);
-    CHECK_FALSE(result.damage_ratio);          // not recorded by version 1
+    CHECK_FALSE(result.damage_ratio);           // not recorded by version 1
     CHECK_FALSE(result.small_strain_exceeded);  // not checked by version 1
     CHECK_FALSE(result.energy_per_contact);
     CHECK(result.initial_contacts == 99);

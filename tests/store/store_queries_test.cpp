@@ -76,14 +76,17 @@ TEST_CASE("Results and outcome tables carry the retained mass, the damage and th
   Store store(file.path());
   const auto study = store.submit_study(testing::submission("s1", "c", {0.1, 0.2}, 3));
   const auto job = store.start_job("test", 1);
-  const testing::ResultSummary summaries[] = {
-      {1.0, false, true, 0.0, 1.0}, {1.0, true, true, 0.2, 2.0}, {0.4, true, false, 0.5, 3.0},  // speed 0.1
-      {0.7, false, false, 0.4, 5.0}, {0.1, false, false, 0.9, 7.0}};                          // speed 0.2
+  const testing::ResultSummary summaries[] = {{1.0, false, true, 0.0, 1.0},
+                                              {1.0, true, true, 0.2, 2.0},
+                                              {0.4, true, false, 0.5, 3.0},  // speed 0.1
+                                              {0.7, false, false, 0.4, 5.0},
+                                              {0.1, false, false, 0.9, 7.0}};  // speed 0.2
   const char* outcomes[] = {"stick", "stick", "break-up", "break-up", "break-up"};
   for (std::size_t k = 0; k < 5; ++k) {
     const auto claimed = store.claim_next_case(job);
     REQUIRE(claimed);
-    store.commit_result(claimed->case_id, claimed->attempt, testing::result_document(outcomes[k], {4}, summaries[k]), "", 1.0);
+    store.commit_result(claimed->case_id, claimed->attempt, testing::result_document(outcomes[k], {4}, summaries[k]),
+                        "", 1.0);
   }
   const auto page = store.results(study.study_id, std::nullopt, {});
   REQUIRE(page.items.size() == 5);

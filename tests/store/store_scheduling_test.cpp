@@ -104,8 +104,8 @@ TEST_CASE("A failing case is retried until max_attempts, then marked failed with
     const auto claimed = store.claim_next_case(job);
     REQUIRE(claimed);
     CHECK(claimed->attempt == attempt);
-    const auto status = store.record_failure(claimed->case_id, claimed->attempt, AttemptEnd::error,
-                                             "boom " + std::to_string(attempt));
+    const auto status =
+        store.record_failure(claimed->case_id, claimed->attempt, AttemptEnd::error, "boom " + std::to_string(attempt));
     CHECK(status == (attempt < 3 ? CaseStatus::queued : CaseStatus::failed));
   }
   CHECK_FALSE(store.claim_next_case(job));

@@ -57,8 +57,9 @@ TEST_CASE("The store enforces foreign keys and the case status domain", "[store]
   testing::TemporaryStoreFile file("constraints");
   Store store(file.path());
   SqliteDatabase db(file.path());
-  CHECK_THROWS_AS(db.execute("INSERT INTO fragments (case_id, rank, primaries, mass, on_wall) VALUES (999, 0, 1, 1, 0)"),
-                  SqliteError);
+  CHECK_THROWS_AS(
+      db.execute("INSERT INTO fragments (case_id, rank, primaries, mass, on_wall) VALUES (999, 0, 1, 1, 0)"),
+      SqliteError);
   CHECK_THROWS_AS(db.execute("INSERT INTO cases (hash, document, status, max_attempts, wall_time_limit, queued_at) "
                              "VALUES ('h', '{}', 'sleeping', 1, 1, 0)"),
                   SqliteError);

@@ -35,7 +35,8 @@ constexpr const char* kStudiesKept =
     "SELECT study_id, queued, running, done, failed, cancelled, first_started_at, last_finished_at, finished_here "
     "FROM study_summaries ORDER BY study_id";
 constexpr const char* kGridPointsFromCases =
-    "SELECT sc.study_id, sc.grid_key, min(sc.position), count(*), sum(r.outcome IS 'stick'), sum(r.outcome IS 'bounce'), "
+    "SELECT sc.study_id, sc.grid_key, min(sc.position), count(*), sum(r.outcome IS 'stick'), sum(r.outcome IS "
+    "'bounce'), "
     "sum(r.outcome IS 'break-up'), sum(r.outcome IS 'undetermined'), sum(c.status = 'failed') "
     "FROM study_cases sc JOIN cases c ON c.id = sc.case_id LEFT JOIN results r ON r.case_id = c.id "
     "GROUP BY sc.study_id, sc.grid_key ORDER BY sc.study_id, sc.grid_key";
@@ -187,8 +188,7 @@ TEST_CASE("A study's versions change with what they stand for, and with nothing 
   CHECK(store.study_versions(joining.study_id)->case_states > joined.case_states);
 }
 
-TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leaves the summaries right",
-          "[store]") {
+TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leaves the summaries right", "[store]") {
   testing::TemporaryStoreFile file("summaries_migration");
   std::int64_t study_id = 0;
   {
@@ -212,7 +212,8 @@ TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leave
                    "UPDATE results SET outcome = 'undetermined' WHERE outcome = 'bounce';"});
   CHECK(migrate_store(db, steps) == latest);
   check_summaries(db);
-  auto counts = db.prepare("SELECT sum(stick), sum(bounce), sum(break_up), sum(undetermined) FROM grid_point_summaries");
+  auto counts =
+      db.prepare("SELECT sum(stick), sum(bounce), sum(break_up), sum(undetermined) FROM grid_point_summaries");
   REQUIRE(counts.step());
   CHECK(counts.integer(0) == 0);
   CHECK(counts.integer(1) == 0);
@@ -221,8 +222,10 @@ TEST_CASE("A migration that re-classifies outcomes, or re-creates a table, leave
   CHECK(rows(db, "SELECT grid_key, cases FROM grid_point_summaries") == std::vector<std::string>{"all | 4"});
   // The triggers are back: later changes are followed again.
   db.execute("UPDATE results SET outcome = 'stick' WHERE outcome = 'undetermined'");
-  db.execute("INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
-             "VALUES (" + std::to_string(study_id + 1) + ", 'later', 'later', '{}', 'active', 3, 60, 0)");
+  db.execute(
+      "INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
+      "VALUES (" +
+      std::to_string(study_id + 1) + ", 'later', 'later', '{}', 'active', 3, 60, 0)");
   db.execute("INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) SELECT " +
              std::to_string(study_id + 1) + ", case_id, position, grid_point, 'later', replicate FROM study_cases");
   check_summaries(db);

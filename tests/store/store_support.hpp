@@ -60,13 +60,18 @@ inline nlohmann::ordered_json result_document(const std::string& outcome, std::i
   int largest = 0;
   int total = 0;
   for (const int size : fragment_sizes) {
-    fragments.push_back({{"size", size}, {"mass", static_cast<double>(size)}, {"on_wall", true},
-                         {"normal_velocity", -0.001}, {"radius_of_gyration", 1.5}});
+    fragments.push_back({{"size", size},
+                         {"mass", static_cast<double>(size)},
+                         {"on_wall", true},
+                         {"normal_velocity", -0.001},
+                         {"radius_of_gyration", 1.5}});
     largest = std::max(largest, size);
     total += size;
   }
-  return {{"dimensionless", {{"initial_contacts", total - 1}, {"energy_per_contact", summary.energy_per_contact},
-                             {"energy_over_rolling", nullptr}}},
+  return {{"dimensionless",
+           {{"initial_contacts", total - 1},
+            {"energy_per_contact", summary.energy_per_contact},
+            {"energy_over_rolling", nullptr}}},
           {"outcome",
            {{"class", outcome},
             {"fractured_on_wall", summary.fractured_on_wall},

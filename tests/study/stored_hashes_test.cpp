@@ -40,7 +40,8 @@ TEST_CASE("the default study and its cases keep their hashes") {
 
 TEST_CASE("a completed case document keeps its stored hash, whatever the schema's defaults become") {
   // The first case of the default study as `aerobreak study expand --json` printed it.
-  const Json completed = Json::parse(R"({"name": "default | impact_speed=0.005 gamma_over_kn=0.001 primaries=32 | replicate 0",
+  const Json completed =
+      Json::parse(R"({"name": "default | impact_speed=0.005 gamma_over_kn=0.001 primaries=32 | replicate 0",
     "units": "reduced", "cluster": {"generator": {"method": "ballistic", "geometric_standard_deviation": 1,
     "seed": 8945730363485681, "primaries": 32}, "relax": true}, "material": {"poisson_ratio": 0.3, "gamma_over_kn": 0.001},
     "model": {"normal": "jkr", "separation": "displacement", "damping": {"law": "viscoelastic", "dissipative_time": 0.05,

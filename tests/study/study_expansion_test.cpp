@@ -21,7 +21,8 @@ namespace {
 Json ptr(const Json& document, const std::string& pointer) { return document.at(Json::json_pointer(pointer)); }
 
 // The replicate seed computed here from its definition, independently of replicate_seed().
-std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream, int replicate, const std::string& key) {
+std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream, int replicate,
+                            const std::string& key) {
   const std::string hex = sha256_hex("aerobreak-seed-v2|" + std::to_string(study_seed) + "|" + stream + "|" +
                                      std::to_string(replicate) + "|" + key);
   return std::stoull(hex.substr(0, 16), nullptr, 16) & ((std::uint64_t{1} << 53) - 1);
@@ -30,8 +31,8 @@ std::uint64_t expected_seed(std::uint64_t study_seed, const std::string& stream,
 // The sample key of a ballistic cluster of `primaries` (docs/ORCHESTRATOR.md): its completed
 // generator without the seed, keys sorted.
 std::string ballistic_key(int primaries) {
-  return R"(generator {"geometric_standard_deviation":1,"method":"ballistic","primaries":)" + std::to_string(primaries) +
-         "}";
+  return R"(generator {"geometric_standard_deviation":1,"method":"ballistic","primaries":)" +
+         std::to_string(primaries) + "}";
 }
 
 Json grid_study() {

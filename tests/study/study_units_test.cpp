@@ -14,15 +14,17 @@ TEST_CASE("A study's unit system is its base's, reduced by default, mixed when a
   CHECK(study_unit_system(Json{{"base", {{"units", "reduced"}}}}) == "reduced");
   CHECK(study_unit_system(Json{{"base", Json::object()}}) == "reduced");
   CHECK(study_unit_system(Json::object()) == "reduced");
-  CHECK(study_unit_system(Json{{"base", {{"units", "physical"}}}, {"axes", {{"/units", {{"values", {"reduced", "physical"}}}}}}}) ==
-        "mixed");
+  CHECK(study_unit_system(Json{{"base", {{"units", "physical"}}},
+                               {"axes", {{"/units", {{"values", {"reduced", "physical"}}}}}}}) == "mixed");
   CHECK(case_unit_system(Json{{"units", "physical"}}) == "physical");
   CHECK(case_unit_system(Json{{"units", 3}}) == "reduced");
 }
 
 TEST_CASE("Each unit system names the unit of each kind of quantity", "[study][units]") {
   const auto si = units_json("physical");
-  CHECK(si == Json{{"system", "physical"}, {"length", "m"}, {"mass", "kg"}, {"time", "s"}, {"speed", "m/s"}, {"energy", "J"}});
+  CHECK(
+      si ==
+      Json{{"system", "physical"}, {"length", "m"}, {"mass", "kg"}, {"time", "s"}, {"speed", "m/s"}, {"energy", "J"}});
   const auto reduced = units_json("reduced");
   CHECK(reduced.at("speed") == "d/tau");
   CHECK(reduced.at("time") == "tau");

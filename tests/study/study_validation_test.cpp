@@ -56,13 +56,15 @@ TEST_CASE("bad ranges are named by pointer") {
   CHECK_THAT(message_at(v, "/axes/gamma_over_kn/log/from"), Contains("must be > 0"));
   CHECK_THAT(message_at(v, "/axes/impact_speed/linear/count"), Contains("must be >= 1"));
   CHECK_THAT(message_at(v, "/axes/~1model~1friction/values"), Contains("at least 1 items"));
-  CHECK_THAT(message_at(v, "/axes/~1impact~1angle"), Contains("must match exactly one of 3 alternatives, matches 1 and 2"));
+  CHECK_THAT(message_at(v, "/axes/~1impact~1angle"),
+             Contains("must match exactly one of 3 alternatives, matches 1 and 2"));
 }
 
 TEST_CASE("a range of one value needs from = to, and a longer one distinct ends") {
   Json s = minimal_study();
   s["axes"]["impact_speed"] = {{"linear", {{"from", 0.01}, {"to", 0.02}, {"count", 1}}}};
-  CHECK_THAT(message_at(violations_of(s), "/axes/impact_speed/linear/count"), Contains("at least 2 when from and to differ"));
+  CHECK_THAT(message_at(violations_of(s), "/axes/impact_speed/linear/count"),
+             Contains("at least 2 when from and to differ"));
   s["axes"]["impact_speed"] = {{"log", {{"from", 0.01}, {"to", 0.01}, {"count", 3}}}};
   CHECK_THAT(message_at(violations_of(s), "/axes/impact_speed/log/count"), Contains("must be 1 when from = to"));
   s["axes"]["impact_speed"] = {{"log", {{"from", 0.01}, {"to", 0.01}, {"count", 1}}}};
@@ -75,7 +77,9 @@ TEST_CASE("an axis name is an alias or a JSON pointer into the case") {
   s["axes"]["/bad~2pointer"] = {{"values", {1}}};
   s["axes"]["/name"] = {{"values", {"a"}}};
   const auto v = violations_of(s);
-  CHECK_THAT(message_at(v, "/axes/speed"), Contains("neither an axis alias (impact_speed, gamma_over_kn, primaries, generator, fractal_dimension, prefactor, geometric_standard_deviation)"));
+  CHECK_THAT(message_at(v, "/axes/speed"),
+             Contains("neither an axis alias (impact_speed, gamma_over_kn, primaries, generator, fractal_dimension, "
+                      "prefactor, geometric_standard_deviation)"));
   CHECK_THAT(message_at(v, "/axes/~1bad~02pointer"), Contains("not a valid JSON pointer"));
   CHECK_THAT(message_at(v, "/axes/~1name"), Contains("is a label"));
 }
@@ -86,7 +90,8 @@ TEST_CASE("a study has 1 to 8 axes, no two setting the same field") {
   CHECK(message_at(violations_of(s), "/axes") == "must name at least 1 axis");
 
   s = minimal_study();
-  for (const char* name : {"/model/friction", "/impact/angle", "/impact/gap", "/run/steps_per_period", "/model/twisting", "/wall/adhesive"})
+  for (const char* name : {"/model/friction", "/impact/angle", "/impact/gap", "/run/steps_per_period",
+                           "/model/twisting", "/wall/adhesive"})
     s["axes"][name] = {{"values", {1}}};
   CHECK(message_at(violations_of(s), "/axes") == "must name at most 8 axes (got 9)");
 
@@ -114,14 +119,16 @@ TEST_CASE("too many cases are refused before anything is expanded, with the coun
         "expands to 10000 x 10000 x 1 x 3 replicates = 300000000 cases (axis sizes x replicates); the limit here is "
         "100000 cases");
 
-  for (const char* name : {"/model/friction", "/impact/angle", "/impact/gap", "/run/steps_per_period", "/model/restitution_x"})
+  for (const char* name :
+       {"/model/friction", "/impact/angle", "/impact/gap", "/run/steps_per_period", "/model/restitution_x"})
     s["axes"][name] = {{"linear", {{"from", 1}, {"to", 2}, {"count", 10000}}}};
   CHECK_THAT(message_at(violations_of(s), "/axes"), Contains("= more than 18446744073709551615 cases"));
 
   StudyLimits tight;
   tight.max_cases = 1;
-  CHECK_THAT(message_at(violations_of(minimal_study(), tight), "/axes"),
-             Contains("expands to 2 x 1 x 1 x 1 replicate = 2 cases (axis sizes x replicates); the limit here is 1 cases"));
+  CHECK_THAT(
+      message_at(violations_of(minimal_study(), tight), "/axes"),
+      Contains("expands to 2 x 1 x 1 x 1 replicate = 2 cases (axis sizes x replicates); the limit here is 1 cases"));
 }
 
 TEST_CASE("a case that becomes invalid after substitution is named with its grid point and replicate") {
@@ -189,7 +196,8 @@ TEST_CASE("more primaries per case than the limit are refused") {
 
   s["axes"].erase("primaries");
   s["base"]["cluster"]["generator"]["primaries"] = 4097;
-  CHECK_THAT(message_at(violations_of(s, limits), "/base/cluster/generator/primaries"), Contains("asks for 4097 primaries"));
+  CHECK_THAT(message_at(violations_of(s, limits), "/base/cluster/generator/primaries"),
+             Contains("asks for 4097 primaries"));
 }
 
 TEST_CASE("cluster files are refused where the submitter may not name files, before any is read") {
@@ -221,7 +229,8 @@ TEST_CASE("relative cluster file paths are made absolute against the study's dir
   CHECK(study.cases[0].document["cluster"]["file"]["path"] == resolved);
 
   const auto v = violations_of(s, {}, scratch.path() / "elsewhere");
-  CHECK_THAT(message_at(v, "/base/cluster/file/path"), Contains("no such file: " + (scratch.path() / "elsewhere/rod.xyz").string()));
+  CHECK_THAT(message_at(v, "/base/cluster/file/path"),
+             Contains("no such file: " + (scratch.path() / "elsewhere/rod.xyz").string()));
 }
 
 TEST_CASE("load_study names a file that is missing or not JSON") {

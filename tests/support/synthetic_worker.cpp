@@ -98,7 +98,8 @@ int main() {
   const int ranks = static_cast<int>(environment_number("AEROBREAK_SYNTHETIC_RANKS", 4));
   const auto delay = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(environment_number("AEROBREAK_SYNTHETIC_DELAY", 0.0)));
-  send(ready_message(ranks, std::vector<std::string>(static_cast<std::size_t>(ranks), "synthetic"), ::getpid(), "synthetic"));
+  send(ready_message(ranks, std::vector<std::string>(static_cast<std::size_t>(ranks), "synthetic"), ::getpid(),
+                     "synthetic"));
   std::deque<Pending> pending;
   std::deque<std::string> lines;
   std::string buffer;

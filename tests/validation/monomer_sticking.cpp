@@ -14,18 +14,18 @@ namespace {
 
 // One primary, undamped JKR without friction, a head-on impact at `speed` (m/s).
 nlohmann::ordered_json monomer_case(const MaterialSI& material, double diameter, double speed) {
-  return {
-      {"units", "physical"},
-      {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", 1}, {"seed", 1}}}}},
-      {"material",
-       {{"youngs_modulus", material.youngs_modulus},
-        {"poisson_ratio", material.poisson_ratio},
-        {"density", material.density},
-        {"surface_energy", material.surface_energy},
-        {"diameter", diameter}}},
-      {"model", {{"normal", "jkr"}, {"separation", "displacement"}, {"damping", {{"law", "none"}}}, {"tangential", false}}},
-      {"impact", {{"speed", speed}}},
-      {"run", {{"time_limit", 1e9}}}};  // a placeholder, longer than any approach: monomer_sticks sets the limit
+  return {{"units", "physical"},
+          {"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", 1}, {"seed", 1}}}}},
+          {"material",
+           {{"youngs_modulus", material.youngs_modulus},
+            {"poisson_ratio", material.poisson_ratio},
+            {"density", material.density},
+            {"surface_energy", material.surface_energy},
+            {"diameter", diameter}}},
+          {"model",
+           {{"normal", "jkr"}, {"separation", "displacement"}, {"damping", {{"law", "none"}}}, {"tangential", false}}},
+          {"impact", {{"speed", speed}}},
+          {"run", {{"time_limit", 1e9}}}};  // a placeholder, longer than any approach: monomer_sticks sets the limit
 }
 
 }  // namespace
@@ -57,12 +57,12 @@ double monomer_sticking_speed(const MaterialSI& material, double diameter, doubl
 
 double exact_monomer_sticking_speed(const MaterialSI& material, double diameter) {
   const double pi = std::numbers::pi;
-  const double radius = 0.5 * diameter;                                                     // R* at a wall
+  const double radius = 0.5 * diameter;  // R* at a wall
   const double modulus = material.youngs_modulus / (2.0 * (1.0 - material.poisson_ratio * material.poisson_ratio));
   const double work = 2.0 * material.surface_energy;
-  const double a0 = std::cbrt(9.0 * pi * work * radius * radius / (2.0 * modulus));       // eq 4
-  const double pull_off = 1.5 * pi * work * radius;                                        // eq 5
-  const double critical_overlap = a0 * a0 / (2.0 * std::cbrt(6.0) * radius);                // eq 3
+  const double a0 = std::cbrt(9.0 * pi * work * radius * radius / (2.0 * modulus));  // eq 4
+  const double pull_off = 1.5 * pi * work * radius;                                  // eq 5
+  const double critical_overlap = a0 * a0 / (2.0 * std::cbrt(6.0) * radius);         // eq 3
   const double loop_energy = 0.93550 * pull_off * critical_overlap;
   const double mass = material.density * pi * diameter * diameter * diameter / 6.0;
   return std::sqrt(2.0 * loop_energy / mass);

@@ -100,7 +100,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 struct Bounce {
   double restitution = 0.0;  // 0 when the sphere stuck
   double time_step = 0.0;
-  double deepest = 0.0;      // largest overlap with the wall, in d
+  double deepest = 0.0;  // largest overlap with the wall, in d
 };
 
 Bounce throw_sphere(double speed, JkrSeparation rule, double dissipative_time) {
@@ -135,7 +135,7 @@ Bounce throw_sphere(double speed, JkrSeparation rule, double dissipative_time) {
 
 // What one rule's series shows, for the summary.
 struct RestitutionSeries {
-  double worst = 0.0, worst_at = 0.0;        // largest |e_sim / e_theory - 1| and its v / v_c
+  double worst = 0.0, worst_at = 0.0;  // largest |e_sim / e_theory - 1| and its v / v_c
   double stick_below = 0.0, bounce_above = 1e300;
   double overlap_at_vc = 0.0, overlap_at_top = 0.0;  // deepest overlap at v = v_c and at 20 v_c, d
 };
@@ -155,8 +155,10 @@ RestitutionSeries restitution_series(std::ofstream& out, JkrSeparation rule, dou
         << ',' << damped << ',' << v << ',' << elastic.deepest << ',' << elastic.time_step << '\n';
     if (ratio <= 1.0) series.overlap_at_vc = elastic.deepest;
     series.overlap_at_top = elastic.deepest;
-    if (elastic.restitution == 0.0) series.stick_below = std::max(series.stick_below, ratio);
-    else series.bounce_above = std::min(series.bounce_above, ratio);
+    if (elastic.restitution == 0.0)
+      series.stick_below = std::max(series.stick_below, ratio);
+    else
+      series.bounce_above = std::min(series.bounce_above, ratio);
     if (theory > 0.0 && elastic.restitution > 0.0 && std::fabs(elastic.restitution / theory - 1.0) > series.worst) {
       series.worst = std::fabs(elastic.restitution / theory - 1.0);
       series.worst_at = ratio;
@@ -332,8 +334,7 @@ void conservation(const std::filesystem::path& dir, std::FILE* summary) {
   // relative to |E0| and to the oscillation energy E0 - E_min (E_min: at rest at the equilibrium
   // overlap a0^2 / (3 R*), eqs 2, 4).
   const ContactConstants c = jkr_constants(false);
-  const double bottom =
-      JkrNormal{}.respond(c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius), c).energy;
+  const double bottom = JkrNormal{}.respond(c.equilibrium_radius * c.equilibrium_radius / (3.0 * c.radius), c).energy;
   out << "steps_per_period,time_step,max_error_over_abs_E0,max_error_over_oscillation_energy\n";
   double previous = 0.0;
   for (double steps_per_period : {25.0, 50.0, 100.0, 200.0, 400.0}) {

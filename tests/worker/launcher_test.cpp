@@ -39,8 +39,10 @@ TEST_CASE("A worker job is ended with SIGTERM first, so that its launcher can en
   const aerobreak::testing::ScratchDirectory directory("worker_job_end");
   const auto marker = directory.path() / "terminated";
   // A launcher that, like srun and mpirun, cleans up on SIGTERM.
-  WorkerJob polite({"/bin/sh", "-c", "trap 'echo cleaned up > " + marker.string() + "; exit 0' TERM; "
-                    "while :; do sleep 0.05; done"},
+  WorkerJob polite({"/bin/sh", "-c",
+                    "trap 'echo cleaned up > " + marker.string() +
+                        "; exit 0' TERM; "
+                        "while :; do sleep 0.05; done"},
                    directory.path() / "polite.log");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the trap is set
   polite.kill();
@@ -51,7 +53,8 @@ TEST_CASE("A worker job is ended with SIGTERM first, so that its launcher can en
   CHECK(text == "cleaned up");
 
   // One that ignores SIGTERM gets SIGKILL after the grace period.
-  WorkerJob stubborn({"/bin/sh", "-c", "trap '' TERM; while :; do sleep 0.05; done"}, directory.path() / "stubborn.log");
+  WorkerJob stubborn({"/bin/sh", "-c", "trap '' TERM; while :; do sleep 0.05; done"},
+                     directory.path() / "stubborn.log");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const auto start = std::chrono::steady_clock::now();
   stubborn.kill();

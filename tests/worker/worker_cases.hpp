@@ -28,8 +28,8 @@ inline nlohmann::ordered_json slow_case(double time_limit) {
 
 inline nlohmann::ordered_json case_message(std::int64_t id, const nlohmann::ordered_json& document,
                                            double wall_time = 0.0, const std::string& data_file = "") {
-  return {{"type", "case"},      {"case", id},           {"attempt", 0},
-          {"document", document}, {"wall_time", wall_time}, {"data_file", data_file}};
+  return {{"type", "case"},        {"case", id}, {"attempt", 0}, {"document", document}, {"wall_time", wall_time},
+          {"data_file", data_file}};
 }
 
 inline nlohmann::ordered_json stop_message() { return {{"type", "stop"}}; }

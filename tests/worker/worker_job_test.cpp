@@ -57,8 +57,8 @@ pid_t worker_rank_process(const WorkerJob& job, pid_t rank0) {
 }
 
 struct Scratch {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                              ("aerobreak_worker_job_" + std::to_string(::getpid()));
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("aerobreak_worker_job_" + std::to_string(::getpid()));
   Scratch() { std::filesystem::create_directories(dir); }
   ~Scratch() {
     std::error_code ignored;
@@ -100,7 +100,7 @@ TEST_CASE("A two-rank job answers every case, passes cheap cases past a costly o
       finished.push_back(id);
     }
   }
-  CHECK(finished.back() == 1);  // the cheap cases did not wait behind the costly one ...
+  CHECK(finished.back() == 1);                      // the cheap cases did not wait behind the costly one ...
   CHECK(results[2]["rank"] == results[3]["rank"]);  // ... but went to the other rank
   CHECK(results[1]["rank"] != results[2]["rank"]);
   for (const auto& [id, message] : results) {

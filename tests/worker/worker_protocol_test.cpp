@@ -31,7 +31,7 @@ TEST_CASE("A message with invalid UTF-8 in a string is still sent") {
 TEST_CASE("A case message decodes to its assignment and back") {
   const Json document = {{"run", {{"time_limit", 1}}}};
   const Json message = {{"type", "case"},       {"case", 9007199254740993}, {"attempt", 3},
-                        {"document", document}, {"wall_time", 2.5},        {"data_file", "/data/c.h5"}};
+                        {"document", document}, {"wall_time", 2.5},         {"data_file", "/data/c.h5"}};
   std::string line = protocol_line(message);
   line.pop_back();  // the reader hands over lines without their '\n'
   const OrchestratorMessage decoded = decode_orchestrator_line(line);
@@ -154,13 +154,21 @@ TEST_CASE("A job message with wrong fields is told apart: an answer for its case
   CHECK(no_result.case_id == 4);
   CHECK(no_result.attempt == 1);
   CHECK_THAT(no_result.problem, Contains("/result"));
-  const auto bad_kind = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
-                                                                 {"rank", 0}, {"seconds", 1.0}, {"kind", "oom"},
-                                                                 {"error", "x"}}));
+  const auto bad_kind = std::get<UnreadableAnswer>(job_message({{"type", "failed"},
+                                                                {"case", 4},
+                                                                {"attempt", 1},
+                                                                {"rank", 0},
+                                                                {"seconds", 1.0},
+                                                                {"kind", "oom"},
+                                                                {"error", "x"}}));
   CHECK_THAT(bad_kind.problem, Contains("/kind"));
-  const auto negative = std::get<UnreadableAnswer>(job_message({{"type", "failed"}, {"case", 4}, {"attempt", 1},
-                                                                 {"rank", 0}, {"seconds", -1.0}, {"kind", "error"},
-                                                                 {"error", "x"}}));
+  const auto negative = std::get<UnreadableAnswer>(job_message({{"type", "failed"},
+                                                                {"case", 4},
+                                                                {"attempt", 1},
+                                                                {"rank", 0},
+                                                                {"seconds", -1.0},
+                                                                {"kind", "error"},
+                                                                {"error", "x"}}));
   CHECK_THAT(negative.problem, Contains("/seconds"));
   // Without its case or attempt, or of no known type, it is only logged.
   CHECK_THAT(std::get<UnknownJobMessage>(job_message({{"type", "started"}, {"attempt", 1}})).problem,

@@ -148,8 +148,8 @@ TEST_CASE("visco-elastic damping: 1 - e grows as v^(1/5) with the Schwager-Posch
   spec.dissipative_time = dissipative_time;
   const ContactConstants wall = contact_constants(HertzNormal{}, material, material, unit_radius, 0.0);
   const double beta = 1.5 * dissipative_time * std::pow(wall.hertz_coefficient / wall.mass, 0.4);
-  const double c1 = std::tgamma(0.6) * std::sqrt(std::numbers::pi) /
-                    (std::pow(2.0, 0.2) * std::pow(5.0, 0.4) * std::tgamma(2.1));
+  const double c1 =
+      std::tgamma(0.6) * std::sqrt(std::numbers::pi) / (std::pow(2.0, 0.2) * std::pow(5.0, 0.4) * std::tgamma(2.1));
   const double c2 = 0.6 * c1 * c1;
 
   std::vector<double> speeds, loss;

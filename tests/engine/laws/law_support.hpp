@@ -17,17 +17,19 @@ namespace aerobreak::laws {
 inline constexpr double unit_radius = 0.5;
 inline constexpr double unit_density = 6.0 / std::numbers::pi;  // m = 1 for d = 1
 
-inline double sphere_mass(double radius) { return unit_density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius; }
+inline double sphere_mass(double radius) {
+  return unit_density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+}
 
 // Constants of a contact between two spheres (radius_j > 0) or a sphere and a wall (radius_j = 0),
 // completed by the given normal law.
 template <class Normal>
-ContactConstants contact_constants(const Normal& law, const Material& mi, const Material& mj, double radius_i = unit_radius,
-                                   double radius_j = unit_radius) {
+ContactConstants contact_constants(const Normal& law, const Material& mi, const Material& mj,
+                                   double radius_i = unit_radius, double radius_j = unit_radius) {
   const PairMaterial pair = combine(mi, mj);
-  ContactConstants c = radius_j > 0.0
-                           ? sphere_pair_constants(radius_i, sphere_mass(radius_i), radius_j, sphere_mass(radius_j), pair)
-                           : sphere_wall_constants(radius_i, sphere_mass(radius_i), pair);
+  ContactConstants c =
+      radius_j > 0.0 ? sphere_pair_constants(radius_i, sphere_mass(radius_i), radius_j, sphere_mass(radius_j), pair)
+                     : sphere_wall_constants(radius_i, sphere_mass(radius_i), pair);
   law.complete(c);
   return c;
 }
@@ -35,8 +37,8 @@ ContactConstants contact_constants(const Normal& law, const Material& mi, const 
 inline Wall floor_wall(bool adhesive) { return Wall{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0, adhesive}; }
 
 // One unit sphere above the floor z = 0 with its surface `gap` above it, moving with `velocity`.
-inline Simulation sphere_over_floor(const ContactModelSpec& spec, const Material& material, double gap, const Vec3& velocity,
-                                    bool adhesive_wall, SimulationSettings settings = {}) {
+inline Simulation sphere_over_floor(const ContactModelSpec& spec, const Material& material, double gap,
+                                    const Vec3& velocity, bool adhesive_wall, SimulationSettings settings = {}) {
   Particles p;
   p.add({0.0, 0.0, unit_radius + gap}, unit_radius, unit_density);
   p.velocity[0] = velocity;
@@ -44,10 +46,10 @@ inline Simulation sphere_over_floor(const ContactModelSpec& spec, const Material
 }
 
 struct Impact {
-  double restitution = 0.0;      // v_out / v_in, normal components
+  double restitution = 0.0;  // v_out / v_in, normal components
   double kinetic_before = 0.0;
   double kinetic_after = 0.0;
-  EnergyBudget energy;           // after the sphere has left the wall
+  EnergyBudget energy;  // after the sphere has left the wall
   std::int64_t contact_steps = 0;
   double time_step = 0.0;
 };

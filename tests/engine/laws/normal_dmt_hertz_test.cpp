@@ -104,7 +104,8 @@ TEST_CASE("Hertz and DMT energy is the integral of the force over the overlap") 
       const double hertz_work = work_of([&](double x) { return hertz.respond(x, h).force; }, overlap);
       CHECK(hertz.respond(overlap, h).energy == Approx(hertz_work).epsilon(1e-10));
       const double dmt_work = work_of([&](double x) { return dmt.respond(x, d).force; }, overlap);
-      CHECK(dmt.respond(overlap, d).energy == Approx(dmt_work).epsilon(1e-10).margin(1e-12 * d.pull_off_force * overlap));
+      CHECK(dmt.respond(overlap, d).energy ==
+            Approx(dmt_work).epsilon(1e-10).margin(1e-12 * d.pull_off_force * overlap));
     }
   }
 }
@@ -123,8 +124,9 @@ TEST_CASE("a Hertz impact lasts the Hertz contact time and reaches the Hertz ove
   SimulationSettings settings;
   settings.steps_per_period = 200.0;
   const Vec3 velocity{0.0, 0.0, -speed};
-  Simulation sim = sphere_over_floor(spec, m, 0.5 * speed * sphere_over_floor(spec, m, 1.0, velocity, false, settings).time_step(),
-                                     velocity, false, settings);
+  Simulation sim =
+      sphere_over_floor(spec, m, 0.5 * speed * sphere_over_floor(spec, m, 1.0, velocity, false, settings).time_step(),
+                        velocity, false, settings);
   const ContactConstants c = contact_constants(HertzNormal{}, m, m, unit_radius, 0.0);
   const double deepest = std::pow(5.0 * c.mass * speed * speed / (4.0 * c.hertz_coefficient), 0.4);
   const double beta = std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);

@@ -160,8 +160,14 @@ TEST_CASE("a rigidly co-rotating pair feels no tangential force and no rolling o
   for (int s = 0; s < 200; ++s) {
     // Rodrigues: n0 turned by rate t about axis.
     const double angle = rate * dt * s;
-    const Vec3 n = std::cos(angle) * n0 + std::sin(angle) * cross(axis, n0) + (1.0 - std::cos(angle)) * dot(axis, n0) * axis;
-    const ContactMotion motion{n, overlap, cross(omega, -distance * n), omega, omega, unit_radius - 0.5 * overlap,
+    const Vec3 n =
+        std::cos(angle) * n0 + std::sin(angle) * cross(axis, n0) + (1.0 - std::cos(angle)) * dot(axis, n0) * axis;
+    const ContactMotion motion{n,
+                               overlap,
+                               cross(omega, -distance * n),
+                               omega,
+                               omega,
+                               unit_radius - 0.5 * overlap,
                                unit_radius - 0.5 * overlap};
     const ContactLoad load = model.evaluate(state, motion, dt, tally);
     const Vec3 tangential_force = load.force_i - dot(load.force_i, n) * n;

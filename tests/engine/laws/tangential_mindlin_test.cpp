@@ -80,8 +80,8 @@ TEST_CASE("Coulomb limit mu (F_n + 2 F_c) caps the Mindlin force") {
 
     // Below the limit: a plain spring, nothing dissipated.
     const Vec3 start{0.25 * limit / k, 0.0, 0.0};
-    const Evaluation elastic = evaluate(mu, start, {0.0, 0.2 * limit / k, 0.0}, up, n.contact_radius,
-                                        n.contact_radius, n.coulomb_load, c);
+    const Evaluation elastic =
+        evaluate(mu, start, {0.0, 0.2 * limit / k, 0.0}, up, n.contact_radius, n.contact_radius, n.coulomb_load, c);
     CHECK(elastic.force.x == Approx(-0.25 * limit).epsilon(1e-12));
     CHECK(elastic.force.y == Approx(-0.2 * limit).epsilon(1e-12));
     CHECK(elastic.tally.friction == 0.0);
@@ -200,7 +200,9 @@ TEST_CASE("a sphere set moving on an adhesive wall with high friction sticks and
   Simulation sim = sphere_on_wall(10.0);
   settle_and_launch(sim, v0);
   const Particles& p = sim.particles();
-  const auto momentum = [&] { return p.inertia[0] * p.angular_velocity[0].y + p.mass[0] * p.position[0].z * p.velocity[0].x; };
+  const auto momentum = [&] {
+    return p.inertia[0] * p.angular_velocity[0].y + p.mass[0] * p.position[0].z * p.velocity[0].x;
+  };
   const double l0 = momentum();
   double mean = 0.0;
   double drift = 0.0;

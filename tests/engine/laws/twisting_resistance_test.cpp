@@ -85,7 +85,8 @@ TEST_CASE("twisting torque is capped at (2/3) mu a (F_n + 2 F_c) and the twistin
     CHECK(norm(e.torque) == Approx(limit).epsilon(1e-12));
     CHECK(dot(e.torque, normal) > 0.0);  // opposes the twist, which is along -n
     CHECK(angle == Approx(-limit / k_tw).epsilon(1e-12));
-    CHECK(e.tally.twisting == Approx(0.5 * k_tw * ((start + angle) * w + start * start - angle * angle)).epsilon(1e-12));
+    CHECK(e.tally.twisting ==
+          Approx(0.5 * k_tw * ((start + angle) * w + start * start - angle * angle)).epsilon(1e-12));
     CHECK(e.energy == Approx(0.5 * k_tw * angle * angle).epsilon(1e-12));
 
     // Twisting on at the limit.

@@ -31,7 +31,8 @@ double simpson(F f, double a, double b, int n) {
 
 }  // namespace
 
-TEST_CASE("van der Waals attraction is A Reff/(6 z^2) between z0 and the cut-off and is constant below and zero beyond") {
+TEST_CASE(
+    "van der Waals attraction is A Reff/(6 z^2) between z0 and the cut-off and is constant below and zero beyond") {
   const double scale = law.hamaker * reduced_radius / 6.0;
   for (double gap : {z0, 1.5 * z0, 0.01, 0.03, 0.0499}) {
     INFO("z = " << gap);
@@ -62,8 +63,8 @@ TEST_CASE("van der Waals energy is minus the integral of the attraction from the
     const double h = 1e-4 * gap;
     CHECK((energy(gap + h) - energy(gap - h)) / (2.0 * h) == Approx(force(gap)).epsilon(1e-6));
     const double top = law.cutoff * (1.0 - 1e-15);  // the force drops to zero at the cut-off itself
-    const double integral = gap < z0 ? simpson(force, gap, z0, 10000) + simpson(force, z0, top, 10000)
-                                     : simpson(force, gap, top, 10000);
+    const double integral =
+        gap < z0 ? simpson(force, gap, z0, 10000) + simpson(force, z0, top, 10000) : simpson(force, gap, top, 10000);
     CHECK(energy(gap) == Approx(-integral).epsilon(1e-6));
     CHECK(energy(gap) < 0.0);
   }
