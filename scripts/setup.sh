@@ -21,6 +21,7 @@ packages=(
   libeigen3-dev
   libboost-dev
   gfortran
+  clang-format
   openfoam
   chromium
 )
