@@ -24,11 +24,11 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
   std::size_t break_ups = 0;
   for (const CaseOutcome& c : outcomes.table.cases) {
     REQUIRE(c.retained_mass_fraction);
-    if (c.outcome == Outcome::break_up) {
+    if (c.outcome == ImpactOutcome::break_up) {
       ++break_ups;
       CHECK(c.reentrained_sizes == std::vector<std::int64_t>{1, 3, 1, 3});
     }
-    if (c.outcome == Outcome::stick) CHECK(c.reentrained_sizes.empty());
+    if (c.outcome == ImpactOutcome::stick) CHECK(c.reentrained_sizes.empty());
   }
   CHECK(break_ups > 0);
   // A second study naming the same cases gets its own count when it is linked to them.
