@@ -20,8 +20,8 @@ namespace {
 const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter sphere
 const double glide = 0.05;                      // speed along the wall (d/tau)
 
-// Primary 0 sits on an adhesive wall (a small overlap: in contact from the start); primary 1 glides away from it, 1.5 d above the wall,
-// coming down at `normal_speed`. JKR without damping, Mindlin friction and rolling resistance on.
+// Primary 0 sits on an adhesive wall (a small overlap: in contact from the start); primary 1 glides away from it, 1.5 d
+// above the wall, coming down at `normal_speed`. JKR without damping, Mindlin friction and rolling resistance on.
 Simulation gliding_primary(double normal_speed) {
   Particles p;
   p.add({0.0, 0.0, 0.495}, 0.5, density);
