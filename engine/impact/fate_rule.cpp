@@ -38,6 +38,11 @@ Vec3 solve(const Symmetric3& a, const Vec3& b) {  // Cramer's rule
   return {det3(b, c1, c2) / det, det3(c0, b, c2) / det, det3(c0, c1, b) / det};
 }
 
+double quadratic_form(const Symmetric3& a, const Vec3& e) {  // e.A.e
+  return a.xx * e.x * e.x + a.yy * e.y * e.y + a.zz * e.z * e.z +
+         2.0 * (a.xy * e.x * e.y + a.xz * e.x * e.z + a.yz * e.y * e.z);
+}
+
 // The smallest and largest eigenvalues of a symmetric 3x3 matrix (the trigonometric solution of
 // its characteristic cubic).
 std::pair<double, double> eigenvalue_range(const Symmetric3& a) {
@@ -79,8 +84,8 @@ struct Reserve {
   double fastest_spin = 0.0;
   double pull = 0.0;
   double deformation = 0.0;
-  double largest_orbital = 0.0;  // the largest eigenvalue of the orbital inertia
-  double unwinding = 0.0;        // what the rotation can give up while a bond stretches (unwinding)
+  double axial_orbital = 0.0;  // the orbital inertia about the rotation's axis
+  double unwinding = 0.0;      // what the rotation can give up while a bond opens (rotation_unwinding)
 };
 
 void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std::size_t i) {
@@ -101,18 +106,17 @@ void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std:
   f.own_moments += own;
 }
 
-// What a rotation of kinetic energy E can give up while a bond stretches by s before it lets go.
-// At fixed angular momentum L a rigid body has at least L^2 / (2 I_max) of kinetic energy; stretching
-// moves each primary at most s further from the centre of mass, so the orbital inertia's largest
-// eigenvalue grows to at most (high^(1/2) + s M^(1/2))^2 (Minkowski), while the primaries' own moments c
-// stay. With E = L^2 / (2 I_eff) now, at most E (1 - I_eff / I_max) goes into the stretch: the energy
-// a spinning dimer's bond draws from its orbit as it opens.
-double rotation_unwinding(double energy, double momentum2, double mass, double high, double own, double stretch) {
+// What a rotation of kinetic energy E about the axis e can give up while a bond stretches by s
+// before it lets go. Stretching moves each primary at most s further from the centre of mass, so the
+// orbital moment about e, x = e.I_orb.e, grows to at most (x^(1/2) + s M^(1/2))^2 (Minkowski), while
+// the primaries' own moments c stay; at fixed angular momentum the rotation's energy falls in
+// proportion to the moment, so at most E (1 - (x + c) / ((x^(1/2) + s M^(1/2))^2 + c)) goes into the
+// stretch: the energy a spinning dimer's bond draws from its orbit as it opens. (The rule keeps a
+// fragment's shape otherwise: a tumbling fragment's drift to its largest axis is not counted.)
+double rotation_unwinding(double energy, double mass, double axial_orbital, double own, double stretch) {
   if (!(energy > 0.0)) return 0.0;
-  const double reach = std::sqrt(high) + stretch * std::sqrt(mass);
-  const double widest = reach * reach + own;
-  const double now = momentum2 / (2.0 * energy);
-  return energy * std::clamp(1.0 - now / widest, 0.0, 1.0);
+  const double reach = std::sqrt(std::max(axial_orbital, 0.0)) + stretch * std::sqrt(mass);
+  return energy * (1.0 - (axial_orbital + own) / (reach * reach + own));
 }
 
 // The most a rigid rotation of kinetic energy E pulls on any bond. A bond carries the centripetal
@@ -142,7 +146,8 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     const auto [low, high] = eigenvalue_range(f.orbital);
     f.fastest_spin = std::sqrt(2.0 * f.rotation / (low + f.own_moments));
     f.pull = rotation_pull(f.rotation, fa.fragments[k].mass, low, high, f.own_moments);
-    f.largest_orbital = high;
+    const double spin = norm(f.spin);
+    if (spin > 0.0) f.axial_orbital = quadratic_form(f.orbital, f.spin / spin);
   }
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Fragment& fragment = fa.fragments[fa.fragment_of[i]];
@@ -162,8 +167,8 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     f.stretch = std::max(f.stretch, c.overlap + c.constants.break_overlap);
   });
   for (std::size_t k = 0; k < r.size(); ++k)
-    r[k].unwinding = rotation_unwinding(r[k].rotation, norm2(r[k].momentum), fa.fragments[k].mass, r[k].largest_orbital,
-                                        r[k].own_moments, r[k].stretch);
+    r[k].unwinding =
+        rotation_unwinding(r[k].rotation, fa.fragments[k].mass, r[k].axial_orbital, r[k].own_moments, r[k].stretch);
   if (!sim.walls().empty() && sim.walls().front().adhesive)
     for (std::size_t k = 0; k < fa.fragments.size(); ++k)
       if (fa.fragments[k].size == 1) r[k].landing_loop = sim.wall_loop_energy(fa.fragments[k].first_primary, 0);
