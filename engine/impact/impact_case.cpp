@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/impact/case_hints.hpp"
+#include "engine/impact/case_inputs.hpp"
 #include "engine/impact/schema_text.hpp"
 #include "engine/io/cluster_library.hpp"
 #include "engine/io/json_text.hpp"
@@ -132,24 +133,14 @@ namespace {
 
 using Violations = std::vector<SchemaViolation>;
 
-// The primaries' material and the wall's, reduced (E in k_n/d, gamma in k_n), and the impact speed.
+// The primaries' material and the wall's, reduced (E in k_n/d, gamma in k_n), the impact speed
+// and angle: the primaries' and the impact's as every reader of a case reads them (case_inputs.hpp).
 void read_materials(const Json& d, ImpactCase& c) {
-  const Json& m = d["material"];
-  if (d["units"].get<std::string>() == "physical") {
-    PhysicalScaling scaling;
-    scaling.material.youngs_modulus = m["youngs_modulus"].get<double>();
-    scaling.material.poisson_ratio = m["poisson_ratio"].get<double>();
-    scaling.material.density = m["density"].get<double>();
-    scaling.material.surface_energy = m["surface_energy"].get<double>();
-    scaling.diameter = m["diameter"].get<double>();
-    scaling.softening = m["softening"].get<double>();
-    c.physical = scaling;
-    c.material = scaling.reduced();
-    c.speed = scaling.reduced_speed(d["impact"]["speed"].get<double>());
-  } else {
-    c.material = reduced_material(m["gamma_over_kn"].get<double>(), m["poisson_ratio"].get<double>());
-    c.speed = d["impact"]["speed"].get<double>();
-  }
+  const CaseInputs inputs = read_case_inputs(d);
+  c.physical = inputs.physical;
+  c.material = inputs.material;
+  c.speed = inputs.speed;
+  c.angle_degrees = inputs.angle_degrees;
 
   // Wall material: the primaries' unless given; reduced like them (E in k_n/d, gamma in k_n).
   c.wall_adhesive = d["wall"]["adhesive"].get<bool>();
@@ -263,7 +254,6 @@ ImpactCase read_case(Json document, const std::filesystem::path& base_directory,
   c.cluster = cluster_source(c.document["cluster"], base_directory, violations);
 
   const Json& im = d["impact"];
-  c.angle_degrees = im["angle"].get<double>();
   c.orientation_seed = im["orientation_seed"].get<std::uint64_t>();
   c.gap = im["gap"].get<double>();
 

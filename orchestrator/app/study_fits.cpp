@@ -116,14 +116,6 @@ CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std
     throw CorrelationRequestError("study " + std::to_string(study.id) + " has no results yet: nothing to fit", true);
   if (version) *version = outcomes.result_set_version;
   if (result_set_hash) *result_set_hash = sha256_hex(outcomes.identity);
-  const std::string primaries_axis = axis_setting(study_axes(study), kPrimariesPointer);
-  const nlohmann::ordered_json base_primaries = study.document.value(
-      nlohmann::ordered_json::json_pointer("/base" + std::string(kPrimariesPointer)), nlohmann::ordered_json());
-  for (CaseOutcome& c : outcomes.table.cases) {
-    const auto& point = outcomes.table.grid_points[c.grid_point];
-    const auto& n = primaries_axis.empty() ? base_primaries : point.value(primaries_axis, nlohmann::ordered_json());
-    c.primaries = n.is_number() ? n.get<std::int64_t>() : 0;
-  }
   return std::move(outcomes.table);
 }
 

@@ -38,7 +38,8 @@ CorrelationRequest correlation_request(const StudyRecord& study,
 // are stored and cached under, so that two different requests never share an answer.
 std::string request_key(const CorrelationRequest& request);
 
-// A study's outcomes with each case's N filled in (from the primaries axis or the study's base).
+// A study's outcomes, each case's N as the store keeps it (0 for a cluster file). Throws
+// CorrelationRequestError for a study without results.
 CaseOutcomeTable study_outcome_table(Store& store, const StudyRecord& study, std::int64_t* version = nullptr,
                                      std::string* result_set_hash = nullptr);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/impact/case_inputs.hpp"
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
 #include "orchestrator/study/field_units.hpp"
@@ -13,22 +14,6 @@ namespace {
 
 // Quantities the grid and sections tables have a column of their own for.
 const std::vector<std::string> kOwnColumns{"impact_speed", "gamma_over_kn", "primaries", "impact_angle"};
-
-double value_at(const nlohmann::ordered_json& document, const std::string& pointer, double fallback) {
-  const auto json_pointer = nlohmann::ordered_json::json_pointer(pointer);
-  if (!document.contains(json_pointer) || !document.at(json_pointer).is_number()) return fallback;
-  return document.at(json_pointer).get<double>();
-}
-
-PhysicalScaling physical_scaling(const nlohmann::ordered_json& material) {
-  PhysicalScaling scaling;
-  scaling.material.youngs_modulus = material.at("youngs_modulus").get<double>();
-  scaling.material.poisson_ratio = material.value("poisson_ratio", 0.3);
-  scaling.material.density = material.at("density").get<double>();
-  scaling.material.surface_energy = material.at("surface_energy").get<double>();
-  scaling.diameter = material.at("diameter").get<double>();
-  return scaling;
-}
 
 std::vector<AxisColumn> extra_axis_columns(const std::vector<GridRowInputs>& inputs) {
   std::vector<const nlohmann::ordered_json*> points;
@@ -124,25 +109,17 @@ std::string axis_column_name(const std::string& axis) {
 }
 
 GridRowInputs grid_row_inputs(const GridPointCase& point) {
-  const auto& document = point.document;
+  const CaseInputs read = read_case_inputs(point.document);
   GridRowInputs inputs;
   inputs.grid_key = point.grid_key;
   inputs.grid_point = point.grid_point;
-  inputs.primaries = value_at(document, "/cluster/generator/primaries", kMissing);
-  inputs.angle = value_at(document, "/impact/angle", 0.0);
-  inputs.fractal_dimension = value_at(document, "/cluster/generator/fractal_dimension", kMissing);
-  const double speed = value_at(document, "/impact/speed", kMissing);
-  if (document.value("units", std::string("reduced")) == "physical") {
-    inputs.scaling = physical_scaling(document.at("material"));
-    const Material reduced = inputs.scaling->reduced();
-    inputs.gamma_over_kn = reduced.surface_energy;
-    inputs.poisson_ratio = reduced.poisson_ratio;
-    inputs.speed = inputs.scaling->reduced_speed(speed);
-  } else {
-    inputs.gamma_over_kn = value_at(document, "/material/gamma_over_kn", kMissing);
-    inputs.poisson_ratio = value_at(document, "/material/poisson_ratio", 0.3);
-    inputs.speed = speed;
-  }
+  inputs.speed = read.speed;
+  inputs.primaries = point.primaries ? static_cast<double>(*point.primaries) : kMissing;
+  inputs.gamma_over_kn = read.material.surface_energy;
+  inputs.poisson_ratio = read.material.poisson_ratio;
+  inputs.angle = read.angle_degrees;
+  inputs.fractal_dimension = read.fractal_dimension.value_or(kMissing);
+  inputs.scaling = read.physical;
   return inputs;
 }
 

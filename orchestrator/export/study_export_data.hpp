@@ -11,12 +11,13 @@
 
 namespace aerobreak {
 
-// The inputs of one grid point, read from its first case document (reduced units).
+// The inputs of one grid point: its first case's, as the engine reads them (engine/impact/case_inputs.hpp),
+// and N as the store keeps it (reduced units).
 struct GridRowInputs {
   std::string grid_key;
   nlohmann::ordered_json grid_point;
-  double speed = 0.0;  // d/tau
-  double primaries = 0.0;
+  double speed = 0.0;      // d/tau
+  double primaries = 0.0;  // NaN: a cluster file
   double gamma_over_kn = 0.0;
   double poisson_ratio = 0.3;
   double angle = 0.0;                      // degrees from head-on

@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 
+#include "orchestrator/store/case_primaries.hpp"
 #include "orchestrator/store/outcome_migration.hpp"
 #include "orchestrator/store/store_summaries.hpp"
 
@@ -242,6 +243,13 @@ WHERE data_file LIKE '/%'
               WHERE c.id = results.case_id AND results.data_file LIKE '%/cases/' || c.hash || '.h5');
 )sql";
 
+// Each case's N, the primaries of its cluster, read from its document once, when the case is
+// stored (fill_case_primaries for the cases already there): the statistics and the lookup tables
+// read it from here. Null for a cluster file, whose N the document does not say.
+constexpr std::string_view kVersion9 = R"sql(
+ALTER TABLE cases ADD COLUMN primaries INTEGER CHECK (primaries >= 1);
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -252,6 +260,7 @@ constexpr std::array kMigrations{
     Migration{6, "indexes for the dashboard: cases by grid point, the results' summed columns", kVersion6},
     Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
     Migration{8, "data-file paths relative to the data folder", kVersion8},
+    Migration{9, "each case's N (primaries of its cluster) beside its document", kVersion9, fill_case_primaries},
 };
 
 int user_version(SqliteDatabase& db) {

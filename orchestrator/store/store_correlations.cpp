@@ -39,6 +39,7 @@ CaseOutcome outcome_from(const SqliteStatement& row, std::size_t grid_point) {
   c.damage_ratio = row.optional_real(9);
   c.energy_per_contact = row.optional_real(10);
   c.small_strain_exceeded = row.optional_integer(11).value_or(0) != 0;
+  c.primaries = row.optional_integer(12).value_or(0);
   return c;
 }
 
@@ -70,7 +71,7 @@ StudyOutcomes Store::study_outcomes(std::int64_t study_id) {
     outcomes.result_set_version = version_of(*db, study_id);
     auto statement = db->prepare(
         "SELECT sc.grid_key, sc.grid_point, r.case_id, c.hash, r.attempt, r.committed_at, r.outcome, r.restitution, "
-        "r.retained_mass_fraction, r.damage_ratio, r.energy_per_contact, r.small_strain_exceeded "
+        "r.retained_mass_fraction, r.damage_ratio, r.energy_per_contact, r.small_strain_exceeded, c.primaries "
         "FROM study_cases sc JOIN results r ON r.case_id = sc.case_id JOIN cases c ON c.id = sc.case_id WHERE "
         "sc.study_id = ? ORDER BY sc.position");
     statement.bind_all(study_id);

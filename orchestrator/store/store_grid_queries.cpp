@@ -149,13 +149,13 @@ std::vector<GridPointCase> Store::grid_point_cases(std::int64_t study_id) {
   auto db = read();
   // SQLite takes the bare columns of a min() aggregate from the row that holds the minimum.
   auto statement = db->prepare(
-      "SELECT sc.grid_key, sc.grid_point, c.document, min(sc.position) FROM study_cases sc JOIN cases c "
+      "SELECT sc.grid_key, sc.grid_point, c.document, c.primaries, min(sc.position) FROM study_cases sc JOIN cases c "
       "ON c.id = sc.case_id WHERE sc.study_id = ? GROUP BY sc.grid_key ORDER BY min(sc.position)");
   statement.bind_all(study_id);
   std::vector<GridPointCase> points;
   while (statement.step())
     points.push_back({statement.text(0), nlohmann::ordered_json::parse(statement.text(1)),
-                      nlohmann::ordered_json::parse(statement.text(2))});
+                      nlohmann::ordered_json::parse(statement.text(2)), statement.optional_integer(3)});
   return points;
 }
 

@@ -1,13 +1,15 @@
 #include "orchestrator/store/store_search_rows.hpp"
 
+#include "engine/impact/case_inputs.hpp"
+
 namespace aerobreak {
 
 void link_study_cases(SqliteDatabase& db, std::int64_t study_id, const std::vector<StudySubmission::Case>& cases,
                       std::int64_t first_position, const CaseSettings& settings, SubmissionReceipt& receipt) {
   auto find_case = db.prepare("SELECT id, status FROM cases WHERE hash = ?");
   auto insert_case = db.prepare(
-      "INSERT INTO cases (hash, document, status, max_attempts, wall_time_limit, queued_at) "
-      "VALUES (?, ?, 'queued', ?, ?, ?)");
+      "INSERT INTO cases (hash, document, primaries, status, max_attempts, wall_time_limit, queued_at) "
+      "VALUES (?, ?, ?, 'queued', ?, ?, ?)");
   auto requeue_case = db.prepare("UPDATE cases SET status = 'queued', queued_at = ? WHERE id = ?");
   auto link = db.prepare(
       "INSERT OR IGNORE INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate, search_group, "
@@ -28,8 +30,8 @@ void link_study_cases(SqliteDatabase& db, std::int64_t study_id, const std::vect
       }
     } else {
       insert_case.reset();
-      insert_case.bind_all(study_case.hash, study_case.document.dump(), settings.max_attempts, settings.wall_time_limit,
-                           settings.now);
+      insert_case.bind_all(study_case.hash, study_case.document.dump(), read_case_inputs(study_case.document).primaries,
+                           settings.max_attempts, settings.wall_time_limit, settings.now);
       insert_case.run();
       case_id = db.last_insert_id();
       ++receipt.new_cases;

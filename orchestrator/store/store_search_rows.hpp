@@ -14,7 +14,8 @@ struct CaseSettings {
   double now = 0.0;
 };
 
-// Stores each case once by its hash (a cancelled one is queued again) and links it to the study
+// Stores each case once by its hash, with its N read from its document (engine/impact/case_inputs.hpp;
+// a cancelled one is queued again), and links it to the study
 // at positions first_position, first_position + 1, ...; counts what it did in `receipt`.
 void link_study_cases(SqliteDatabase& db, std::int64_t study_id, const std::vector<StudySubmission::Case>& cases,
                       std::int64_t first_position, const CaseSettings& settings, SubmissionReceipt& receipt);

@@ -314,11 +314,12 @@ struct GridPointFragmentMasses {
 };
 
 // One grid point of a study with the document of its first case (every replicate shares the
-// physics but for the seeds).
+// physics but for the seeds) and the N stored with it.
 struct GridPointCase {
   std::string grid_key;
   nlohmann::ordered_json grid_point;
   nlohmann::ordered_json document;
+  std::optional<std::int64_t> primaries;  // none: a cluster file
 };
 
 struct JobRecord {

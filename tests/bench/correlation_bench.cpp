@@ -104,7 +104,7 @@ StudySubmission submission_of(const CaseOutcomeTable& table) {
     c.grid_key = c.grid_point.dump();
     c.replicate = static_cast<int>(i / table.grid_points.size());
     c.hash = std::to_string(i);
-    c.document = nlohmann::ordered_json::object();
+    c.document = {{"cluster", {{"generator", {{"primaries", table.cases[i].primaries}}}}}};  // N, as a case holds it
     study.cases.push_back(std::move(c));
   }
   return study;

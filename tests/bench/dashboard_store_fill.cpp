@@ -47,7 +47,8 @@ aerobreak::StudySubmission synthetic_study() {
               {"impact_speed", speed}, {"primaries", n}, {"gamma_over_kn", gamma}, {"/model/friction", friction}};
           for (int r = 0; r < kReplicates; ++r) {
             const std::string hash = point.dump() + "#" + std::to_string(r);
-            study.cases.push_back({hash, Json{{"synthetic", hash}}, point, point.dump(), r});
+            study.cases.push_back({hash, Json{{"synthetic", hash}, {"cluster", {{"generator", {{"primaries", n}}}}}},
+                                   point, point.dump(), r});
           }
         }
   return study;

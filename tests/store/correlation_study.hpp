@@ -26,7 +26,9 @@ inline StudySubmission correlation_study_submission(const std::string& hash, int
         c.grid_key = c.grid_point.dump();
         c.replicate = replicate;
         c.hash = hash + "/" + c.grid_key + "/" + std::to_string(replicate);
-        c.document = {{"impact", {{"speed", speed}}}, {"replicate", replicate}};
+        c.document = {{"cluster", {{"generator", {{"method", "ballistic"}, {"primaries", primaries}}}}},
+                      {"impact", {{"speed", speed}}},
+                      {"replicate", replicate}};
         study.cases.push_back(std::move(c));
       }
   return study;

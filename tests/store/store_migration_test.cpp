@@ -1,6 +1,7 @@
 // Migration 2 on a store written by schema version 1 (made here from version 1's own SQL):
 // stored results are classified again by what leaves the wall, from their stored fragments,
-// without re-running them.
+// without re-running them. Migration 9 on a store of version 8: each case's N read from its document.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -171,6 +172,72 @@ TEST_CASE("A migrated store is not migrated again when reopened", "[store]") {
   CHECK(store.opened_at_version() == latest_store_version());
   CHECK(store.case_detail(1)->result->dump() == document);
   CHECK((*store.case_detail(1)->result)["outcome"]["reclassified_from"] == "break-up");
+}
+
+namespace {
+
+// A version-8 store (made by this aerobreak's own first eight steps) with one study whose case k
+// has documents[k] and, for case 1, a result.
+void write_version_8_store(const std::filesystem::path& file, const std::vector<std::string>& documents) {
+  SqliteDatabase db(file);
+  migrate_store(db, store_migrations().first(8));
+  db.execute(
+      "INSERT INTO studies (id, hash, name, document, status, max_attempts, case_wall_time, created_at) "
+      "VALUES (1, 'study', 'former', '{}', 'active', 1, 60, 0)");
+  for (std::size_t k = 0; k < documents.size(); ++k) {
+    const auto id = static_cast<std::int64_t>(k + 1);
+    db.prepare(
+          "INSERT INTO cases (id, hash, document, status, max_attempts, wall_time_limit, queued_at) "
+          "VALUES (?, ?, ?, 'done', 1, 60, 0)")
+        .bind_all(id, "case" + std::to_string(k), documents[k])
+        .run();
+    const Json grid_point = {{"point", static_cast<int>(k)}};
+    db.prepare(
+          "INSERT INTO study_cases (study_id, case_id, position, grid_point, grid_key, replicate) "
+          "VALUES (1, ?, ?, ?, ?, 0)")
+        .bind_all(id, id, grid_point.dump(), grid_point.dump())
+        .run();
+  }
+  db.execute(
+      "INSERT INTO results (case_id, attempt, outcome, fragment_count, retained_mass_fraction, document, "
+      "committed_at) VALUES (1, 1, 'stick', 1, 1.0, '{}', 0)");
+}
+
+}  // namespace
+
+TEST_CASE("Migration 9 stores each case's N, read from its document", "[store]") {
+  testing::TemporaryStoreFile file("migration-9");
+  write_version_8_store(file.path(), {R"({"cluster": {"generator": {"method": "ballistic", "primaries": 32}}})",
+                                      R"({"cluster": {"generator": {"primaries": 64.0}}})",
+                                      R"({"cluster": {"file": {"path": "cluster.h5"}}})", "not JSON"});
+  {
+    Store store(file.path());
+    CHECK(store.opened_at_version() == 8);
+    CHECK(store.schema_version() == latest_store_version());
+    // The statistics read it with the outcomes.
+    const auto outcomes = store.study_outcomes(1);
+    REQUIRE(outcomes.table.cases.size() == 1);
+    CHECK(outcomes.table.cases[0].primaries == 32);
+  }
+  SqliteDatabase db(file.path());
+  auto cases = db.prepare("SELECT primaries FROM cases ORDER BY id");
+  std::vector<std::optional<std::int64_t>> primaries;
+  while (cases.step()) primaries.push_back(cases.optional_integer(0));
+  CHECK(primaries ==
+        std::vector<std::optional<std::int64_t>>{32, 64, std::nullopt, std::nullopt});  // a file: its N is the file's
+}
+
+TEST_CASE("A case's N is stored with it when its study is submitted", "[store]") {
+  testing::TemporaryStoreFile file("case-primaries");
+  Store store(file.path());
+  auto study = testing::submission("study", "case", {1.0, 2.0});
+  study.cases[0].document["cluster"] = {{"generator", {{"method", "dlca"}, {"primaries", 128}}}};
+  study.cases[1].document["cluster"] = {{"file", {{"path", "cluster.xyz"}}}};
+  const auto receipt = store.submit_study(study);
+  const auto points = store.grid_point_cases(receipt.study_id);
+  REQUIRE(points.size() == 2);
+  CHECK(points[0].primaries == 128);
+  CHECK_FALSE(points[1].primaries);
 }
 
 }  // namespace aerobreak
