@@ -52,8 +52,10 @@ def compare_grid_points(a, b):
             total += 1
             agree += ok
             if ka * nb != kb * na or not ok:
-                print(f"{key} {outcome}: {ka}/{na} against {kb}/{nb}, {'inside' if ok else 'OUTSIDE'} the other's interval")
-    print(f"{agree} of {total} probabilities inside the other run's 95 % Wilson interval both ways ({len(a)} grid points)")
+                verdict = "inside" if ok else "OUTSIDE"
+                print(f"{key} {outcome}: {ka}/{na} against {kb}/{nb}, {verdict} the other's interval")
+    print(f"{agree} of {total} probabilities inside the other run's 95 % Wilson interval both ways "
+          f"({len(a)} grid points)")
 
 
 def compare_cases(path_a, path_b):
