@@ -12,21 +12,16 @@
 namespace aerobreak {
 namespace {
 
-constexpr const char* kSpeedPointer = "/impact/speed";
-constexpr const char* kPrimariesPointer = "/cluster/generator/primaries";
+std::string speed_pointer() { return axis_pointer("impact_speed"); }
+std::string primaries_pointer() { return axis_pointer("primaries"); }
 
-struct KnownCovariate {
-  const char* name;
-  const char* alias;
-  const char* pointer;
-  bool logarithmic;
-};
-constexpr KnownCovariate kKnownCovariates[] = {
-    {"gamma_over_kn", "gamma_over_kn", "/material/gamma_over_kn", true},
-    {"primaries", "N", kPrimariesPointer, true},
-    {"fractal_dimension", "Df", "/cluster/generator/fractal_dimension", false},
-    {"angle", "angle", "/impact/angle", false},
-};
+// The covariates the correlations know by name (study_axes.hpp, NamedCaseField).
+std::string known_covariates() {
+  std::string names;
+  for (const auto& field : named_case_fields())
+    if (!field.covariate.empty()) names += (names.empty() ? "" : ", ") + std::string(field.covariate);
+  return names;
+}
 
 std::vector<std::string> study_axes(const StudyRecord& study) {
   std::vector<std::string> axes;
@@ -59,19 +54,19 @@ bool sweeps_several(const StudyRecord& study, const std::string& axis) {
 }
 
 Covariate resolve(const StudyRecord& study, const std::vector<std::string>& axes, const std::string& name) {
-  for (const auto& known : kKnownCovariates)
-    if (name == known.name || name == known.alias) {
-      const std::string axis = axis_setting(axes, known.pointer);
+  for (const auto& known : named_case_fields())
+    if (!known.covariate.empty() && (name == known.name || name == known.covariate)) {
+      const std::string axis = axis_setting(axes, std::string(known.pointer));
       if (axis.empty())
         throw CorrelationRequestError("covariate '" + name + "' is not an axis of study " + std::to_string(study.id) +
                                           " (its axes: " + joined(axes) + ")",
                                       false);
       return {axis, known.logarithmic};
     }
-  if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == kSpeedPointer)
+  if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == speed_pointer())
     throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " +
                                       std::to_string(study.id) + " (its axes: " + joined(axes) +
-                                      "; known covariates: gamma_over_kn, N, Df, angle)",
+                                      "; known covariates: " + known_covariates() + ")",
                                   false);
   return {name, false};
 }
@@ -82,8 +77,8 @@ CorrelationRequest correlation_request(const StudyRecord& study,
                                        const std::optional<std::vector<std::string>>& covariates) {
   const auto axes = study_axes(study);
   CorrelationRequest request;
-  request.speed_axis = axis_setting(axes, kSpeedPointer);
-  request.size_axis = axis_setting(axes, kPrimariesPointer);
+  request.speed_axis = axis_setting(axes, speed_pointer());
+  request.size_axis = axis_setting(axes, primaries_pointer());
   if (covariates) {
     std::set<std::string> seen;
     for (const auto& name : *covariates) {

@@ -19,34 +19,32 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-struct AxisAlias {
-  std::string_view name;
-  std::string_view pointer;
-  bool integer;
-};
-
-// The axes a study names most often, by their short names (schemas/study.schema.json lists them).
-constexpr std::array<AxisAlias, 7> kAliases{{
-    {"impact_speed", "/impact/speed", false},
-    {"gamma_over_kn", "/material/gamma_over_kn", false},
-    {"primaries", "/cluster/generator/primaries", true},
-    {"generator", "/cluster/generator/method", false},
-    {"fractal_dimension", "/cluster/generator/fractal_dimension", false},
-    {"prefactor", "/cluster/generator/prefactor", false},
-    {"geometric_standard_deviation", "/cluster/generator/geometric_standard_deviation", false},
+// The case fields that studies and correlation requests name by short names: one table. Their
+// units come from field_units.cpp by pointer (study_axis_unit).
+constexpr std::array<NamedCaseField, 8> kNamedFields{{
+    {"impact_speed", "/impact/speed", true, false, "", false},
+    {"gamma_over_kn", "/material/gamma_over_kn", true, false, "gamma_over_kn", true},
+    {"primaries", "/cluster/generator/primaries", true, true, "N", true},
+    {"generator", "/cluster/generator/method", true, false, "", false},
+    {"fractal_dimension", "/cluster/generator/fractal_dimension", true, false, "Df", false},
+    {"prefactor", "/cluster/generator/prefactor", true, false, "", false},
+    {"geometric_standard_deviation", "/cluster/generator/geometric_standard_deviation", true, false, "", false},
+    {"angle", "/impact/angle", false, false, "angle", false},
 }};
 
 constexpr std::size_t kMaxAxes = 8;
 
-std::optional<AxisAlias> alias(const std::string& name) {
-  for (const auto& a : kAliases)
-    if (a.name == name) return a;
-  return std::nullopt;
+// The axis alias `name` (schemas/study.schema.json lists them).
+const NamedCaseField* alias(const std::string& name) {
+  for (const auto& field : kNamedFields)
+    if (field.axis_alias && field.name == name) return &field;
+  return nullptr;
 }
 
 std::string alias_names() {
   std::string names;
-  for (const auto& a : kAliases) names += (names.empty() ? "" : ", ") + std::string(a.name);
+  for (const auto& field : kNamedFields)
+    if (field.axis_alias) names += (names.empty() ? "" : ", ") + std::string(field.name);
   return names;
 }
 
@@ -89,7 +87,7 @@ std::vector<Json> range_values(const Json& range, bool logarithmic) {
 
 StudyAxis read_axis(const std::string& name, const Json& spec, std::vector<SchemaViolation>& violations) {
   const std::string where = pointer_child("/axes", name);
-  const auto known = alias(name);
+  const NamedCaseField* known = alias(name);
   const bool integer = known && known->integer;
   StudyAxis axis{name, axis_pointer(name), {}};
 
@@ -180,8 +178,10 @@ std::string array_growth(const nlohmann::ordered_json& base, const std::string& 
   return {};
 }
 
+std::span<const NamedCaseField> named_case_fields() { return kNamedFields; }
+
 std::string axis_pointer(const std::string& name) {
-  if (const auto a = alias(name)) return std::string(a->pointer);
+  if (const NamedCaseField* a = alias(name)) return std::string(a->pointer);
   if (name.empty() || name.front() != '/') return {};
   try {
     Json::json_pointer checked(name);

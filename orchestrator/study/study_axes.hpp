@@ -1,7 +1,9 @@
 #pragma once
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/impact/json_schema.hpp"
@@ -11,6 +13,20 @@ namespace aerobreak {
 
 // The axes of a study document: each name resolved to the case field it sets, each list or range
 // turned into its values. Violations name their field by JSON pointer into the study document.
+
+// A case field that studies and correlation requests name by a short name. The one table of them
+// (study_axes.cpp) serves the axis aliases (axis_pointer, the integer check of read_axes) and the
+// correlations' known covariates (orchestrator/app/study_fits.cpp); a field's unit is
+// study_axis_unit(pointer) (field_units.hpp).
+struct NamedCaseField {
+  std::string_view name;       // the axis alias (axis_alias) or, for a covariate only, its long name
+  std::string_view pointer;    // the case field
+  bool axis_alias;             // a study may name an axis so (schemas/study.schema.json lists them)
+  bool integer;                // a count: an axis of it refuses values that are not integers
+  std::string_view covariate;  // its short name as a covariate of the correlations (N, Df); empty: none
+  bool logarithmic;            // as a covariate: enters the pooled models as its logarithm
+};
+std::span<const NamedCaseField> named_case_fields();
 
 // The case field an axis name sets: the alias's pointer, or the name itself when it is a valid
 // JSON pointer; empty otherwise.

@@ -6,6 +6,9 @@
 #include <chrono>
 #include <fstream>
 
+#include "orchestrator/study/field_units.hpp"
+#include "orchestrator/study/study_axes.hpp"
+#include "orchestrator/study/study_schema_text.hpp"
 #include "study_support.hpp"
 
 using namespace aerobreak;
@@ -82,6 +85,28 @@ TEST_CASE("an axis name is an alias or a JSON pointer into the case") {
                       "prefactor, geometric_standard_deviation)"));
   CHECK_THAT(message_at(v, "/axes/~1bad~02pointer"), Contains("not a valid JSON pointer"));
   CHECK_THAT(message_at(v, "/axes/~1name"), Contains("is a label"));
+}
+
+TEST_CASE("the named case fields: the schema's axis aliases, each number with a unit entry") {
+  const Json schema = Json::parse(study_schema_text());
+  std::vector<std::string> schema_aliases, table_aliases, covariates;
+  for (const auto& [name, spec] : schema["properties"]["axes"]["properties"].items()) schema_aliases.push_back(name);
+  for (const auto& field : named_case_fields()) {
+    INFO(field.name);
+    // field_units.cpp lists each number's unit; the generator's method is a name, without one.
+    if (field.name != "generator") CHECK(exported_axis_unit(std::string(field.pointer), false) != "unknown");
+    if (field.axis_alias) {
+      table_aliases.emplace_back(field.name);
+      CHECK(axis_pointer(std::string(field.name)) == field.pointer);
+      // The schema's description says where it points.
+      CHECK_THAT(schema["properties"]["axes"]["properties"][std::string(field.name)]["description"].get<std::string>(),
+                 Contains("Alias of " + std::string(field.pointer)));
+    }
+    if (!field.covariate.empty()) covariates.emplace_back(field.covariate);
+  }
+  CHECK(table_aliases == schema_aliases);
+  CHECK(covariates == std::vector<std::string>{"gamma_over_kn", "N", "Df", "angle"});
+  CHECK(axis_pointer("angle").empty());  // a covariate's name only, not an axis alias
 }
 
 TEST_CASE("a study has 1 to 8 axes, no two setting the same field") {
