@@ -15,14 +15,6 @@ namespace {
 std::string speed_pointer() { return axis_pointer("impact_speed"); }
 std::string primaries_pointer() { return axis_pointer("primaries"); }
 
-// The covariates the correlations know by name (study_axes.hpp, NamedCaseField).
-std::string known_covariates() {
-  std::string names;
-  for (const auto& field : named_case_fields())
-    if (!field.covariate.empty()) names += (names.empty() ? "" : ", ") + std::string(field.covariate);
-  return names;
-}
-
 std::vector<std::string> study_axes(const StudyRecord& study) {
   std::vector<std::string> axes;
   if (study.document.contains("axes") && study.document["axes"].is_object())
@@ -66,7 +58,7 @@ Covariate resolve(const StudyRecord& study, const std::vector<std::string>& axes
   if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == speed_pointer())
     throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " +
                                       std::to_string(study.id) + " (its axes: " + joined(axes) +
-                                      "; known covariates: " + known_covariates() + ")",
+                                      "; known covariates: " + known_covariate_names() + ")",
                                   false);
   return {name, false};
 }

@@ -12,6 +12,7 @@
 #include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
+#include "orchestrator/study/study_axes.hpp"
 
 namespace aerobreak {
 namespace {
@@ -245,8 +246,8 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
   correlations->add_option("--fit", options->fit, "One fit in full, as JSON (a name from the list)");
   correlations
       ->add_option("--covariates", options->covariates,
-                   "Covariates of the pooled models, e.g. gamma_over_kn,N "
-                   "(default: every one of gamma_over_kn, N, Df, angle the study sweeps)")
+                   "Covariates of the pooled models: axes of the study, by name or as " + known_covariate_names() +
+                       "; e.g. gamma_over_kn,N (default: N where the study sweeps it)")
       ->each([options](const std::string&) { options->default_covariates = false; });
   add("cancel", "Cancel a study: its queued cases will not run")
       ->add_option("id", options->study_id, "Study id")

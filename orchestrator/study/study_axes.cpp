@@ -180,6 +180,13 @@ std::string array_growth(const nlohmann::ordered_json& base, const std::string& 
 
 std::span<const NamedCaseField> named_case_fields() { return kNamedFields; }
 
+std::string known_covariate_names() {
+  std::string names;
+  for (const auto& field : kNamedFields)
+    if (!field.covariate.empty()) names += (names.empty() ? "" : ", ") + std::string(field.covariate);
+  return names;
+}
+
 std::string axis_pointer(const std::string& name) {
   if (const NamedCaseField* a = alias(name)) return std::string(a->pointer);
   if (name.empty() || name.front() != '/') return {};

@@ -27,6 +27,8 @@ struct NamedCaseField {
   bool logarithmic;            // as a covariate: enters the pooled models as its logarithm
 };
 std::span<const NamedCaseField> named_case_fields();
+// The covariates' short names, in the table's order: "gamma_over_kn, N, Df, angle".
+std::string known_covariate_names();
 
 // The case field an axis name sets: the alias's pointer, or the name itself when it is a valid
 // JSON pointer; empty otherwise.

@@ -106,6 +106,7 @@ TEST_CASE("the named case fields: the schema's axis aliases, each number with a 
   }
   CHECK(table_aliases == schema_aliases);
   CHECK(covariates == std::vector<std::string>{"gamma_over_kn", "N", "Df", "angle"});
+  CHECK(known_covariate_names() == "gamma_over_kn, N, Df, angle");
   CHECK(axis_pointer("angle").empty());  // a covariate's name only, not an axis alias
 }
 
