@@ -177,7 +177,10 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   const std::string name = name_of(k, f);
   const Vec3 n = wall.normal / norm(wall.normal);
   const double height = dot(f.centre_of_mass - wall.point, n);
-  const double wall_energy = r.kinetic + r.above_rest;
+  // On the wall a primary alone can leave only by its motion along the normal (the wall's forces
+  // along it do not lift it); a larger fragment can turn motion along the wall into motion off it.
+  const double wall_energy =
+      (f.size == 1 ? 0.5 * f.mass * f.normal_velocity * f.normal_velocity : r.kinetic) + r.above_rest;
   // In flight, what can pull a bond apart: the motion relative to the rigid rotation, whose angular
   // momentum the fragment keeps, and the energy its contacts store above rest; and the rotation
   // itself, by its centripetal pull (rotation_pull).
@@ -212,9 +215,13 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   }
   if (!(speed < 0.0)) return {name + " moves along the wall", v.path};
   v.path.stop = f.lowest_gap / -speed;
+  const Vec3 tangential = f.velocity - speed * n;
   if (wall.adhesive) {
-    if (f.size > 1 || !(r.kinetic < r.landing_loop))
+    // A primary alone meets a flat wall head-on in the normal direction whatever it does along it:
+    // friction and rolling resistance act along the wall, so only 1/2 m v_n^2 meets the adhesion loop.
+    if (f.size > 1 || !(0.5 * f.mass * speed * speed < r.landing_loop))
       return {name + " is on its way back to the wall (normal speed " + number(speed) + ")", v.path};
+    v.path.after = tangential;
     f.landing = true;
     return v;
   }
@@ -224,7 +231,6 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   // velocity changed by at most the Coulomb limit on the normal impulse, 2 mu |v_n|: its centre
   // then moves at after = v_t + |v_n| / 2 n within a ball growing at
   // ((2 mu |v_n|)^2 + (|v_n| / 2)^2)^(1/2).
-  const Vec3 tangential = f.velocity - speed * n;
   v.path.after = tangential - 0.5 * speed * n;
   v.path.spread = std::hypot(2.0 * friction * speed, 0.5 * speed);
   f.bouncing = true;

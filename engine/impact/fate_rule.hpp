@@ -18,7 +18,8 @@ class Simulation;
 //  - clear: off the wall, its centre of mass moving away, no bond breakable (the same energy, in its
 //    own frame, below its weakest bond) and its lowest point unable to come back to the wall;
 //  - landing: a primary alone, off an adhesive wall and moving towards it with less kinetic energy
-//    than one adhesion loop with the wall dissipates: it lands and stays;
+//    along the wall's normal than one adhesion loop with the wall dissipates: it lands and stays,
+//    then goes on along the wall at its velocity along it;
 //  - bouncing: a primary alone, off a wall without adhesion and moving towards it: it touches it
 //    and leaves on a course within bounds;
 // the largest fragment is held or clear, and no two fragments can meet on their paths
