@@ -38,6 +38,11 @@ Vec3 solve(const Symmetric3& a, const Vec3& b) {  // Cramer's rule
   return {det3(b, c1, c2) / det, det3(c0, b, c2) / det, det3(c0, c1, b) / det};
 }
 
+double quadratic_form(const Symmetric3& a, const Vec3& e) {  // e.A.e
+  return a.xx * e.x * e.x + a.yy * e.y * e.y + a.zz * e.z * e.z +
+         2.0 * (a.xy * e.x * e.y + a.xz * e.x * e.z + a.yz * e.y * e.z);
+}
+
 // The smallest and largest eigenvalues of a symmetric 3x3 matrix (the trigonometric solution of
 // its characteristic cubic).
 std::pair<double, double> eigenvalue_range(const Symmetric3& a) {
@@ -63,6 +68,7 @@ struct Reserve {
   double weakest_pull = kInfinity;  // the least pull-off force of its bonds
   double weakest_wall_contact = kInfinity;
   double lightest = kInfinity;
+  double stretch = 0.0;       // the most one of its bonds can still stretch: its overlap + delta_b
   double landing_loop = 0.0;  // a primary alone: its adhesion loop with the wall
   Vec3 momentum;              // angular momentum about the centre of mass
   Symmetric3 inertia;         // inertia tensor about the centre of mass
@@ -78,6 +84,8 @@ struct Reserve {
   double fastest_spin = 0.0;
   double pull = 0.0;
   double deformation = 0.0;
+  double axial_orbital = 0.0;  // the orbital inertia about the rotation's axis
+  double unwinding = 0.0;      // what the rotation can give up while a bond opens (rotation_unwinding)
 };
 
 void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std::size_t i) {
@@ -96,6 +104,19 @@ void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std:
   t.xz -= m * r.x * r.z;
   t.yz -= m * r.y * r.z;
   f.own_moments += own;
+}
+
+// What a rotation of kinetic energy E about the axis e can give up while a bond stretches by s
+// before it lets go. Stretching moves each primary at most s further from the centre of mass, so the
+// orbital moment about e, x = e.I_orb.e, grows to at most (x^(1/2) + s M^(1/2))^2 (Minkowski), while
+// the primaries' own moments c stay; at fixed angular momentum the rotation's energy falls in
+// proportion to the moment, so at most E (1 - (x + c) / ((x^(1/2) + s M^(1/2))^2 + c)) goes into the
+// stretch: the energy a spinning dimer's bond draws from its orbit as it opens. (The rule keeps a
+// fragment's shape otherwise: a tumbling fragment's drift to its largest axis is not counted.)
+double rotation_unwinding(double energy, double mass, double axial_orbital, double own, double stretch) {
+  if (!(energy > 0.0)) return 0.0;
+  const double reach = std::sqrt(std::max(axial_orbital, 0.0)) + stretch * std::sqrt(mass);
+  return energy * (1.0 - (axial_orbital + own) / (reach * reach + own));
 }
 
 // The most a rigid rotation of kinetic energy E pulls on any bond. A bond carries the centripetal
@@ -125,6 +146,8 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     const auto [low, high] = eigenvalue_range(f.orbital);
     f.fastest_spin = std::sqrt(2.0 * f.rotation / (low + f.own_moments));
     f.pull = rotation_pull(f.rotation, fa.fragments[k].mass, low, high, f.own_moments);
+    const double spin = norm(f.spin);
+    if (spin > 0.0) f.axial_orbital = quadratic_form(f.orbital, f.spin / spin);
   }
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Fragment& fragment = fa.fragments[fa.fragment_of[i]];
@@ -139,8 +162,13 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     f.above_rest += reserve.above_rest;
     double& weakest = c.with_wall ? f.weakest_wall_contact : f.weakest_bond;
     weakest = std::min(weakest, reserve.to_break);
-    if (!c.with_wall) f.weakest_pull = std::min(f.weakest_pull, c.constants.pull_off_force);
+    if (c.with_wall) return;
+    f.weakest_pull = std::min(f.weakest_pull, c.constants.pull_off_force);
+    f.stretch = std::max(f.stretch, c.overlap + c.constants.break_overlap);
   });
+  for (std::size_t k = 0; k < r.size(); ++k)
+    r[k].unwinding =
+        rotation_unwinding(r[k].rotation, fa.fragments[k].mass, r[k].axial_orbital, r[k].own_moments, r[k].stretch);
   if (!sim.walls().empty() && sim.walls().front().adhesive)
     for (std::size_t k = 0; k < fa.fragments.size(); ++k)
       if (fa.fragments[k].size == 1) r[k].landing_loop = sim.wall_loop_energy(fa.fragments[k].first_primary, 0);
@@ -182,9 +210,10 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   const double wall_energy =
       (f.size == 1 ? 0.5 * f.mass * f.normal_velocity * f.normal_velocity : r.kinetic) + r.above_rest;
   // In flight, what can pull a bond apart: the motion relative to the rigid rotation, whose angular
-  // momentum the fragment keeps, and the energy its contacts store above rest; and the rotation
-  // itself, by its centripetal pull (rotation_pull).
-  const double internal = r.deformation + r.above_rest;
+  // momentum the fragment keeps, the energy its contacts store above rest, and what the rotation
+  // gives up as a bond opens (rotation_unwinding); and the rotation itself, by its centripetal pull
+  // (rotation_pull).
+  const double internal = r.deformation + r.above_rest + r.unwinding;
   Verdict v;
   v.path = {f.centre_of_mass, f.velocity, f.bounding_radius, kInfinity, Vec3{}, 0.0};
   if (f.on_wall()) {

@@ -25,6 +25,14 @@ std::string formatted(const char* format, Args... args) {
 Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 Json vector(const Vec3& v) { return Json::array({number(v.x), number(v.y), number(v.z)}); }
 
+// The energy dissipated by each channel and in total, each written as `value` makes it (the joules
+// themselves, or their share of the impact energy).
+template <typename Value>
+Json dissipation_json(const DissipationTally& d, Value value) {
+  return {{"damping", value(d.damping)},   {"friction", value(d.friction)}, {"rolling", value(d.rolling)},
+          {"twisting", value(d.twisting)}, {"breaking", value(d.breaking)}, {"total", value(d.dissipated())}};
+}
+
 Json budget(const EnergyBudget& e) {
   const DissipationTally& d = e.dissipation;
   return {{"translational_kinetic", number(e.translational_kinetic)},
@@ -34,13 +42,7 @@ Json budget(const EnergyBudget& e) {
           {"van_der_waals", number(e.van_der_waals)},
           {"gravitational", number(e.gravitational)},
           {"mechanical", number(e.mechanical())},
-          {"dissipated",
-           {{"damping", number(d.damping)},
-            {"friction", number(d.friction)},
-            {"rolling", number(d.rolling)},
-            {"twisting", number(d.twisting)},
-            {"breaking", number(d.breaking)},
-            {"total", number(d.dissipated())}}},
+          {"dissipated", dissipation_json(d, number)},
           {"stiffness_work", number(d.stiffness_work)},
           {"van_der_waals_handover", number(d.van_der_waals_handover)},
           {"external_work", number(e.external_work)},
@@ -285,13 +287,7 @@ Json energy_json(const ImpactResult& r) {
           {"impact_kinetic", number(e_impact)},
           {"final_fragment_translational_kinetic", number(r.fragment_translational_kinetic)},
           {"final_internal_kinetic", number(e1.kinetic() - r.fragment_translational_kinetic)},
-          {"dissipated_share",
-           {{"damping", share(d.damping)},
-            {"friction", share(d.friction)},
-            {"rolling", share(d.rolling)},
-            {"twisting", share(d.twisting)},
-            {"breaking", share(d.breaking)},
-            {"total", share(d.dissipated())}}},
+          {"dissipated_share", dissipation_json(d, share)},
           {"balance_change", number(e1.balance() - e0.balance())},
           {"balance_drift", number((e1.balance() - e0.balance()) / (e_impact + d.dissipated()))}};
 }

@@ -54,6 +54,26 @@ std::string to_string(ImpactOutcome outcome) {
   return "undetermined";
 }
 
+std::optional<ImpactOutcome> parse_outcome(std::string_view text) {
+  for (const ImpactOutcome outcome : kImpactOutcomes)
+    if (text == to_string(outcome)) return outcome;
+  return std::nullopt;
+}
+
+std::vector<std::string> outcome_names() {
+  std::vector<std::string> names;
+  for (const ImpactOutcome outcome : kImpactOutcomes) names.push_back(to_string(outcome));
+  return names;
+}
+
+std::string outcome_names_text() {
+  const auto names = outcome_names();
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  return text;
+}
+
 Classification classify(const std::vector<FragmentFate>& fragments, bool settled, const OutcomeThresholds& thresholds) {
   if (!(thresholds.bounce_share > 0.5 && thresholds.bounce_share <= 1.0))
     throw std::invalid_argument("classify: the bounce share must be in (0.5, 1]");

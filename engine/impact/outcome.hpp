@@ -1,14 +1,31 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace aerobreak {
 
+// The outcome classes of an impact (docs/IMPACT.md): stick = nothing leaves the wall; bounce = the
+// cluster leaves it intact; break-up = mass leaves it in pieces; undetermined = the time limit came
+// first (never counted as any of the three). The one vocabulary of outcomes: the engine's results,
+// the store (its summary columns in this order), the statistics, the API's parameters and the
+// command line all name and order them from here.
 enum class ImpactOutcome { stick, bounce, break_up, undetermined };
+inline constexpr ImpactOutcome kImpactOutcomes[] = {ImpactOutcome::stick, ImpactOutcome::bounce,
+                                                    ImpactOutcome::break_up, ImpactOutcome::undetermined};
+inline constexpr ImpactOutcome kDeterminedOutcomes[] = {ImpactOutcome::stick, ImpactOutcome::bounce,
+                                                        ImpactOutcome::break_up};
 
 // "stick", "bounce", "break-up", "undetermined" (the names results use).
 std::string to_string(ImpactOutcome outcome);
+// The outcome of that name; nullopt for any other text.
+std::optional<ImpactOutcome> parse_outcome(std::string_view text);
+// Every name in kImpactOutcomes' order, and the same as one phrase ("stick, bounce, break-up or
+// undetermined") for error messages.
+std::vector<std::string> outcome_names();
+std::string outcome_names_text();
 
 // What the outcome rule reads of one fragment: its primaries, its mass, whether it touches the
 // wall, and its centre-of-mass velocity (normal component > 0: moving away from the wall). The

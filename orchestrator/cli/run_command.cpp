@@ -11,16 +11,15 @@
 #include <string>
 
 #include "orchestrator/app/study_fits.hpp"
+#include "orchestrator/app/study_results_json.hpp"
+#include "orchestrator/app/study_submission.hpp"
 #include "orchestrator/cli/exit_codes.hpp"
 #include "orchestrator/cli/export_command.hpp"
 #include "orchestrator/cli/orchestrator_options.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
 #include "orchestrator/cli/search_table.hpp"
-#include "orchestrator/service/api_json.hpp"
-#include "orchestrator/service/search_endpoints.hpp"
 #include "orchestrator/service/service.hpp"
-#include "orchestrator/service/study_submission.hpp"
 #include "orchestrator/study/field_units.hpp"
 #include "orchestrator/study/study_units.hpp"
 
@@ -175,12 +174,8 @@ int run(RunOptions options) {
   Store store(options.orchestrator.store, Store::Access::orchestrator, data_directory);
   const auto log = line_log(data_directory / "orchestrator.log");
   Scheduler scheduler(store, options.orchestrator.scheduler_options(log));
-  StudySubmission submission = make_submission(study);
   DataFileChecker checker;
-  const auto lost = lost_data_files(submission, store, checker);
-  if (options.recompute_data_files) submission.recompute = lost;
-  auto receipt = store.submit_study(submission);
-  receipt.data_files_lost = lost.size();
+  const auto receipt = submit_study(study, store, checker, options.recompute_data_files);
   ServiceOptions service_options = options.orchestrator.service_options();
   service_options.port = options.port;
   service_options.access_log = log;

@@ -30,8 +30,8 @@ struct ServeOptions {
   int port = 8080;
   std::string token_file;
   std::string port_file;
-  std::size_t max_cases = 10000;
-  std::size_t max_primaries = 100000;
+  std::size_t max_cases = kServiceStudyLimits.max_cases;
+  std::size_t max_primaries = kServiceStudyLimits.max_primaries;
   std::size_t max_connections = ConnectionLimits{}.max_connections;
   std::size_t max_connections_per_client = 0;  // 0: half of max_connections
   bool quiet = false;

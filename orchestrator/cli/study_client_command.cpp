@@ -8,6 +8,7 @@
 #include <string>
 
 #include "orchestrator/cli/exit_codes.hpp"
+#include "engine/impact/outcome.hpp"
 #include "engine/io/bounded_input.hpp"
 #include "orchestrator/cli/correlation_table.hpp"
 #include "orchestrator/cli/outcome_table.hpp"
@@ -235,7 +236,7 @@ void add_study_client_subcommands(CLI::App& study, int& exit_code) {
   auto* results = add("results", "A study's outcome table (or, with --json, its results page)");
   results->add_option("id", options->study_id, "Study id")->required();
   results->add_option("--outcome", options->outcome, "With --json: only this outcome")
-      ->check(CLI::IsMember({"stick", "bounce", "break-up", "undetermined"}));
+      ->check(CLI::IsMember(outcome_names()));
   results->add_option("--limit", options->limit, "With --json: results per page")->capture_default_str();
   results->add_option("--offset", options->offset, "With --json: results to skip")->capture_default_str();
   auto* correlations =

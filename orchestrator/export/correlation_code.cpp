@@ -15,8 +15,8 @@ namespace {
 
 constexpr double kWiden = 1e-12;  // predict's tolerance at the ends of a validity box
 
-std::string outcome_word(Outcome outcome) {
-  return outcome == Outcome::stick ? "stick" : outcome == Outcome::bounce ? "bounce" : "breakup";
+std::string outcome_word(ImpactOutcome outcome) {
+  return outcome == ImpactOutcome::stick ? "stick" : outcome == ImpactOutcome::bounce ? "bounce" : "breakup";
 }
 
 // A double to 17 significant digits: read back, it is the same double. `exponent` 'd' for Fortran.

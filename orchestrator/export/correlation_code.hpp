@@ -18,7 +18,7 @@ namespace aerobreak {
 struct CodeFunction {
   std::string condition;         // c1, c2, ... (pooled over N) or g1, ... (one group's own fit)
   nlohmann::ordered_json group;  // the condition's axis values
-  Outcome outcome = Outcome::break_up;
+  ImpactOutcome outcome = ImpactOutcome::break_up;
   std::string fit;  // the fit's name in the study's correlations ("" without one)
   PredictionSource source = PredictionSource::none;
   bool size_term = false;  // logit P = b0 + b1 ln v + b2 ln n (else b0 + b1 ln v)

@@ -21,11 +21,13 @@ struct FitSet {
   std::array<const LogisticFit*, 3> fits{};
 };
 
-std::size_t outcome_index(Outcome outcome) {
-  return outcome == Outcome::stick ? 0 : outcome == Outcome::bounce ? 1 : 2;
+std::size_t outcome_index(ImpactOutcome outcome) {
+  return outcome == ImpactOutcome::stick ? 0 : outcome == ImpactOutcome::bounce ? 1 : 2;
 }
 
-bool speed_fit(const LogisticFit& fit) { return fit.dose == "impact_speed" && fit.response != Outcome::undetermined; }
+bool speed_fit(const LogisticFit& fit) {
+  return fit.dose == "impact_speed" && fit.response != ImpactOutcome::undetermined;
+}
 
 // One group's own fit (a pooled model has its covariates).
 bool per_group_fit(const LogisticFit& fit) { return speed_fit(fit) && fit.covariates.empty(); }

@@ -6,7 +6,7 @@
 #include "engine/core/units.hpp"
 #include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/mean_interval.hpp"
 
 namespace aerobreak {
 namespace {

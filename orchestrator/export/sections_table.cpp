@@ -11,7 +11,7 @@
 
 #include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/proportion.hpp"
 
 namespace aerobreak {
 namespace {

@@ -5,6 +5,7 @@
 
 #include "orchestrator/export/export_request.hpp"
 #include "orchestrator/export/lookup_table.hpp"
+#include "orchestrator/study/field_units.hpp"
 #include "orchestrator/study/study_axes.hpp"
 
 namespace aerobreak {
@@ -34,33 +35,6 @@ std::vector<AxisColumn> extra_axis_columns(const std::vector<GridRowInputs>& inp
   for (const auto& row : inputs) points.push_back(&row.grid_point);
   return axis_columns(points, kOwnColumns, !inputs.empty() && inputs.front().scaling.has_value());
 }
-
-// The units of the axes a study sweeps most, by JSON pointer: (physical, reduced).
-struct AxisUnit {
-  const char* pointer;
-  const char* physical;
-  const char* reduced;
-};
-constexpr AxisUnit kAxisUnits[] = {
-    {"/impact/speed", "m/s", "d/tau"},
-    {"/impact/angle", "deg", "deg"},
-    {"/impact/gap", "d", "d"},
-    {"/material/youngs_modulus", "Pa", "m/(d tau^2)"},
-    {"/material/density", "kg/m^3", "m/d^3"},
-    {"/material/surface_energy", "J/m^2", "m/tau^2"},
-    {"/material/diameter", "m", "d"},
-    {"/material/poisson_ratio", "1", "1"},
-    {"/material/gamma_over_kn", "1", "1"},
-    {"/model/friction", "1", "1"},
-    {"/model/damping/dissipative_time", "tau", "tau"},
-    {"/model/damping/restitution", "1", "1"},
-    {"/model/rolling/critical_displacement", "d", "d"},
-    {"/cluster/generator/primaries", "1", "1"},
-    {"/cluster/generator/fractal_dimension", "1", "1"},
-    {"/cluster/generator/prefactor", "1", "1"},
-    {"/cluster/generator/geometric_standard_deviation", "1", "1"},
-    {"/run/time_limit_s", "s", "s"},
-};
 
 // Label text of an axis value: a string as it is, anything else as JSON.
 std::string label_of(const nlohmann::ordered_json& value) {
@@ -107,14 +81,7 @@ double AxisColumn::value(const nlohmann::ordered_json& point) const {
 
 std::string AxisColumn::unit() const {
   if (encoding != Encoding::number) return "1";
-  return axis_unit(axis, physical);
-}
-
-std::string axis_unit(const std::string& axis, bool physical) {
-  const std::string pointer = axis.starts_with("/") ? axis : axis_pointer(axis);
-  for (const auto& unit : kAxisUnits)
-    if (pointer == unit.pointer) return physical ? unit.physical : unit.reduced;
-  return "unknown";
+  return exported_axis_unit(axis, physical);
 }
 
 std::string AxisColumn::description() const {

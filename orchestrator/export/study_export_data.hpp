@@ -47,10 +47,6 @@ struct AxisColumn {
 std::vector<AxisColumn> axis_columns(const std::vector<const nlohmann::ordered_json*>& points,
                                      const std::vector<std::string>& left_out, bool physical);
 
-// The unit of a study axis's values (docs/EXPORT.md, "Axis columns"): SI for a physical study's
-// material, the reduced units d, m, tau for the model's parameters and a reduced study's material,
-// deg for the angle, 1 for numbers without one; "unknown" for an axis this table does not know.
-std::string axis_unit(const std::string& axis, bool physical);
 // metadata.axis_labels.NAME = [label of 0, label of 1, ...] for each label-encoded axis.
 void add_axis_labels(nlohmann::ordered_json& metadata, const std::vector<AxisColumn>& axes);
 

@@ -45,7 +45,7 @@ double axis_number(const nlohmann::ordered_json& grid_point, const std::string& 
 std::vector<const CaseOutcome*> determined_cases(const std::vector<const CaseOutcome*>& cases) {
   std::vector<const CaseOutcome*> determined;
   for (const CaseOutcome* c : cases)
-    if (c->outcome != Outcome::undetermined) determined.push_back(c);
+    if (c->outcome != ImpactOutcome::undetermined) determined.push_back(c);
   return determined;
 }
 

@@ -6,20 +6,15 @@
 #include <string_view>
 #include <vector>
 
-namespace aerobreak {
+// The outcome classes (ImpactOutcome), their names and their order: the engine's outcome rule.
+#include "engine/impact/outcome.hpp"
 
-// The outcome classes of an impact (docs/IMPACT.md): stick = nothing leaves the wall; bounce = the
-// cluster leaves it intact; break-up = mass leaves it in pieces; undetermined = the time limit came
-// first (never counted as any of the three).
-enum class Outcome { stick, bounce, break_up, undetermined };
-inline constexpr Outcome kDeterminedOutcomes[] = {Outcome::stick, Outcome::bounce, Outcome::break_up};
-std::string_view to_string(Outcome outcome);
-std::optional<Outcome> parse_outcome(std::string_view text);
+namespace aerobreak {
 
 // One finished case as the statistics see it: what the store's results row and fragments say.
 struct CaseOutcome {
   std::size_t grid_point = 0;  // index into CaseOutcomeTable::grid_points
-  Outcome outcome = Outcome::undetermined;
+  ImpactOutcome outcome = ImpactOutcome::undetermined;
   std::optional<double> retained_mass_fraction;  // mass in fragments that stay on the wall / total
   std::optional<double> restitution;             // normal restitution of the largest fragment
   std::optional<double> damage_ratio;            // contacts broken / initial contacts

@@ -24,7 +24,7 @@ FitStatus status_of(const std::string& text) {
   throw std::runtime_error("unknown fit status '" + text + "'");
 }
 
-Outcome outcome_of(const std::string& text) {
+ImpactOutcome outcome_of(const std::string& text) {
   const auto outcome = parse_outcome(text);
   if (!outcome) throw std::runtime_error("unknown outcome '" + text + "'");
   return *outcome;

@@ -98,7 +98,7 @@ struct BandPoint {
 // logit P(response) = b0 + b1 log(dose) [+ covariates], per group or pooled.
 struct LogisticFit {
   FitCommon common;
-  Outcome response = Outcome::break_up;
+  ImpactOutcome response = ImpactOutcome::break_up;
   std::string dose;  // "impact_speed" | "energy_per_contact"
   std::vector<Covariate> covariates;
   std::string method;  // "maximum likelihood" | "Firth penalised likelihood"
@@ -119,7 +119,7 @@ struct LogisticFit {
 struct MultinomialFit {
   FitCommon common;
   std::string dose;
-  std::vector<Outcome> categories;                            // the first is the baseline
+  std::vector<ImpactOutcome> categories;                      // the first is the baseline
   std::vector<double> doses;                                  // distinct doses of the data
   std::vector<std::vector<double>> counts;                    // per dose, per category
   std::array<BandPoint, 3> probabilities(double dose) const;  // per category, delta-method band
@@ -134,7 +134,7 @@ struct ScalingPoint {
 };
 struct ScalingFit {
   FitCommon common;
-  Outcome response = Outcome::break_up;
+  ImpactOutcome response = ImpactOutcome::break_up;
   double level = 0.5;
   std::vector<std::string> axes;
   std::vector<ScalingPoint> points;

@@ -8,7 +8,8 @@ namespace aerobreak {
 namespace {
 
 std::optional<MeanWithError> mean_of(const std::vector<const CaseOutcome*>& cases,
-                                     std::optional<double> CaseOutcome::*field, std::optional<Outcome> only = {}) {
+                                     std::optional<double> CaseOutcome::*field,
+                                     std::optional<ImpactOutcome> only = {}) {
   std::vector<double> values;
   for (const CaseOutcome* c : cases)
     if ((!only || c->outcome == *only) && c->*field) values.push_back(*(c->*field));
@@ -21,7 +22,7 @@ GridPointSummary summarise(const nlohmann::ordered_json& grid_point, const std::
   summary.cases = cases.size();
   for (const CaseOutcome* c : cases) {
     if (c->small_strain_exceeded) ++summary.small_strain_exceeded;
-    if (c->outcome == Outcome::undetermined)
+    if (c->outcome == ImpactOutcome::undetermined)
       ++summary.undetermined;
     else
       ++summary.counts[static_cast<std::size_t>(c->outcome)];
@@ -31,7 +32,7 @@ GridPointSummary summarise(const nlohmann::ordered_json& grid_point, const std::
   // Undetermined cases are left out of every mean: their state is not final.
   const auto determined = determined_cases(cases);
   summary.retained_mass_fraction = mean_of(determined, &CaseOutcome::retained_mass_fraction);
-  summary.restitution_of_bounces = mean_of(determined, &CaseOutcome::restitution, Outcome::bounce);
+  summary.restitution_of_bounces = mean_of(determined, &CaseOutcome::restitution, ImpactOutcome::bounce);
   summary.damage_ratio = mean_of(determined, &CaseOutcome::damage_ratio);
   summary.energy_per_contact = mean_of(cases, &CaseOutcome::energy_per_contact);
   summary.reentrained = fragment_statistics(determined);

@@ -57,13 +57,14 @@ std::set<double> distinct(const std::vector<double>& values) { return {values.be
 
 }  // namespace
 
-DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, ImpactOutcome response,
                     const CorrelationRequest& request) {
   return speed_rows(table, cases_by_point(table), grid_points, response, request);
 }
 
 DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
-                    const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request) {
+                    const std::vector<std::size_t>& grid_points, ImpactOutcome response,
+                    const CorrelationRequest& request) {
   DoseData rows;
   for (const std::size_t g : grid_points) {
     const auto determined = determined_cases(by_point[g]);
@@ -81,8 +82,8 @@ DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::vector
   return rows;
 }
 
-DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
-                     const CorrelationRequest& request) {
+DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases,
+                     ImpactOutcome response, const CorrelationRequest& request) {
   DoseData rows;
   std::set<std::size_t> points;
   for (const CaseOutcome* c : determined_cases(cases)) {
@@ -139,7 +140,7 @@ std::optional<std::array<double, 2>> separation_bracket(const DoseData& rows) {
 }
 
 // Why a data set cannot be fitted at all; empty when it can.
-std::pair<FitStatus, std::string> unfittable(const DoseData& rows, Outcome response, const std::string& dose) {
+std::pair<FitStatus, std::string> unfittable(const DoseData& rows, ImpactOutcome response, const std::string& dose) {
   const auto& b = rows.binomial;
   const std::size_t doses = distinct(rows.dose).size();
   const auto p = static_cast<std::size_t>(b.design.cols());
@@ -208,7 +209,7 @@ std::vector<CriticalValue> observed_crossings(const DoseData& rows, const Correl
 
 }  // namespace
 
-LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& dose, const DoseData& rows,
+LogisticFit fit_logistic(FitCommon common, ImpactOutcome response, const std::string& dose, const DoseData& rows,
                          const CorrelationRequest& request, const std::vector<Eigen::VectorXd>& covariate_points) {
   LogisticFit fit;
   fit.common = std::move(common);

@@ -21,20 +21,21 @@ struct DoseData {
 
 // Grouped rows, one per grid point with determined cases: trials = determined cases, successes =
 // cases of `response`. Dose = the speed axis's value.
-DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, Outcome response,
+DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::size_t>& grid_points, ImpactOutcome response,
                     const CorrelationRequest& request);
 // The same with the cases already indexed by grid point (cases_by_point).
 DoseData speed_rows(const CaseOutcomeTable& table, const std::vector<std::vector<const CaseOutcome*>>& by_point,
-                    const std::vector<std::size_t>& grid_points, Outcome response, const CorrelationRequest& request);
+                    const std::vector<std::size_t>& grid_points, ImpactOutcome response,
+                    const CorrelationRequest& request);
 // One row per determined case with a positive energy per contact (dose = E_kin / (N_c E_break)).
-DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases, Outcome response,
-                     const CorrelationRequest& request);
+DoseData energy_rows(const CaseOutcomeTable& table, const std::vector<const CaseOutcome*>& cases,
+                     ImpactOutcome response, const CorrelationRequest& request);
 
 // The logistic model of one data set: ML; under separation Firth's penalised likelihood with the
 // separation reported; too few distinct doses or no transition reported as such, without a fit.
 // Critical doses at `levels` by profile likelihood, at each of `covariate_points` (pooled models)
 // or at the group itself (none).
-LogisticFit fit_logistic(FitCommon common, Outcome response, const std::string& dose, const DoseData& rows,
+LogisticFit fit_logistic(FitCommon common, ImpactOutcome response, const std::string& dose, const DoseData& rows,
                          const CorrelationRequest& request, const std::vector<Eigen::VectorXd>& covariate_points);
 
 // All logistic models of a study: P(stick), P(bounce), P(break-up) (those that occur), in log impact

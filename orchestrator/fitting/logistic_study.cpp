@@ -10,9 +10,9 @@
 namespace aerobreak {
 namespace {
 
-std::vector<Outcome> responses_present(const CaseOutcomeTable& table) {
-  std::vector<Outcome> present;
-  for (const Outcome outcome : kDeterminedOutcomes)
+std::vector<ImpactOutcome> responses_present(const CaseOutcomeTable& table) {
+  std::vector<ImpactOutcome> present;
+  for (const ImpactOutcome outcome : kDeterminedOutcomes)
     for (const CaseOutcome& c : table.cases)
       if (c.outcome == outcome) {
         present.push_back(outcome);
@@ -63,7 +63,8 @@ struct ResponseFits {
   const CorrelationRequest& per_group;
   std::vector<std::function<LogisticFit()>>& tasks;
 
-  void speed_fit(Outcome response, const std::string& label, const CaseGroup& group, const CorrelationRequest* ask) {
+  void speed_fit(ImpactOutcome response, const std::string& label, const CaseGroup& group,
+                 const CorrelationRequest* ask) {
     tasks.push_back([this, response, label, group = &group, ask] {
       const auto rows = speed_rows(table, by_point, group->grid_points, response, *ask);
       return fit_logistic(named(std::string(to_string(response)) + ".speed." + label, group->axes), response,
@@ -72,7 +73,8 @@ struct ResponseFits {
     });
   }
 
-  void energy_fit(Outcome response, const std::string& label, const CaseGroup& group, const CorrelationRequest* ask) {
+  void energy_fit(ImpactOutcome response, const std::string& label, const CaseGroup& group,
+                  const CorrelationRequest* ask) {
     tasks.push_back([this, response, label, group = &group, ask] {
       const auto rows = energy_rows(table, group->cases, response, *ask);
       return fit_logistic(named(std::string(to_string(response)) + ".energy." + label, group->axes), response,
@@ -81,7 +83,7 @@ struct ResponseFits {
     });
   }
 
-  void add(Outcome response) {
+  void add(ImpactOutcome response) {
     if (!per_group.speed_axis.empty()) {
       for (const CaseGroup& group : groups) speed_fit(response, group.label, group, &per_group);
       for (std::size_t c = 0; c < conditions.size(); ++c)
@@ -109,7 +111,7 @@ std::vector<LogisticFit> fit_logistic_models(const CaseOutcomeTable& table, cons
   // Each fit is a task; the tasks run on every core (run_in_parallel), results in this order.
   std::vector<std::function<LogisticFit()>> tasks;
   ResponseFits fits{table, by_point, groups, conditions, condition_requests, per_group, tasks};
-  for (const Outcome response : responses_present(table)) fits.add(response);
+  for (const ImpactOutcome response : responses_present(table)) fits.add(response);
   return run_in_parallel(tasks);
 }
 

@@ -74,7 +74,7 @@ MultinomialFit fit_multinomial(const std::vector<double>& doses, const std::vect
   MultinomialFit fit;
   fit.common.kind = "multinomial";
   fit.dose = "impact_speed";
-  fit.categories = {Outcome::stick, Outcome::bounce, Outcome::break_up};
+  fit.categories = {ImpactOutcome::stick, ImpactOutcome::bounce, ImpactOutcome::break_up};
   fit.common.parameters = {"bounce: intercept", "bounce: log(impact_speed)", "break-up: intercept",
                            "break-up: log(impact_speed)"};
   fit.doses = doses;

@@ -17,7 +17,7 @@ bool in_condition(const LogisticFit& fit, const CaseGroup& condition) {
 
 // The groups' v_p with a bounded interval, from the per-group speed fits of one response in one
 // condition (the groups whose axes other than the modelled ones are the condition's).
-std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logistic, Outcome response, double level,
+std::vector<ScalingPoint> scaling_points(const std::vector<LogisticFit>& logistic, ImpactOutcome response, double level,
                                          const CaseGroup& condition) {
   std::vector<ScalingPoint> points;
   for (const LogisticFit& fit : logistic) {
@@ -75,8 +75,8 @@ void solve_weighted(ScalingFit& fit) {
   fit.common.goodness_of_fit = {{"chi-square", chi2, df, chi_square_upper_tail(chi2, df)}};
 }
 
-ScalingFit fit_one(const std::vector<LogisticFit>& logistic, Outcome response, double level, const CaseGroup& condition,
-                   const CorrelationRequest& request) {
+ScalingFit fit_one(const std::vector<LogisticFit>& logistic, ImpactOutcome response, double level,
+                   const CaseGroup& condition, const CorrelationRequest& request) {
   ScalingFit fit;
   fit.response = response;
   fit.level = level;
@@ -118,9 +118,9 @@ std::vector<ScalingFit> fit_scaling_laws(const std::vector<LogisticFit>& logisti
                                          const std::vector<CaseGroup>& conditions, const CorrelationRequest& request) {
   std::vector<ScalingFit> fits;
   if (request.speed_axis.empty() || request.covariates.empty()) return fits;
-  std::set<Outcome> responses;
+  std::set<ImpactOutcome> responses;
   for (const LogisticFit& fit : logistic) responses.insert(fit.response);
-  for (const Outcome response : responses)
+  for (const ImpactOutcome response : responses)
     for (const CaseGroup& condition : conditions) {
       ScalingFit fit = fit_one(logistic, response, 0.5, condition, request);
       for (const LogisticFit& source : logistic)

@@ -1,6 +1,5 @@
 #include "orchestrator/service/api_json.hpp"
 
-#include "orchestrator/fitting/proportion.hpp"
 #include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
@@ -143,35 +142,6 @@ nlohmann::ordered_json to_json(const SubmissionReceipt& receipt) {
       {"id", receipt.study_id},           {"existing_study", receipt.existing_study},  {"cases", receipt.cases},
       {"new_cases", receipt.new_cases},   {"already_done", receipt.already_done},      {"requeued", receipt.requeued},
       {"recomputed", receipt.recomputed}, {"data_files_lost", receipt.data_files_lost}};
-}
-
-nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {
-  const std::size_t finished = cell.finished();
-  nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
-  for (const auto& [outcome, count] : cell.outcomes) {
-    const auto estimate = wilson_interval(count, finished);
-    outcomes[outcome] = {{"count", count},
-                         {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-                         {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
-                                           : nlohmann::ordered_json(nullptr)}};
-  }
-  return {{"grid_point", cell.grid_point},
-          {"cases", cell.cases},
-          {"finished", finished},
-          {"failed", cell.failed},
-          {"outcomes", outcomes},
-          {"retained_mass_fraction_mean", optional_json(cell.mean_retained_mass_fraction)},
-          {"damage_ratio_mean", optional_json(cell.mean_damage_ratio)},
-          {"energy_per_contact_mean", optional_json(cell.mean_energy_per_contact)},
-          {"fractured_on_wall", cell.fractured_on_wall},
-          {"small_strain_exceeded", cell.small_strain_exceeded},
-          {"small_strain_unchecked", cell.small_strain_unchecked}};
-}
-
-nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (const auto& cell : cells) rows.push_back(grid_point_outcomes_json(cell));
-  return {{"confidence", 0.95}, {"interval", "wilson"}, {"grid_points", rows}};
 }
 
 }  // namespace aerobreak

@@ -17,13 +17,6 @@ nlohmann::ordered_json to_json(const ResultRecord& record);
 nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check);
 nlohmann::ordered_json to_json(const JobRecord& job);
 nlohmann::ordered_json to_json(const SubmissionReceipt& receipt);
-// One grid point: its axis values, cases, finished and failed counts, and per outcome the count and
-// the probability among the finished cases with the 95 % Wilson interval (outcome_statistics.hpp).
-nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell);
-// Per grid point: counts of each outcome and its probability among the finished cases with the
-// 95 % Wilson interval (orchestrator/fitting/proportion.hpp).
-nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells);
-
 template <typename Record>
 nlohmann::ordered_json page_json(const Page<Record>& page, const PageRequest& request) {
   nlohmann::ordered_json items = nlohmann::ordered_json::array();

@@ -4,11 +4,12 @@
 #include <set>
 #include <string>
 
+#include "orchestrator/app/study_results_json.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/case_file_download.hpp"
 #include "orchestrator/service/grid_filter.hpp"
 #include "orchestrator/service/http_support.hpp"
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/mean_interval.hpp"
 #include "orchestrator/service/versioned_documents.hpp"
 
 namespace aerobreak {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/version.hpp"
+#include "orchestrator/app/study_submission.hpp"
 #include "orchestrator/service/access_log.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/byte_ranges.hpp"
@@ -15,7 +16,6 @@
 #include "orchestrator/service/openapi_text.hpp"
 #include "orchestrator/service/request_checks.hpp"
 #include "orchestrator/service/routes.hpp"
-#include "orchestrator/service/study_submission.hpp"
 #include "orchestrator/service/study_templates.hpp"
 
 namespace aerobreak {
@@ -83,11 +83,8 @@ void submit_study(Endpoints& e, const httplib::Request& request, httplib::Respon
   nlohmann::ordered_json document = parse_json_body(request.body);
   try {
     const Study study = parse_study(std::move(document), e.options.study_limits);
-    StudySubmission submission = make_submission(study);
-    const auto lost = lost_data_files(submission, e.store, e.data_files);
-    if (flag_parameter(request, "recompute_data_files")) submission.recompute = lost;
-    auto receipt = e.store.submit_study(submission);
-    receipt.data_files_lost = lost.size();
+    const auto receipt =
+        aerobreak::submit_study(study, e.store, e.data_files, flag_parameter(request, "recompute_data_files"));
     if (e.scheduler) e.scheduler->wake();
     response.set_header("Location", "/api/studies/" + std::to_string(receipt.study_id));
     send_json(response, receipt.existing_study ? 200 : 201, to_json(receipt));

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "engine/impact/outcome.hpp"
 #include "orchestrator/app/compression.hpp"
 
 namespace aerobreak {
@@ -92,8 +93,8 @@ std::optional<CaseStatus> status_parameter(const httplib::Request& request) {
 
 std::optional<std::string> outcome_parameter(const httplib::Request& request) {
   auto outcome = single_parameter(request, "outcome");
-  if (outcome && *outcome != "stick" && *outcome != "bounce" && *outcome != "break-up" && *outcome != "undetermined")
-    throw RequestError{400, "query parameter 'outcome' must be stick, bounce, break-up or undetermined"};
+  if (outcome && !parse_outcome(*outcome))
+    throw RequestError{400, "query parameter 'outcome' must be " + outcome_names_text()};
   return outcome;
 }
 

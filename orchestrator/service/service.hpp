@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "engine/io/bounded_input.hpp"
 #include "orchestrator/scheduler/scheduler.hpp"
 #include "orchestrator/service/connection_stream.hpp"
 #include "orchestrator/store/store.hpp"
@@ -29,8 +30,8 @@ struct ServiceOptions {
   std::optional<std::string> token;
   // What one request may ask for: body size, and the study limits (cases, primaries; no cluster
   // files named by a client).
-  std::size_t max_body_bytes = 1 << 20;
-  StudyLimits study_limits{10000, 100000, false};
+  std::size_t max_body_bytes = kMaxDocumentBytes;  // a request body: a study, as a study file is read
+  StudyLimits study_limits = kServiceStudyLimits;
   std::size_t max_page_size = 1000;
   // What one connection may take: connections at once, timeouts, header size (docs/ORCHESTRATOR.md).
   ConnectionLimits connections;

@@ -2,9 +2,9 @@
 
 #include <string>
 
+#include "orchestrator/app/study_results_json.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/http_support.hpp"
-#include "orchestrator/service/search_endpoints.hpp"
 
 namespace aerobreak {
 

@@ -33,7 +33,7 @@ void add_reentrained_fragments(SqliteDatabase& db, std::int64_t study_id,
 CaseOutcome outcome_from(const SqliteStatement& row, std::size_t grid_point) {
   CaseOutcome c;
   c.grid_point = grid_point;
-  c.outcome = parse_outcome(row.text(6)).value_or(Outcome::undetermined);
+  c.outcome = parse_outcome(row.text(6)).value_or(ImpactOutcome::undetermined);
   c.restitution = row.optional_real(7);
   c.retained_mass_fraction = row.optional_real(8);
   c.damage_ratio = row.optional_real(9);

@@ -6,13 +6,12 @@
 #include <optional>
 #include <string>
 
+#include "engine/impact/outcome.hpp"
 #include "orchestrator/store/store.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
 
 namespace aerobreak {
 namespace {
-
-constexpr std::array<std::string_view, 4> kOutcomes{"stick", "bounce", "break-up", "undetermined"};
 
 // Each result quantity with moments: its column (an SQL expression) and where it goes. The
 // restitution is the bounces' only (docs/CORRELATIONS.md): that of a stick or a break-up (the
@@ -71,9 +70,9 @@ GridPointStatistics statistics_from(const SqliteStatement& row) {
   cell.grid_point = nlohmann::ordered_json::parse(row.text(1));
   cell.cases = static_cast<std::size_t>(row.integer(2));
   cell.failed = static_cast<std::size_t>(row.integer(3));
-  int column = 4;  // stick, bounce, break-up, undetermined: the summaries' columns in kOutcomes' order
-  for (const auto outcome : kOutcomes)
-    cell.outcomes[std::string(outcome)] = static_cast<std::size_t>(row.integer(column++));
+  int column = 4;  // stick, bounce, break-up, undetermined: the summaries' columns in kImpactOutcomes' order
+  for (const auto outcome : kImpactOutcomes)
+    cell.outcomes[to_string(outcome)] = static_cast<std::size_t>(row.integer(column++));
   for (const auto& [name, member] : kMomentColumns) {
     Moments& moments = statistics.*member;
     moments.count = static_cast<std::size_t>(row.integer(column++));

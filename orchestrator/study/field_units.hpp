@@ -12,6 +12,11 @@ namespace aerobreak {
 // both systems), ...; empty for a count, a ratio, a flag or a name (N, gamma/k_n, mu, a method).
 std::string case_field_unit(const std::string& pointer, bool physical);
 
+// The unit of a study axis (a name or a pointer) as the exported tables write it (docs/EXPORT.md):
+// "1" for a dimensionless number, the reduced spelling of an SI unit ("m/(d tau^2)" for a Young's
+// modulus) in a reduced table, "unknown" for a field the table above does not list.
+std::string exported_axis_unit(const std::string& axis_name, bool physical);
+
 // The same for a study axis, by its name in the study (an alias such as "impact_speed", or a pointer),
 // in a unit system of study_units.hpp: "physical", "reduced", or "mixed" (an axis sets /units), where
 // only a unit both systems share is given.

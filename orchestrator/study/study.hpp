@@ -20,6 +20,9 @@ struct StudyLimits {
   std::size_t max_primaries = 1000000;  // per case (generator primaries)
   bool allow_cluster_files = true;  // false for studies arriving over HTTP: the server must not read client-named files
 };
+// The limits of a study a client submits over HTTP (`aerobreak serve`'s defaults, --max-cases and
+// --max-primaries; docs/ORCHESTRATOR.md, "Limits").
+inline constexpr StudyLimits kServiceStudyLimits{10000, 100000, false};
 
 // One swept case field: its name in the study (an alias such as "impact_speed" or the pointer
 // itself), the JSON pointer into the case it sets, and its values in order.

@@ -36,16 +36,16 @@ CaseOutcome draw_case(std::size_t point, double speed, double primaries, double 
   c.grid_point = point;
   c.primaries = static_cast<std::int64_t>(primaries);
   const double u = uniform();
-  c.outcome = u < law.probability(speed)          ? Outcome::break_up
-              : u < law.probability(speed) + 0.03 ? Outcome::bounce
-                                                  : Outcome::stick;
+  c.outcome = u < law.probability(speed)          ? ImpactOutcome::break_up
+              : u < law.probability(speed) + 0.03 ? ImpactOutcome::bounce
+                                                  : ImpactOutcome::stick;
   c.energy_per_contact = 3.0 * std::pow(speed / v50, 2.0) * (0.8 + 0.4 * uniform());
-  c.retained_mass_fraction = c.outcome == Outcome::stick    ? 1.0
-                             : c.outcome == Outcome::bounce ? 0.0
-                                                            : 0.2 + 0.6 * uniform();
+  c.retained_mass_fraction = c.outcome == ImpactOutcome::stick    ? 1.0
+                             : c.outcome == ImpactOutcome::bounce ? 0.0
+                                                                  : 0.2 + 0.6 * uniform();
   c.damage_ratio = 0.1 * uniform();
   c.small_strain_exceeded = speed > 4.0 * v50;
-  if (c.outcome == Outcome::break_up)
+  if (c.outcome == ImpactOutcome::break_up)
     for (int k = 0; k < 6; ++k)
       c.reentrained_sizes.push_back(1 + static_cast<std::int64_t>(std::pow(uniform(), -0.8)) % 20);
   return c;

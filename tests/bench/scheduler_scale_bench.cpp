@@ -23,7 +23,7 @@
 #include <thread>
 
 #include "orchestrator/scheduler/scheduler.hpp"
-#include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/app/study_submission.hpp"
 #include "orchestrator/worker/case_runner.hpp"
 
 namespace aerobreak {

@@ -164,7 +164,9 @@ CaseOutcomeTable two_walls() {
           const std::string outcome = outcome_of(fragments, adhesive ? size : 160 - size);
           CaseOutcome c;
           c.grid_point = table.grid_points.size() - 1;
-          c.outcome = outcome == "stick" ? Outcome::stick : outcome == "bounce" ? Outcome::bounce : Outcome::break_up;
+          c.outcome = outcome == "stick"    ? ImpactOutcome::stick
+                      : outcome == "bounce" ? ImpactOutcome::bounce
+                                            : ImpactOutcome::break_up;
           table.cases.push_back(c);
         }
       }

@@ -10,6 +10,7 @@
 
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/fitting/proportion.hpp"
+#include "orchestrator/study/field_units.hpp"
 #include "tests/export/export_study.hpp"
 #include "tests/support/scratch_directory.hpp"
 
@@ -228,12 +229,17 @@ TEST_CASE("Axis columns: numbers as they are, booleans as 1/0, text as an index 
   CHECK(axes[2].unit() == "1");  // a friction coefficient
   CHECK(axes[1].unit() == "1");  // a boolean
   // Every quantity with its unit: SI for a physical study's material, d, m, tau otherwise.
-  CHECK(axis_unit("/material/surface_energy", true) == "J/m^2");
-  CHECK(axis_unit("/material/surface_energy", false) == "m/tau^2");
-  CHECK(axis_unit("/model/rolling/critical_displacement", true) == "d");
-  CHECK(axis_unit("/impact/angle", false) == "deg");
-  CHECK(axis_unit("fractal_dimension", true) == "1");
-  CHECK(axis_unit("/somewhere/else", true) == "unknown");
+  CHECK(exported_axis_unit("/material/surface_energy", true) == "J/m^2");
+  CHECK(exported_axis_unit("/material/surface_energy", false) == "m/tau^2");
+  CHECK(exported_axis_unit("/model/rolling/critical_displacement", true) == "d");
+  CHECK(exported_axis_unit("/impact/angle", false) == "deg");
+  CHECK(exported_axis_unit("fractal_dimension", true) == "1");
+  CHECK(exported_axis_unit("/somewhere/else", true) == "unknown");
+  // The same table, as the study's units write it: no unit for a number without one, nor for a
+  // physical-only field in a reduced case.
+  CHECK(case_field_unit("/model/friction", true).empty());
+  CHECK(case_field_unit("/material/surface_energy", false).empty());
+  CHECK(case_field_unit("/material/surface_energy", true) == "J/m^2");
   CHECK(values(3) == std::vector<double>{0, 1, 2});  // mixed values: labels "1", "x", "true"
   nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
   add_axis_labels(metadata, axes);

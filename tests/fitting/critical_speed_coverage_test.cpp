@@ -27,8 +27,8 @@ TEST_CASE("The 95 % profile-likelihood interval of v50 covers the truth in 93-97
     const auto groups = group_cases(table, request.speed_axis);
     REQUIRE(groups.size() == 1);
     const LogisticFit fit =
-        fit_logistic({}, Outcome::break_up, "impact_speed",
-                     speed_rows(table, groups[0].grid_points, Outcome::break_up, request), request, {});
+        fit_logistic({}, ImpactOutcome::break_up, "impact_speed",
+                     speed_rows(table, groups[0].grid_points, ImpactOutcome::break_up, request), request, {});
     REQUIRE(fit.critical.size() == 3);
     const CriticalValue& v50 = fit.critical[0];
     if (fit.common.status == FitStatus::ok) ++fitted;

@@ -24,11 +24,11 @@ CaseOutcomeTable study_of(const std::vector<double>& speeds, const std::vector<s
     for (const char letter : outcomes[g]) {
       CaseOutcome c;
       c.grid_point = g;
-      c.outcome = letter == 's'   ? Outcome::stick
-                  : letter == 'b' ? Outcome::bounce
-                  : letter == 'u' ? Outcome::break_up
-                                  : Outcome::undetermined;
-      c.retained_mass_fraction = c.outcome == Outcome::stick ? 1.0 : 0.5;
+      c.outcome = letter == 's'   ? ImpactOutcome::stick
+                  : letter == 'b' ? ImpactOutcome::bounce
+                  : letter == 'u' ? ImpactOutcome::break_up
+                                  : ImpactOutcome::undetermined;
+      c.retained_mass_fraction = c.outcome == ImpactOutcome::stick ? 1.0 : 0.5;
       table.cases.push_back(c);
     }
   }

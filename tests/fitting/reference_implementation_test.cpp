@@ -92,9 +92,9 @@ const Counts kLarge{{19, 17, 14, 11, 7, 4, 2, 1}, {1, 2, 4, 5, 5, 4, 3, 1}, {0, 
 void add_group(CaseOutcomeTable& table, double primaries, const Counts& counts) {
   for (std::size_t s = 0; s < kSpeeds.size(); ++s) {
     table.grid_points.push_back({{"impact_speed", kSpeeds[s]}, {"primaries", primaries}});
-    const std::pair<Outcome, int> outcomes[] = {{Outcome::stick, counts.stick[s]},
-                                                {Outcome::bounce, counts.bounce[s]},
-                                                {Outcome::break_up, counts.break_up[s]}};
+    const std::pair<ImpactOutcome, int> outcomes[] = {{ImpactOutcome::stick, counts.stick[s]},
+                                                      {ImpactOutcome::bounce, counts.bounce[s]},
+                                                      {ImpactOutcome::break_up, counts.break_up[s]}};
     for (const auto& [outcome, n] : outcomes)
       for (int i = 0; i < n; ++i) {
         CaseOutcome c;
@@ -151,7 +151,7 @@ void check_critical(const CriticalValue& value, double estimate, double lower, d
   CHECK(*value.upper == Approx(upper).epsilon(kRelative));
 }
 
-LogisticFit group_fit(const CaseOutcomeTable& table, Outcome response) {
+LogisticFit group_fit(const CaseOutcomeTable& table, ImpactOutcome response) {
   const auto groups = group_cases(table, "impact_speed");
   const auto request = speed_request();
   return fit_logistic({}, response, "impact_speed", speed_rows(table, groups[0].grid_points, response, request),
@@ -162,7 +162,7 @@ LogisticFit group_fit(const CaseOutcomeTable& table, Outcome response) {
 
 TEST_CASE("Per-group logistic fits and profile-likelihood critical speeds agree with R", "[fitting][reference]") {
   const CaseOutcomeTable table = fixture_study();
-  const LogisticFit break_up = group_fit(table, Outcome::break_up);
+  const LogisticFit break_up = group_fit(table, ImpactOutcome::break_up);
   REQUIRE(break_up.common.status == FitStatus::ok);
   check_estimate(break_up.common, 0, 5.19597713655170, 0.811609705746725);
   check_estimate(break_up.common, 1, 2.04348718627862, 0.303928095167396);
@@ -170,7 +170,7 @@ TEST_CASE("Per-group logistic fits and profile-likelihood critical speeds agree 
   check_critical(break_up.critical[1], 0.0786536604255, 0.0633927604558, 0.0979116172279);
   check_critical(break_up.critical[2], 0.230508337208, 0.165239469637, 0.367391529157);
 
-  const LogisticFit stick = group_fit(table, Outcome::stick);
+  const LogisticFit stick = group_fit(table, ImpactOutcome::stick);
   check_estimate(stick.common, 0, -5.84644773364333, 0.877745254292180);
   check_estimate(stick.common, 1, -1.78652727249445, 0.271871426109365);
   check_critical(stick.critical[0], 0.12968653471, 0.0912985204449, 0.209420891118);
@@ -184,8 +184,8 @@ TEST_CASE("The pooled model with log N as covariate agrees with R", "[fitting][r
   request.covariates = {{"primaries", true}};
   std::vector<std::size_t> all(table.grid_points.size());
   std::iota(all.begin(), all.end(), 0);
-  const LogisticFit pooled = fit_logistic({}, Outcome::break_up, "impact_speed",
-                                          speed_rows(table, all, Outcome::break_up, request), request, {});
+  const LogisticFit pooled = fit_logistic({}, ImpactOutcome::break_up, "impact_speed",
+                                          speed_rows(table, all, ImpactOutcome::break_up, request), request, {});
   check_estimate(pooled.common, 0, 6.231419790302835, 1.144144841333684);
   check_estimate(pooled.common, 1, 1.974162739163768, 0.210954716603717);
   check_estimate(pooled.common, 2, -0.350161297993368, 0.226739531429917);
@@ -227,8 +227,8 @@ TEST_CASE("Pooled models pool along N only: one per wall, each R's glm on that w
     CHECK(fit.common.cases == 320);
     // P(bounce) never reaches 0.5 in these counts: no v50, no law, and the fit says why.
     CHECK(fit.axes ==
-          (fit.response == Outcome::bounce ? std::vector<std::string>{} : std::vector<std::string>{"primaries"}));
-    CHECK(fit.common.status == (fit.response == Outcome::bounce ? FitStatus::insufficient_data : FitStatus::ok));
+          (fit.response == ImpactOutcome::bounce ? std::vector<std::string>{} : std::vector<std::string>{"primaries"}));
+    CHECK(fit.common.status == (fit.response == ImpactOutcome::bounce ? FitStatus::insufficient_data : FitStatus::ok));
   }
 }
 
@@ -245,14 +245,15 @@ TEST_CASE("The energy-per-contact fit of single cases agrees with R", "[fitting]
   table.grid_points.push_back({{"impact_speed", 0.1}});
   for (std::size_t i = 0; i < energy.size(); ++i) {
     CaseOutcome c;
-    c.outcome = broke[i] ? Outcome::break_up : Outcome::stick;
+    c.outcome = broke[i] ? ImpactOutcome::break_up : ImpactOutcome::stick;
     c.energy_per_contact = energy[i];
     table.cases.push_back(c);
   }
   const auto groups = group_cases(table, "impact_speed");
   const auto request = speed_request();
-  const LogisticFit fit = fit_logistic({}, Outcome::break_up, "energy_per_contact",
-                                       energy_rows(table, groups[0].cases, Outcome::break_up, request), request, {});
+  const LogisticFit fit =
+      fit_logistic({}, ImpactOutcome::break_up, "energy_per_contact",
+                   energy_rows(table, groups[0].cases, ImpactOutcome::break_up, request), request, {});
   check_estimate(fit.common, 0, -4.48122604888272, 1.93233608271035);
   check_estimate(fit.common, 1, 6.09674415984278, 2.43694847002736);
   check_critical(fit.critical[0], 1.45444796835, 0.876560195084, 1.92936070546);
@@ -273,7 +274,7 @@ TEST_CASE("The quasi-binomial retained-fraction fit agrees with R", "[fitting][r
     for (std::size_t r = 0; r < 3; ++r) {
       CaseOutcome c;
       c.grid_point = s;
-      c.outcome = Outcome::break_up;
+      c.outcome = ImpactOutcome::break_up;
       c.retained_mass_fraction = fractions[3 * s + r];
       table.cases.push_back(c);
     }

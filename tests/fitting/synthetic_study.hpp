@@ -38,7 +38,7 @@ inline CaseOutcomeTable draw_study(const LogisticLaw& law, const std::vector<dou
     for (int r = 0; r < replicates; ++r) {
       CaseOutcome c;
       c.grid_point = table.grid_points.size() - 1;
-      c.outcome = uniform() < law.probability(speed) ? Outcome::break_up : Outcome::stick;
+      c.outcome = uniform() < law.probability(speed) ? ImpactOutcome::break_up : ImpactOutcome::stick;
       c.primaries = static_cast<std::int64_t>(primaries);
       table.cases.push_back(c);
     }

@@ -3,12 +3,35 @@
 // changed, and its stored fits read back for the export.
 #include <catch2/catch.hpp>
 
+#include <tuple>
+
 #include "orchestrator/app/study_fits.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
 #include "tests/store/correlation_study.hpp"
 #include "tests/store/store_support.hpp"
 
 namespace aerobreak::testing {
+namespace {
+
+// A store file named `file_name` holding one finished synthetic study (4 replicates, seed 2), the
+// study's record, its default correlation request and the application layer's fits over the store.
+struct FinishedStudy {
+  FinishedStudy(const std::string& file_name, const std::string& hash)
+      : file(file_name),
+        store(file.path()),
+        id(finished_correlation_study(store, hash, 4, 2)),
+        study(*store.study(id)),
+        request(correlation_request(study, std::nullopt)),
+        fits(store) {}
+  TemporaryStoreFile file;
+  Store store;
+  std::int64_t id;
+  StudyRecord study;
+  CorrelationRequest request;
+  StudyFits fits;
+};
+
+}  // namespace
 
 TEST_CASE("The store reads a study's outcomes with fragments, and counts changes of its result set",
           "[store][correlations]") {
@@ -24,11 +47,11 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
   std::size_t break_ups = 0;
   for (const CaseOutcome& c : outcomes.table.cases) {
     REQUIRE(c.retained_mass_fraction);
-    if (c.outcome == Outcome::break_up) {
+    if (c.outcome == ImpactOutcome::break_up) {
       ++break_ups;
       CHECK(c.reentrained_sizes == std::vector<std::int64_t>{1, 3, 1, 3});
     }
-    if (c.outcome == Outcome::stick) CHECK(c.reentrained_sizes.empty());
+    if (c.outcome == ImpactOutcome::stick) CHECK(c.reentrained_sizes.empty());
   }
   CHECK(break_ups > 0);
   // A second study naming the same cases gets its own count when it is linked to them.
@@ -41,22 +64,18 @@ TEST_CASE("The store reads a study's outcomes with fragments, and counts changes
 
 TEST_CASE("Fits are stored, served while the result set is unchanged, refitted when it changes",
           "[store][correlations]") {
-  TemporaryStoreFile file("correlation_cache");
-  Store store(file.path());
-  const auto id = finished_correlation_study(store, "cache", 4, 2);
-  const StudyRecord study = *store.study(id);
-  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  FinishedStudy s("correlation_cache", "cache");
+  const auto& [file, study, request, cache] = std::tie(s.file, s.study, s.request, s.fits);
   REQUIRE(request.covariates.size() == 1);
   CHECK(request.covariates[0].axis == "primaries");
-  StudyFits cache(store);
 
   const StoredCorrelations first = *cache.current(study, request);
   CHECK(first.result_set_version == 64);
   CHECK(first.result_set_hash.size() == 64);
   const auto summary = nlohmann::json::parse(first.summary);
   CHECK(summary.at("provenance").at("result_set_hash") == first.result_set_hash);
-  REQUIRE(store.stored_fit(first.set_id, "break-up.speed.g1"));
-  CHECK_FALSE(store.stored_fit(first.set_id, "no-such-fit"));
+  REQUIRE(s.store.stored_fit(first.set_id, "break-up.speed.g1"));
+  CHECK_FALSE(s.store.stored_fit(first.set_id, "no-such-fit"));
 
   SECTION("unchanged: the same stored set") {
     const StoredCorrelations again = *cache.current(study, request);
@@ -85,13 +104,9 @@ TEST_CASE("Fits are stored, served while the result set is unchanged, refitted w
 // and speed axes as well as the covariates (once it held the covariates only, and a request for
 // other levels was answered with the default levels' fits).
 TEST_CASE("The fits' cache keys on the whole request", "[store][correlations]") {
-  TemporaryStoreFile file("correlation_request_key");
-  Store store(file.path());
-  const auto id = finished_correlation_study(store, "keys", 4, 2);
-  const StudyRecord study = *store.study(id);
-  const CorrelationRequest request = correlation_request(study, std::nullopt);
+  FinishedStudy s("correlation_request_key", "keys");
+  const auto& [store, study, request, cache] = std::tie(s.store, s.study, s.request, s.fits);
   CHECK(request.size_axis == "primaries");
-  StudyFits cache(store);
   const auto first = cache.current(study, request);
   CorrelationRequest other_levels = request;
   other_levels.levels = {0.2, 0.5, 0.8};
@@ -112,13 +127,10 @@ TEST_CASE("The fits' cache keys on the whole request", "[store][correlations]") 
 // fresh fit of the study: read back they are the fits, number for number, and a stored document
 // changed by hand is what the export then gets.
 TEST_CASE("The export reads the study's stored fits back instead of fitting it again", "[store][correlations]") {
-  TemporaryStoreFile file("correlation_read_back");
-  Store store(file.path());
-  const auto id = finished_correlation_study(store, "read back", 4, 2);
-  const StudyRecord study = *store.study(id);
-  StudyFits fits(store);
+  FinishedStudy s("correlation_read_back", "read back");
+  const auto& [file, store, study, fits] = std::tie(s.file, s.store, s.study, s.fits);
   const auto read = fits.logistic_fits(study);
-  const CorrelationSet fresh = study_correlations(store, study, correlation_request(study, std::nullopt));
+  const CorrelationSet fresh = study_correlations(store, study, s.request);
   REQUIRE(read->logistic.size() == fresh.logistic.size());
   for (std::size_t i = 0; i < fresh.logistic.size(); ++i) {
     const auto &a = read->logistic[i], &b = fresh.logistic[i];

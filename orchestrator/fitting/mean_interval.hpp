@@ -2,8 +2,8 @@
 #include <cstddef>
 #include <optional>
 
-// The Wilson interval of the outcome probabilities: orchestrator/fitting/proportion.hpp, the
-// statistics library of the correlations.
+// Means of per-grid-point samples with their Student intervals, for the dashboard's grid and the
+// lookup tables; the Wilson interval of the outcome probabilities and kZ95 are in proportion.hpp.
 #include "orchestrator/fitting/proportion.hpp"
 
 namespace aerobreak {

@@ -14,4 +14,9 @@ StudySubmission make_submission(const Study& study);
 // submission.recompute, so that they are computed again.
 std::vector<std::string> lost_data_files(const StudySubmission& submission, Store& store, DataFileChecker& checker);
 
+// Submits a parsed study to the store: its cases (those already done are kept), a search's round 0,
+// and, with `recompute_data_files`, the done cases whose data file is lost computed again. The
+// receipt counts the lost data files either way. What `aerobreak run` and POST /api/studies do.
+SubmissionReceipt submit_study(const Study& study, Store& store, DataFileChecker& checker, bool recompute_data_files);
+
 }  // namespace aerobreak

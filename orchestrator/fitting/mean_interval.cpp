@@ -1,4 +1,4 @@
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/mean_interval.hpp"
 
 #include <algorithm>
 #include <cmath>

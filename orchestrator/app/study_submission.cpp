@@ -1,4 +1,4 @@
-#include "orchestrator/service/study_submission.hpp"
+#include "orchestrator/app/study_submission.hpp"
 
 #include <set>
 
@@ -62,6 +62,15 @@ std::vector<std::string> lost_data_files(const StudySubmission& submission, Stor
     if (state == DataFileState::missing || state == DataFileState::damaged) lost.push_back(file.hash);
   }
   return lost;
+}
+
+SubmissionReceipt submit_study(const Study& study, Store& store, DataFileChecker& checker, bool recompute_data_files) {
+  StudySubmission submission = make_submission(study);
+  const auto lost = lost_data_files(submission, store, checker);
+  if (recompute_data_files) submission.recompute = lost;
+  auto receipt = store.submit_study(submission);
+  receipt.data_files_lost = lost.size();
+  return receipt;
 }
 
 }  // namespace aerobreak

@@ -1,10 +1,10 @@
 // The Student-t quantile against published tables, and the mean's interval covering on synthetic
-// data (the Wilson interval is tested with the statistics library, tests/fitting/proportion_test.cpp).
+// data (the Wilson interval: proportion_test.cpp).
 #include <catch2/catch.hpp>
 
 #include <random>
 
-#include "orchestrator/service/outcome_statistics.hpp"
+#include "orchestrator/fitting/mean_interval.hpp"
 
 namespace aerobreak {
 

@@ -1,0 +1,25 @@
+#pragma once
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "orchestrator/store/store_types.hpp"
+
+namespace aerobreak {
+
+// A study's results in the REST API's forms (schemas/openapi.json), which `aerobreak run` prints as
+// tables too (orchestrator/cli/outcome_table.hpp, search_table.hpp) as `aerobreak study results`
+// does from the API.
+
+// One grid point: its axis values, cases, finished and failed counts, and per outcome the count and
+// the probability among the finished cases with the 95 % Wilson interval
+// (orchestrator/fitting/proportion.hpp).
+nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell);
+// Per grid point: counts of each outcome and its probability among the finished cases with the
+// 95 % Wilson interval.
+nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells);
+
+// Each group of a search: its axis values, state, rounds, cases and current crossings with their
+// 95 % intervals; with every round's record when the groups carry their history.
+nlohmann::ordered_json search_groups_json(const std::vector<SearchGroupRecord>& groups);
+
+}  // namespace aerobreak
