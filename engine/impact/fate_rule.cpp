@@ -373,7 +373,7 @@ FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earli
   return j;
 }
 
-std::string swing_back_reason(const Simulation& sim) {
+std::string swing_back_reason(const Simulation& sim, bool follow_rigid_turn) {
   if (sim.walls().empty()) return {};
   const FragmentAnalysis fa = find_fragments(sim);
   const std::vector<Reserve> reserves = reserves_of(sim, fa);
@@ -384,6 +384,7 @@ std::string swing_back_reason(const Simulation& sim) {
     if (f.on_wall() || !(f.normal_velocity > 0.0)) continue;
     const double height = dot(f.centre_of_mass - wall.point, n);
     if (cannot_return(f, reserves[k], 0.0, height)) continue;
+    if (!follow_rigid_turn) return name_of(k, f) + " turns fast enough to swing back to the wall";
     if (!(lowest_rigid_gap(sim.particles(), fa, k, reserves[k].spin, wall, height) > 0.0))
       return name_of(k, f) + " turns so that it may swing back to the wall";
   }
