@@ -317,8 +317,10 @@ void Simulation::ForcePass::complete(std::size_t begin, std::size_t end) {
 // one of the step just computed and the opening one of the next; one: the opening one), a drift
 // over the next step, and their forces cleared for the next evaluation; returns how far they have
 // now moved since the neighbour list was built, and in this drift (the largest of each), and with
-// `Watch` how far their drift velocities have departed from those the step was chosen for.
-template <int Kicks, bool Watch>
+// `Watch` how far their drift velocities have departed from those the step was chosen for. Only
+// while `Switching` (the next step differs from this one) does the opening kick read other half
+// steps than the closing one.
+template <int Kicks, bool Watch, bool Switching>
 ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   Particles& p = particles_;
   const std::vector<Vec3>& built_at = neighbors_->built_at();
@@ -327,19 +329,25 @@ ParticleDrift Simulation::kick_and_drift(std::size_t begin, std::size_t end) {
   const double dt = next_dt_;
   const double* closing_mass = half_step_per_mass_.data();
   const double* closing_inertia = half_step_per_inertia_.data();
-  const bool switching = switching_step();
-  const double* opening_mass = switching ? next_half_step_per_mass_.data() : closing_mass;
-  const double* opening_inertia = switching ? next_half_step_per_inertia_.data() : closing_inertia;
+  const double* opening_mass = Switching ? next_half_step_per_mass_.data() : closing_mass;
+  const double* opening_inertia = Switching ? next_half_step_per_inertia_.data() : closing_inertia;
   const Vec3* reference = Watch ? chooser_->reference().data() : nullptr;
   // Locals, not the arrays: the stores to one array would otherwise make the compiler read the
-  // others again (they all hold doubles).
+  // others again (they all hold doubles). The half steps too are read once into locals.
   for (std::size_t i = begin; i < end; ++i) {
     Vec3 velocity = p.velocity[i];
     Vec3 spin = p.angular_velocity[i];
     const Vec3 force = p.force[i];
     const Vec3 torque = p.torque[i];
-    if constexpr (Kicks == 2) half_kick(i, velocity, spin, force, torque, closing_mass, closing_inertia);
-    half_kick(i, velocity, spin, force, torque, opening_mass, opening_inertia);
+    const double closing_m = closing_mass[i], closing_i = closing_inertia[i];
+    const double opening_m = Switching ? opening_mass[i] : closing_m;
+    const double opening_i = Switching ? opening_inertia[i] : closing_i;
+    if constexpr (Kicks == 2) {
+      velocity += closing_m * force;
+      spin += closing_i * torque;
+    }
+    velocity += opening_m * force;
+    spin += opening_i * torque;
     const Vec3 step = dt * velocity;
     const Vec3 position = p.position[i] + step;
     p.velocity[i] = velocity;

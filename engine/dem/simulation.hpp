@@ -140,11 +140,14 @@ class Simulation {
   void add_pair_forces(double formation_gap, const std::vector<ContactForces::Pass>& passes);
   void rebuild_neighbors();
   void require_list_for_particles() const;
+  // kick_and_drift compiled for the case at hand: watched or not, the step changing or not.
   template <int Kicks>
   ParticleDrift integrate(std::size_t begin, std::size_t end) {
-    return chooser_ ? kick_and_drift<Kicks, true>(begin, end) : kick_and_drift<Kicks, false>(begin, end);
+    if (!chooser_) return kick_and_drift<Kicks, false, false>(begin, end);
+    return switching_step() ? kick_and_drift<Kicks, true, true>(begin, end)
+                            : kick_and_drift<Kicks, true, false>(begin, end);
   }
-  template <int Kicks, bool Watch>
+  template <int Kicks, bool Watch, bool Switching>
   ParticleDrift kick_and_drift(std::size_t begin, std::size_t end);
   void kick();
   void set_half_steps(double dt, std::vector<double>& per_mass, std::vector<double>& per_inertia) const;

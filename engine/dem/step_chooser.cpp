@@ -96,7 +96,9 @@ StepChooser::Choice StepChooser::choose(const Particles& p, const PairList& pair
   const double h = headroom_ * std::max(c.pair_speed, c.wall_speed);
   const double crossing = crossing_step(c.pair_speed + 2.0 * h, c.wall_speed + h);
   const double allowed = std::min(cap_, crossing);
-  const bool keep = current > 0.0 && allowed >= current && allowed < growth * current;
+  // Kept while the speeds allow less than `growth` times it, unless they allow the cap: a step
+  // within a leap of the cap would otherwise stay below it for the rest of the run.
+  const bool keep = current > 0.0 && allowed >= current && allowed < growth * current && allowed < cap_;
   c.time_step = keep ? current : allowed;
   c.limit = c.time_step < cap_ ? TimeStepLimit::break_overlap : TimeStepLimit::contact_period;
 

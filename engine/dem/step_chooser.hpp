@@ -61,7 +61,7 @@ class StepChooser {
   // Chooses the step for the drifts to come. `built_at` and `skin` are the neighbour list's: until
   // its next rebuild every particle stays within skin/2 of where it was built. `current` is the
   // step now (0: none yet): it is kept while it is short enough and the speeds allow less than
-  // `growth` times it. A changing step costs accuracy (velocity Verlet conserves a shadow of the
+  // `growth` times it and less than the cap. A changing step costs accuracy (velocity Verlet conserves a shadow of the
   // energy that depends on the step, so each change moves the energy by a share of order
   // (w dt)^2): the step changes seldom, shorter at once when it must, longer only by leaps.
   Choice choose(const Particles& particles, const PairList& pairs, const std::vector<Wall>& walls,

@@ -285,6 +285,48 @@ std::vector<Vec3> mean_along_wall(const Simulation& sim, const FragmentAnalysis&
   return mean;
 }
 
+// The lowest gap to the wall fragment k reaches from now on if it turns rigidly at `spin` about
+// a fixed axis through its centre of mass while the centre rises at its normal velocity v_n > 0,
+// until its bounding sphere (taken 0.1 d wider, as in cannot_return) has cleared the wall. A
+// primary at r from the centre is then at height h + v_n t + a + b cos wt + c sin wt, with a, b, c
+// the wall-normal parts of r along the axis, across it and of axis x r. Sampled every kTurnStep
+// radians of the turn; each sample is lowered by how far any primary can fall in half the time
+// between samples, (|w| R_b + v_n) dt / 2, so that the least value is a lower bound for the rigid
+// motion. Infinite if nothing can come near the wall; -infinity if the horizon takes more than
+// kMostSamples samples.
+double lowest_rigid_gap(const Particles& p, const FragmentAnalysis& fa, std::size_t k, const Vec3& spin,
+                        const Wall& wall, double height) {
+  constexpr double kTurnStep = 0.002;
+  constexpr double kMostSamples = 20000;
+  const Fragment& f = fa.fragments[k];
+  const Vec3 n = wall.normal / norm(wall.normal);
+  const double v = f.normal_velocity;
+  const double rate = norm(spin);
+  const double horizon = std::max(0.0, (1.1 * f.bounding_radius - height) / v);
+  if (!(horizon > 0.0)) return kInfinity;
+  const double samples = std::ceil(rate * horizon / kTurnStep) + 1.0;
+  if (samples > kMostSamples) return -kInfinity;
+  const Vec3 axis = rate > 0.0 ? spin / rate : n;
+  struct Arm {
+    double along, cosine, sine;  // a - radius, b, c
+  };
+  std::vector<Arm> arms;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (fa.fragment_of[i] != k) continue;
+    const Vec3 r = p.position[i] - f.centre_of_mass;
+    const Vec3 along = dot(r, axis) * axis;
+    arms.push_back({dot(along, n) - p.radius[i], dot(r - along, n), dot(cross(axis, r), n)});
+  }
+  const double dt = horizon / samples;
+  const double fall = 0.5 * dt * (rate * f.bounding_radius + v);
+  double lowest = kInfinity;
+  for (double s = 0.0; s <= samples; s += 1.0) {
+    const double t = s * dt, c = std::cos(rate * t), sn = std::sin(rate * t);
+    for (const Arm& a : arms) lowest = std::min(lowest, height + v * t + a.along + a.cosine * c + a.sine * sn - fall);
+  }
+  return lowest;
+}
+
 }  // namespace
 
 FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earlier_positions, double earlier) {
@@ -331,7 +373,7 @@ FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earli
   return j;
 }
 
-std::string swing_back_reason(const Simulation& sim) {
+std::string swing_back_reason(const Simulation& sim, bool follow_rigid_turn) {
   if (sim.walls().empty()) return {};
   const FragmentAnalysis fa = find_fragments(sim);
   const std::vector<Reserve> reserves = reserves_of(sim, fa);
@@ -340,8 +382,11 @@ std::string swing_back_reason(const Simulation& sim) {
   for (std::size_t k = 0; k < fa.fragments.size(); ++k) {
     const Fragment& f = fa.fragments[k];
     if (f.on_wall() || !(f.normal_velocity > 0.0)) continue;
-    if (!cannot_return(f, reserves[k], 0.0, dot(f.centre_of_mass - wall.point, n)))
-      return name_of(k, f) + " turns fast enough to swing back to the wall";
+    const double height = dot(f.centre_of_mass - wall.point, n);
+    if (cannot_return(f, reserves[k], 0.0, height)) continue;
+    if (!follow_rigid_turn) return name_of(k, f) + " turns fast enough to swing back to the wall";
+    if (!(lowest_rigid_gap(sim.particles(), fa, k, reserves[k].spin, wall, height) > 0.0))
+      return name_of(k, f) + " turns so that it may swing back to the wall";
   }
   return {};
 }

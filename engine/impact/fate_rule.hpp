@@ -36,8 +36,12 @@ struct FatesJudgement {
 FatesJudgement judge_fates(const Simulation& simulation, const std::vector<Vec3>& earlier_positions, double earlier);
 
 // Why a fragment off the wall and moving away may still swing back to it by its rigid rotation
-// alone (its shape kept, its internal motion left out: the clear fate's bound with no internal
-// energy); empty if none can. The outcome-fixed rule asks it of states that are not break-ups.
-std::string swing_back_reason(const Simulation& simulation);
+// alone (its shape kept, its internal motion left out); empty if none can. A fragment passes if
+// the clear fate's bound with no internal energy clears it, or else, if `follow_rigid_turn`, if
+// turning at its rigid rotation (w = I^-1 L) about that fixed axis while its centre rises, its
+// lowest point stays off the wall until its bounding sphere has cleared it (a heuristic: a free
+// body's axis wanders and its primaries move about it, and a floppy cluster can flex back to the
+// wall; docs/IMPACT.md section 4). The outcome-fixed rule asks it of states that are not break-ups.
+std::string swing_back_reason(const Simulation& simulation, bool follow_rigid_turn);
 
 }  // namespace aerobreak

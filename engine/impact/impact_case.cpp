@@ -228,6 +228,7 @@ void read_run(const Json& d, ImpactCase& c, Violations& violations) {
   c.settle.extent_crossing_fraction = run["settle"].value("extent_crossing_fraction", 0.1);
   c.settle.rest_speed_fraction = run["settle"]["rest_speed_fraction"].get<double>();
   c.settle.stop_when_outcome_fixed = run["settle"].value("stop_when_outcome_fixed", true);
+  c.settle.follow_rigid_turn = run["settle"].value("follow_rigid_turn", false);
   if (c.time_step > 0.0 && c.time_limit > 0.0 && c.time_step >= c.time_limit)
     violation("/run/time_step", "must be smaller than /run/time_limit");
   // The cluster starts `gap` above the wall, so its first wall contact comes after gap / v_n

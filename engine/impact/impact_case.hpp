@@ -33,6 +33,7 @@ struct SettleCriteria {
   double extent_crossing_fraction = 0.1;  // automatic window: this share of the time to cross the extent
   double rest_speed_fraction = 0.01;      // of the impact speed
   bool stop_when_outcome_fixed = true;    // the outcome-fixed rule as well as the quiet one
+  bool follow_rigid_turn = false;         // that rule follows a fragment's rigid turn (a heuristic)
 };
 
 // One impact case, in reduced units (d, m, tau = sqrt(m/k_n)), as schemas/case.schema.json

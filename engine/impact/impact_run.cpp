@@ -243,7 +243,7 @@ ImpactResult run_impact(const ImpactCase& c, const ImpactRunOptions& options) {
     }
   }
   SettleMonitor monitor(prepared.result.quiet_window, prepared.result.rest_speed, c.thresholds,
-                        c.settle.stop_when_outcome_fixed);
+                        c.settle.stop_when_outcome_fixed, c.settle.follow_rigid_turn);
   const ElapsedTimes times = run_prepared_impact(prepared, monitor, options);
   measure_impact(prepared, monitor, times);
   return std::move(prepared.result);

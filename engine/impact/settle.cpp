@@ -103,11 +103,12 @@ std::string to_string(SettleRule rule) {
 }
 
 SettleMonitor::SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds,
-                             bool outcome_fixed_rule)
+                             bool outcome_fixed_rule, bool follow_rigid_turn)
     : quiet_window_(quiet_window),
       rest_speed_(rest_speed),
       thresholds_(thresholds),
-      outcome_fixed_rule_(outcome_fixed_rule) {
+      outcome_fixed_rule_(outcome_fixed_rule),
+      follow_rigid_turn_(follow_rigid_turn) {
   if (!(quiet_window > 0.0)) throw std::invalid_argument("settle: quiet_window must be > 0");
   if (!(rest_speed >= 0.0)) throw std::invalid_argument("settle: rest_speed must be >= 0");
 }
@@ -190,7 +191,7 @@ bool SettleMonitor::judge_outcome_fixed(const Simulation& simulation) {
   // A state that is not a break-up stands on its fragments' staying off the wall: one tumbling
   // fast enough could still swing back and be pushed off again, with another restitution.
   const Classification c = classify(fates_of(j.fragments.fragments, j.mean_velocity, j.wall_normal), true, thresholds_);
-  if (c.outcome != ImpactOutcome::break_up && !swing_back_reason(simulation).empty()) return false;
+  if (c.outcome != ImpactOutcome::break_up && !swing_back_reason(simulation, follow_rigid_turn_).empty()) return false;
   last_reason_.clear();
   judged_ = std::move(j.fragments);
   judged_mean_velocity_ = std::move(j.mean_velocity);

@@ -54,7 +54,7 @@ std::string to_string(SettleRule rule);
 class SettleMonitor {
  public:
   SettleMonitor(double quiet_window, double rest_speed, OutcomeThresholds thresholds = {},
-                bool outcome_fixed_rule = true);
+                bool outcome_fixed_rule = true, bool follow_rigid_turn = false);
 
   bool update(const Simulation& simulation);
 
@@ -101,6 +101,7 @@ class SettleMonitor {
   double rest_speed_;
   OutcomeThresholds thresholds_;
   bool outcome_fixed_rule_;
+  bool follow_rigid_turn_;  // the outcome-fixed rule follows a fragment's rigid turn (swing_back_reason)
   bool started_ = false;
   bool settled_ = false;
   SettleRule rule_ = SettleRule::quiet;

@@ -88,7 +88,7 @@ std::pair<Verdict, Verdict> run_seed(Json document, int seed) {
   PreparedImpact prepared = prepare_impact(c);
   Simulation& sim = *prepared.simulation;
   const ImpactResult& r = prepared.result;
-  SettleMonitor early(r.quiet_window, r.rest_speed, c.thresholds, true);
+  SettleMonitor early(r.quiet_window, r.rest_speed, c.thresholds, true, c.settle.follow_rigid_turn);
   SettleMonitor quiet(r.quiet_window, r.rest_speed, c.thresholds, false);
   early.update(sim);
   quiet.update(sim);
