@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "orchestrator/export/export_request.hpp"
+#include "orchestrator/export/fit_blocks.hpp"
 #include "orchestrator/export/lookup_table.hpp"
 
 namespace aerobreak {
@@ -26,10 +27,6 @@ std::string literal(double value, char exponent = 'e') {
   std::string out = text;
   if (exponent != 'e') out[out.find('e')] = exponent;
   return out;
-}
-
-bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
-  return fit.dose == "impact_speed" && fit.covariates.size() == 1 && fit.covariates.front().axis == size_axis;
 }
 
 PredictionSource source_of(const LogisticFit& fit) {
@@ -80,7 +77,35 @@ std::string status_legend() {
          "(the observed 0 or 1, band the Wilson interval of its results), 3 no value (p, lo, hi = the missing value)";
 }
 
+// A probability function has coefficients to evaluate (otherwise a constant or the missing value).
+bool is_fitted(const CodeFunction& f) {
+  return f.source == PredictionSource::maximum_likelihood || f.source == PredictionSource::firth;
+}
+
+// A v50 at one size, with both ends of its interval: the constant a function without a size term returns.
+bool has_single_size_v50(const CodeFunction& f) {
+  return is_fitted(f) && !f.critical.empty() && f.critical[0].estimate && f.critical[0].lower && f.critical[0].upper;
+}
+
+// The words above each function, in either language.
+std::string probability_description(const CorrelationCode& code, const CodeFunction& f) {
+  return "P(" + std::string(to_string(f.outcome)) + ") on condition " + f.condition + " (" + f.group.dump() +
+         "), fit " + (f.fit.empty() ? "none" : f.fit) + ": v impact speed [" + code.speed_unit +
+         "], n primaries; validity box v in [" + literal(f.speed_box[0]) + ", " + literal(f.speed_box[1]) +
+         "], n in [" + literal(f.size_box[0]) + ", " + literal(f.size_box[1]) + "]";
+}
+
+std::string v50_description(const CorrelationCode& code, const CodeFunction& f) {
+  return "v50 of " + std::string(to_string(f.outcome)) + " [" + code.speed_unit + "] on condition " + f.condition +
+         " at n primaries, 95 % interval " +
+         (f.size_term ? "by the delta method" : "by profile likelihood (this size only)");
+}
+
 // --- Fortran 90 ---------------------------------------------------------------------------------
+
+// The output arguments every Fortran function shares.
+const char* const kFortranOutputs =
+    "    real(dp), intent(out) :: lo, hi\n    logical, intent(out) :: inside\n    integer, intent(out) :: status\n";
 
 std::string fortran_comment(const std::string& text, const std::string& indent = "  ") {
   std::string out;
@@ -128,18 +153,10 @@ std::string fortran_parameters(const CodeFunction& f) {
 
 std::string fortran_probability(const CorrelationCode& code, const CodeFunction& f) {
   const std::string name = code_function_name(code, f, "p");
-  std::string text =
-      "\n" + fortran_comment("P(" + std::string(to_string(f.outcome)) + ") on condition " + f.condition + " (" +
-                             f.group.dump() + "), fit " + (f.fit.empty() ? "none" : f.fit) + ": v impact speed [" +
-                             code.speed_unit + "], n primaries; validity box v in [" + literal(f.speed_box[0]) + ", " +
-                             literal(f.speed_box[1]) + "], n in [" + literal(f.size_box[0]) + ", " +
-                             literal(f.size_box[1]) + "]");
-  text +=
-      "  function " + name +
-      "(v, n, lo, hi, inside, status) result(p)\n    real(dp), intent(in) :: v, n\n"
-      "    real(dp), intent(out) :: lo, hi\n    logical, intent(out) :: inside\n    integer, intent(out) :: status\n"
-      "    real(dp) :: p\n";
-  const bool fitted = f.source == PredictionSource::maximum_likelihood || f.source == PredictionSource::firth;
+  std::string text = "\n" + fortran_comment(probability_description(code, f)) + "  function " + name +
+                     "(v, n, lo, hi, inside, status) result(p)\n    real(dp), intent(in) :: v, n\n" + kFortranOutputs +
+                     "    real(dp) :: p\n";
+  const bool fitted = is_fitted(f);
   if (fitted) text += fortran_parameters(f);
   text += fortran_inside(f, "v") + "    status = " + std::to_string(static_cast<int>(f.source)) + "\n";
   if (fitted)
@@ -156,19 +173,12 @@ std::string fortran_probability(const CorrelationCode& code, const CodeFunction&
 
 std::string fortran_v50(const CorrelationCode& code, const CodeFunction& f) {
   const std::string name = code_function_name(code, f, "v50");
-  std::string text =
-      "\n" + fortran_comment("v50 of " + std::string(to_string(f.outcome)) + " [" + code.speed_unit +
-                             "] on condition " + f.condition + " at n primaries, 95 % interval " +
-                             (f.size_term ? "by the delta method" : "by profile likelihood (this size only)"));
-  text +=
-      "  function " + name +
-      "(n, lo, hi, inside, status) result(v)\n    real(dp), intent(in) :: n\n"
-      "    real(dp), intent(out) :: lo, hi\n    logical, intent(out) :: inside\n    integer, intent(out) :: status\n"
-      "    real(dp) :: v\n";
-  const bool fitted = f.source == PredictionSource::maximum_likelihood || f.source == PredictionSource::firth;
-  if (fitted && f.size_term) {
+  std::string text = "\n" + fortran_comment(v50_description(code, f)) + "  function " + name +
+                     "(n, lo, hi, inside, status) result(v)\n    real(dp), intent(in) :: n\n" + kFortranOutputs +
+                     "    real(dp) :: v\n";
+  if (is_fitted(f) && f.size_term) {
     text += fortran_parameters(f) + "    call " + code.prefix + "critical(b, cov, 0.5_dp, n, v, lo, hi)\n";
-  } else if (fitted && !f.critical.empty() && f.critical[0].estimate && f.critical[0].lower && f.critical[0].upper) {
+  } else if (has_single_size_v50(f)) {
     text += "    v = " + literal(*f.critical[0].estimate, 'd') + "\n    lo = " + literal(*f.critical[0].lower, 'd') +
             "\n    hi = " + literal(*f.critical[0].upper, 'd') + "\n";
   } else {
@@ -207,15 +217,14 @@ std::string c_parameters(const CodeFunction& f) {
          " * " + k + "] = {" + c_array(row_major(f.covariance)) + "};\n";
 }
 
+// The missing value's macro name in the C header.
+std::string c_missing(const CorrelationCode& code) { return "AB" + std::to_string(code.study) + "_MISSING"; }
+
 std::string c_probability(const CorrelationCode& code, const CodeFunction& f) {
   const std::string name = code_function_name(code, f, "p");
-  std::string text = "\n" + c_comment("P(" + std::string(to_string(f.outcome)) + ") on condition " + f.condition +
-                                      " (" + f.group.dump() + "), fit " + (f.fit.empty() ? "none" : f.fit) +
-                                      ": v impact speed [" + code.speed_unit + "], n primaries; validity box v in [" +
-                                      literal(f.speed_box[0]) + ", " + literal(f.speed_box[1]) + "], n in [" +
-                                      literal(f.size_box[0]) + ", " + literal(f.size_box[1]) + "]");
-  text += "static inline double " + name + "(double v, double n, double *lo, double *hi, int *inside, int *status) {\n";
-  const bool fitted = f.source == PredictionSource::maximum_likelihood || f.source == PredictionSource::firth;
+  std::string text = "\n" + c_comment(probability_description(code, f)) + "static inline double " + name +
+                     "(double v, double n, double *lo, double *hi, int *inside, int *status) {\n";
+  const bool fitted = is_fitted(f);
   if (fitted) text += c_parameters(f);
   text += c_inside(f, "v") + "  *status = " + std::to_string(static_cast<int>(f.source)) + ";\n";
   if (fitted) {
@@ -229,22 +238,18 @@ std::string c_probability(const CorrelationCode& code, const CodeFunction& f) {
   if (f.source == PredictionSource::no_transition)
     return text + "  *lo = " + literal(f.observed.lower) + ";\n  *hi = " + literal(f.observed.upper) + ";\n  return " +
            literal(f.observed.probability) + ";\n}\n";
-  const std::string missing = "AB" + std::to_string(code.study) + "_MISSING";
+  const std::string missing = c_missing(code);
   return text + "  *lo = " + missing + ";\n  *hi = " + missing + ";\n  return " + missing + ";\n}\n";
 }
 
 std::string c_v50(const CorrelationCode& code, const CodeFunction& f) {
   const std::string name = code_function_name(code, f, "v50");
-  std::string text = "\n" + c_comment("v50 of " + std::string(to_string(f.outcome)) + " [" + code.speed_unit +
-                                      "] on condition " + f.condition + " at n primaries, 95 % interval " +
-                                      (f.size_term ? "by the delta method" : "by profile likelihood (this size only)"));
-  text +=
-      "static inline double " + name + "(double n, double *lo, double *hi, int *inside, int *status) {\n  double v;\n";
-  const bool fitted = f.source == PredictionSource::maximum_likelihood || f.source == PredictionSource::firth;
-  const std::string missing = "AB" + std::to_string(code.study) + "_MISSING";
-  if (fitted && f.size_term) {
+  std::string text = "\n" + c_comment(v50_description(code, f)) + "static inline double " + name +
+                     "(double n, double *lo, double *hi, int *inside, int *status) {\n  double v;\n";
+  const std::string missing = c_missing(code);
+  if (is_fitted(f) && f.size_term) {
     text += c_parameters(f) + "  " + code.prefix + "critical(b, cov, 0.5, n, &v, lo, hi);\n";
-  } else if (fitted && !f.critical.empty() && f.critical[0].estimate && f.critical[0].lower && f.critical[0].upper) {
+  } else if (has_single_size_v50(f)) {
     text += "  v = " + literal(*f.critical[0].estimate) + ";\n  *lo = " + literal(*f.critical[0].lower) +
             ";\n  *hi = " + literal(*f.critical[0].upper) + ";\n";
   } else {
@@ -269,7 +274,7 @@ CorrelationCode correlation_code(const CorrelationSet& set, std::int64_t study, 
   code.speed_unit = speed_unit;
   code.header = std::move(header);
   code.header.push_back(status_legend());
-  const std::string size_axis = set.request.size_axis.empty() ? "primaries" : set.request.size_axis;
+  const std::string size_axis = size_axis_of(set);
   const bool pooled = std::any_of(set.logistic.begin(), set.logistic.end(),
                                   [&](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); });
   for (const auto& fit : set.logistic)
@@ -332,8 +337,8 @@ std::string c_header(const CorrelationCode& code) {
   std::string text = "/* Generated by aerobreak (docs/EXPORT.md, \"Correlations as code\"): a C99 header. */\n";
   for (const auto& line : code.header) text += c_comment(line);
   text +=
-      "#ifndef " + guard + "\n#define " + guard + "\n#include <math.h>\n\n#define AB" + std::to_string(code.study) +
-      "_MISSING (-1.0e30)\n\n/* 1 / (1 + exp(-t)), without overflow */\nstatic inline double " + x +
+      "#ifndef " + guard + "\n#define " + guard + "\n#include <math.h>\n\n#define " + c_missing(code) +
+      " (-1.0e30)\n\n/* 1 / (1 + exp(-t)), without overflow */\nstatic inline double " + x +
       "logistic(double t) {\n"
       "  if (t >= 0.0) return 1.0 / (1.0 + exp(-t));\n  return exp(t) / (1.0 + exp(t));\n}\n\n"
       "/* P = logistic(x'b) and its 95 % band logistic(x'b -+ 1.959963984540054 sqrt(x' cov x)); cov row-major */\n"

@@ -32,15 +32,6 @@ bool speed_fit(const LogisticFit& fit) {
 // One group's own fit (a pooled model has its covariates).
 bool per_group_fit(const LogisticFit& fit) { return speed_fit(fit) && fit.covariates.empty(); }
 
-std::string size_axis_of(const CorrelationSet& set) {
-  return set.request.size_axis.empty() ? "primaries" : set.request.size_axis;
-}
-
-// A fit pooled along the size alone (ln N its one covariate), one per condition of the other axes.
-bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
-  return speed_fit(fit) && fit.covariates.size() == 1 && fit.covariates.front().axis == size_axis;
-}
-
 // Whether a fit gives values (predict: fitted, or no transition in its data).
 bool gives_values(const LogisticFit& fit) {
   return fit.common.status == FitStatus::no_transition ||
@@ -85,8 +76,7 @@ std::string no_pooled_fit(const CorrelationSet& set, const std::string& key, dou
                    [&](const LogisticFit& fit) { return pooled_over_size(fit, size_axis); }))
     return why +
            ", and the study does not sweep the cluster size over several values: a size it did not run needs a fit "
-           "pooled "
-           "over several sizes (logit P = b0 + b1 ln v + b2 ln N)";
+           "pooled over several sizes (logit P = b0 + b1 ln v + b2 ln N)";
   why +=
       "; the fit pooled over the study's sizes (logit P = b0 + b1 ln v + b2 ln N) cannot be used for the condition " +
       key + ":";
@@ -142,6 +132,14 @@ std::vector<FitBlock> asked_blocks(const CorrelationSet& set, const std::vector<
 }
 
 }  // namespace
+
+std::string size_axis_of(const CorrelationSet& set) {
+  return set.request.size_axis.empty() ? "primaries" : set.request.size_axis;
+}
+
+bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis) {
+  return speed_fit(fit) && fit.covariates.size() == 1 && fit.covariates.front().axis == size_axis;
+}
 
 std::vector<FitBlock> fit_blocks(const CorrelationSet& set, const ExportRequest& request) {
   std::vector<FitSet> per_size;

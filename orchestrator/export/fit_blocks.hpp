@@ -4,6 +4,7 @@
 // its sizes (pooled_ln_n). Internal to orchestrator/export.
 #include <array>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "orchestrator/export/export_request.hpp"
@@ -22,6 +23,13 @@ struct FitBlock {
   std::array<const LogisticFit*, 3> fits{};
   FitModel model = FitModel::per_size;
 };
+
+// The axis that counts the primaries (the request's size axis, else `primaries`).
+std::string size_axis_of(const CorrelationSet& set);
+
+// A fit of an outcome in impact speed pooled along the size alone (ln N its one covariate), one per
+// condition of the other axes.
+bool pooled_over_size(const LogisticFit& fit, const std::string& size_axis);
 
 // The blocks of the request's sizes (none asked: every size the study ran), per combination of the
 // other axes in grid order, sizes ascending. ExportError 409 without any per-size fit, 422 naming
