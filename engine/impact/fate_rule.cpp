@@ -84,8 +84,7 @@ struct Reserve {
   double fastest_spin = 0.0;
   double pull = 0.0;
   double deformation = 0.0;
-  double axial_orbital = 0.0;  // the orbital inertia about the rotation's axis
-  double unwinding = 0.0;      // what the rotation can give up while a bond opens (rotation_unwinding)
+  double unwinding = 0.0;  // what the rotation can give up while a bond opens (rotation_unwinding)
 };
 
 void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std::size_t i) {
@@ -106,17 +105,19 @@ void add_particle(Reserve& f, const Fragment& fragment, const Particles& p, std:
   f.own_moments += own;
 }
 
-// What a rotation of kinetic energy E about the axis e can give up while a bond stretches by s
-// before it lets go. Stretching moves each primary at most s further from the centre of mass, so the
-// orbital moment about e, x = e.I_orb.e, grows to at most (x^(1/2) + s M^(1/2))^2 (Minkowski), while
-// the primaries' own moments c stay; at fixed angular momentum the rotation's energy falls in
-// proportion to the moment, so at most E (1 - (x + c) / ((x^(1/2) + s M^(1/2))^2 + c)) goes into the
-// stretch: the energy a spinning dimer's bond draws from its orbit as it opens. (The rule keeps a
-// fragment's shape otherwise: a tumbling fragment's drift to its largest axis is not counted.)
-double rotation_unwinding(double energy, double mass, double axial_orbital, double own, double stretch) {
-  if (!(energy > 0.0)) return 0.0;
-  const double reach = std::sqrt(std::max(axial_orbital, 0.0)) + stretch * std::sqrt(mass);
-  return energy * (1.0 - (axial_orbital + own) / (reach * reach + own));
+// What a fragment's rigid rotation (energy E, about the axis e of its spin) can give up while a bond
+// stretches by s (f.stretch) before it lets go; M its mass. Stretching moves each primary at most s
+// further from the centre of mass, so the orbital moment about e, x = e.I_orb.e, grows to at most (x^(1/2) + s
+// M^(1/2))^2 (Minkowski), while the primaries' own moments c stay; at fixed angular momentum the rotation's energy
+// falls in proportion to the moment, so at most E (1 - (x + c) / ((x^(1/2) + s M^(1/2))^2 + c)) goes into the stretch:
+// the energy a spinning dimer's bond draws from its orbit as it opens. (The rule keeps a fragment's shape otherwise: a
+// tumbling fragment's drift to its largest axis is not counted.)
+double rotation_unwinding(const Reserve& f, double mass) {
+  const double rate = norm(f.spin);
+  if (!(f.rotation > 0.0 && rate > 0.0)) return 0.0;
+  const double x = std::max(quadratic_form(f.orbital, f.spin / rate), 0.0);
+  const double reach = std::sqrt(x) + f.stretch * std::sqrt(mass);
+  return f.rotation * (1.0 - (x + f.own_moments) / (reach * reach + f.own_moments));
 }
 
 // The most a rigid rotation of kinetic energy E pulls on any bond. A bond carries the centripetal
@@ -146,8 +147,6 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     const auto [low, high] = eigenvalue_range(f.orbital);
     f.fastest_spin = std::sqrt(2.0 * f.rotation / (low + f.own_moments));
     f.pull = rotation_pull(f.rotation, fa.fragments[k].mass, low, high, f.own_moments);
-    const double spin = norm(f.spin);
-    if (spin > 0.0) f.axial_orbital = quadratic_form(f.orbital, f.spin / spin);
   }
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Fragment& fragment = fa.fragments[fa.fragment_of[i]];
@@ -166,9 +165,7 @@ std::vector<Reserve> reserves_of(const Simulation& sim, const FragmentAnalysis& 
     f.weakest_pull = std::min(f.weakest_pull, c.constants.pull_off_force);
     f.stretch = std::max(f.stretch, c.overlap + c.constants.break_overlap);
   });
-  for (std::size_t k = 0; k < r.size(); ++k)
-    r[k].unwinding =
-        rotation_unwinding(r[k].rotation, fa.fragments[k].mass, r[k].axial_orbital, r[k].own_moments, r[k].stretch);
+  for (std::size_t k = 0; k < r.size(); ++k) r[k].unwinding = rotation_unwinding(r[k], fa.fragments[k].mass);
   if (!sim.walls().empty() && sim.walls().front().adhesive)
     for (std::size_t k = 0; k < fa.fragments.size(); ++k)
       if (fa.fragments[k].size == 1) r[k].landing_loop = sim.wall_loop_energy(fa.fragments[k].first_primary, 0);
