@@ -46,8 +46,7 @@ std::string unreachable_reason(httplib::Error error) {
   switch (error) {
     case httplib::Error::Connection:
       return "nothing accepts connections there.\n  Start a service with `aerobreak serve` (or keep the one of a run "
-             "up "
-             "with `aerobreak run STUDY.json --keep-serving`),\n  or give its address with --url or AEROBREAK_URL.";
+             "up with `aerobreak run STUDY.json --keep-serving`),\n  or give its address with --url or AEROBREAK_URL.";
     case httplib::Error::ConnectionTimeout:
       return "no connection within 5 s (is the address right, and reachable?)";
     case httplib::Error::Read:
