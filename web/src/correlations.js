@@ -72,8 +72,8 @@ export class Correlations {
   // other than N outside the slice), the groups' estimates; v50 carries its 95 % interval as a
   // band and is drawn solid, v10 dashed, v90 dotted. `group` keys the condition (its axis values
   // in `groupValues`), so that a condition's measured and fitted series share a colour and an
-  // entry of the legend.
-  criticalCurves(outcome, xAxis, slice) {
+  // entry of the legend. Axes named in `names` (axis_names.js AxisNames).
+  criticalCurves(outcome, xAxis, slice, names) {
     const series = new Map();
     for (const fit of this.groupFits(outcome, xAxis, slice)) {
       if (!('primaries' in fit.group)) continue;
@@ -83,7 +83,7 @@ export class Correlations {
         if (typeof critical.estimate !== 'number') continue;
         const level = levelName(critical.level, fit.dose);
         const key = `${level} ${valueKey(others)}`;
-        const where = others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`);
+        const where = others.map(([axis, value]) => `, ${names.symbol(axis)} = ${value}`);
         const groupValues = Object.fromEntries(others);
         if (!series.has(key)) series.set(key, { label: `fitted ${level}${where.join('')}`, level, style: 'fitted',
           groupValues, group: conditionKey(groupValues), groupLabel: where.join('').slice(2) || 'all',
@@ -98,8 +98,8 @@ export class Correlations {
 
   // The measured crossings of 0.5 against N, as the service computes them from each group's
   // measured proportions (observed_crossings of the fits along x), one series per other series axis.
-  observedCurves(outcome, xAxis, slice) {
-    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice);
+  observedCurves(outcome, xAxis, slice, names) {
+    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice, names);
   }
 
   // The scaling fits of v50 for `outcome` (exponents per axis) whose group lies in the slice.

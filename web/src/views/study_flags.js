@@ -2,7 +2,7 @@
 // outside the contact laws' small-strain range and results without that check; counted over the
 // study and listed per grid point of the plotted slice.
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
-import { axisLabel, inSlice } from '../series.js';
+import { inSlice } from '../series.js';
 
 const kMaxRows = 50;
 export const kFlags = [
@@ -23,14 +23,14 @@ export function createFlags() {
       'checked: results stored before the check existed.'));
 
   // `shownAxes`: the axes that vary within the slice (x and the series axes), one column each.
-  function draw(grid, { slice, shownAxes, units }) {
+  function draw(grid, { slice, shownAxes, names }) {
     const counts = kFlags.map(([flag, label]) => `${total(grid.grid_points, flag)} ${label}`);
     replaceChildren(summary, `Of ${total(grid.grid_points, 'finished')} results: ${counts.join(', ')}.`);
     for (const [flag] of kFlags) summary.dataset[flag] = total(grid.grid_points, flag);
     const rows = grid.grid_points.filter((row) => inSlice(row.grid_point, slice) && kFlags.some(([flag]) => row[flag] > 0));
     holder.dataset.rows = rows.length;
     const columns = [
-      ...shownAxes.map((axis) => ({ label: axisLabel(axis, units), value: (row) => formatNumber(row.grid_point[axis],
+      ...shownAxes.map((axis) => ({ label: names.label(axis), value: (row) => formatNumber(row.grid_point[axis],
         4), numeric: true })),
       { label: 'results', value: (row) => row.finished, numeric: true },
       ...kFlags.map(([flag, label]) => ({ label, value: (row) => row[flag], numeric: true })),
