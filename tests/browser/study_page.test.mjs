@@ -143,6 +143,10 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     assert.equal(restitution.curves.flatMap((c) => c.points).length, bounced);
     if (bounced === 0) {
       assert.match(await page.locator('#plot-restitution').innerText(), /no case here bounced/);
+      // The panel holds its message only, not the height of a plot beside it.
+      const [restitutionHeight, fragmentsHeight] = await page.evaluate(() => ['panel-restitution', 'panel-fragments']
+        .map((id) => document.getElementById(id).getBoundingClientRect().height));
+      assert.ok(restitutionHeight < fragmentsHeight / 2, `restitution ${restitutionHeight} px, ${fragmentsHeight} px`);
     }
     const retained = (await chartContents(page, 'plot-retained')).curves.flatMap((c) => c.points.map((p) => p[1]));
     assert.ok(retained.every((value) => value >= 0 && value <= 1));
