@@ -28,9 +28,11 @@ export async function loadCorrelationSummary(studyId) {
 }
 
 // Whether every axis value of a fit's group equals the grid point's.
-const groupMatches = (group, gridPoint) => Object.entries(group).every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
+const groupMatches = (group, gridPoint) => Object.entries(group)
+  .every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
 // Whether the group lies in the slice ({axis: valueKey}) the plots show.
-const inSlice = (group, slice) => Object.entries(slice).every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
+const inSlice = (group, slice) => Object.entries(slice)
+  .every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
 // A group's own fit: a pooled model names the axes it pools along.
 const isGroupFit = (fit, outcome, dose) => fit.kind === 'logistic' && fit.response === outcome && fit.dose === dose &&
   fit.pooled_over.length === 0;
@@ -58,7 +60,8 @@ export class Correlations {
   // One dashed curve with its band per measured curve (series.js curvesAlong) that has a fit.
   async fittedCurves(measured, { outcome, xAxis, slice }) {
     const fits = this.groupFits(outcome, xAxis, slice);
-    const pairs = measured.map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
+    const pairs = measured
+      .map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
       .filter(({ fit }) => fit);
     const documents = await Promise.all(pairs.map(({ fit }) => this.document(fit.name)));
     return pairs.flatMap(({ curve, fit }, i) => (documents[i].curves || []).slice(0, 1).map((fitted) => ({

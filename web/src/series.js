@@ -50,7 +50,8 @@ function curveLabel(groupValues, names) {
 export function curvesAlong(rows, { axes, xAxis, slice, yOf, names }) {
   const along = alongAxis(xAxis);
   const xOf = xValueOf(xAxis);
-  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along && axis.values.length > 1);
+  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along &&
+    axis.values.length > 1);
   const curves = new Map();
   for (const row of rows) {
     if (!inSlice(row.grid_point, slice)) continue;
@@ -90,7 +91,8 @@ export function observedCriticalCurves(fits, slice, names, level = 0.5) {
   for (const fit of fits) {
     const crossing = (fit.observed_crossings || []).find((c) => c.level === level);
     if (!('primaries' in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
-    const rest = Object.fromEntries(Object.entries(fit.group).filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
+    const rest = Object.fromEntries(Object.entries(fit.group)
+      .filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
     const key = valueKey(rest);
     if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest, names), points: [] });
     series.get(key).points.push({ x: fit.group.primaries, y: crossing.dose });

@@ -53,10 +53,13 @@ export function createCaseTable({ state, studyId }) {
 
   function drawFilters() {
     replaceChildren(filters,
-      el('label', {}, 'Status ', select(anyOf(kStatuses), state.get('f.status', ''), (v) => change({ 'f.status': v }), { id: 'filter-status' })),
-      el('label', {}, 'Outcome ', select(anyOf(kOutcomes), state.get('f.outcome', ''), (v) => change({ 'f.outcome': v }), { id: 'filter-outcome' })),
+      el('label', {}, 'Status ', select(anyOf(kStatuses), state.get('f.status', ''),
+        (v) => change({ 'f.status': v }), { id: 'filter-status' })),
+      el('label', {}, 'Outcome ', select(anyOf(kOutcomes), state.get('f.outcome', ''),
+        (v) => change({ 'f.outcome': v }), { id: 'filter-outcome' })),
       axes.map((axis) => el('label', {}, `${names.label(axis.name)} `,
-        select(anyOf(axis.values.map(valueKey), axis.values.map((v) => formatNumber(v, 4))), state.get(`f.axis.${axis.name}`, ''),
+        select(anyOf(axis.values.map(valueKey), axis.values.map((v) => formatNumber(v, 4))),
+          state.get(`f.axis.${axis.name}`, ''),
           (v) => change({ [`f.axis.${axis.name}`]: v }), { dataset: { filterAxis: axis.name } }))));
   }
 
@@ -97,9 +100,11 @@ export function createCaseTable({ state, studyId }) {
     replaceChildren(holder, table(columns(axes, names), result.items));
     const first = result.total === 0 ? 0 : page * kPageSize + 1;
     replaceChildren(pager,
-      el('button', { id: 'page-previous', disabled: page === 0, onclick: () => change({ page: page - 1 || null }) }, '← previous'),
+      el('button', { id: 'page-previous', disabled: page === 0, onclick: () => change({ page: page - 1 || null }) },
+        '← previous'),
       el('span', { id: 'page-range' }, `${first}–${page * kPageSize + result.items.length} of ${result.total}`),
-      el('button', { id: 'page-next', disabled: (page + 1) * kPageSize >= result.total, onclick: () => change({ page: page + 1 }) }, 'next →'));
+      el('button', { id: 'page-next', disabled: (page + 1) * kPageSize >= result.total,
+        onclick: () => change({ page: page + 1 }) }, 'next →'));
     if ((page + 1) * kPageSize < result.total) askAhead(pageUrl(page + 1));
   }
   // Drops the pages asked for ahead (the study's cases changed).

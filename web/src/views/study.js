@@ -74,7 +74,8 @@ function controls(state, grid, names, onChange) {
   const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
     .concat(derivedXChoices(grid).map((name) => ({ name })));
   const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${names.label(axis.name)} `,
-    select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]), state.get(`s.${axis.name}`, valueKey(axis.values[0])),
+    select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]),
+      state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
   return el('div', { class: 'controls', id: 'plot-controls' },
     el('label', {}, 'Outcome ', select(kOutcomes.map((o) => [o, o]), state.get('outcome', 'break-up'),

@@ -62,10 +62,10 @@ function scalingLines(fits, names) {
 
 export function createCorrelationsPanel() {
   const body = el('div');
-  const note = el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the dose; ' +
-    'critical values where the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood intervals ' +
-    `(docs/CORRELATIONS.md). ⚠: the estimate lies outside the tested range of the dose, or its interval reaches more ` +
-    `than ${kFarBeyond} times beyond it.`);
+  const note = el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the ' +
+    'dose; critical values where the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood ' +
+    'intervals (docs/CORRELATIONS.md). ⚠: the estimate lies outside the tested range of the dose, or its interval ' +
+    `reaches more than ${kFarBeyond} times beyond it.`);
   const node = el('section', { class: 'panel', id: 'panel-correlations', hidden: true },
     el('h2', {}, 'Correlations'), body, note);
 

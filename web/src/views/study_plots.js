@@ -69,7 +69,8 @@ function createPanels() {
 // Measured curves of the series axes' groups (series.js curvesAlong), coloured by group, each the
 // measured member of its group in the legend (chart_legend.js).
 function measuredGroups(curves, styleLabel) {
-  return colourGroups(curves).map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
+  return colourGroups(curves)
+    .map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
 }
 
 // The measured crossings as the service computes them (correlations.js observedCurves).
