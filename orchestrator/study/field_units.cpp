@@ -30,11 +30,12 @@ struct CaseField {
 constexpr bool kLog = true;
 constexpr bool kLinear = false;
 
-// The fields of schemas/case.schema.json with a unit, and the numbers a study sweeps most that have
-// none ("1"); every other field is a count, a ratio, a flag or a name. A field of one system only
+// The fields of schemas/case.schema.json with a unit, and the numbers, flags and names a study sweeps
+// most that have none ("1"; the export writes "1" for any flag or name); every other field is
+// labelled by its pointer. A field of one system only
 // has an empty unit in the other. Log scale for the fields that span decades (speeds, stiffnesses,
 // sizes, adhesion, time steps); linear for angles, ratios in [0, 1] and dimensions near 2.
-constexpr std::array<CaseField, 28> kCaseFields{{
+constexpr std::array<CaseField, 30> kCaseFields{{
     {"/impact/speed", "impact speed v₀", "v₀", kLog, "d/tau", "m/s"},
     {"/impact/angle", "impact angle", "θ", kLinear, "deg", "deg"},
     {"/impact/gap", "initial gap to the wall", "gap", kLinear, "d", "d"},
@@ -44,6 +45,7 @@ constexpr std::array<CaseField, 28> kCaseFields{{
     {"/material/diameter", "primary diameter d", "d", kLog, "", "m", "d"},
     {"/material/poisson_ratio", "Poisson's ratio ν", "ν", kLinear, kDimensionless, kDimensionless},
     {"/material/gamma_over_kn", "γ/k_n", "γ/k_n", kLog, kDimensionless, kDimensionless},
+    {"/wall/adhesive", "adhesive wall", "adhesive", kLinear, kDimensionless, kDimensionless},
     {"/wall/material/youngs_modulus", "wall's Young's modulus", "E_wall", kLog, "", "Pa", "m/(d tau^2)"},
     {"/wall/material/surface_energy", "wall's surface energy", "γ_wall", kLog, "", "J/m^2", "m/tau^2"},
     {"/model/friction", "friction coefficient μ", "μ", kLinear, kDimensionless, kDimensionless},
@@ -59,6 +61,7 @@ constexpr std::array<CaseField, 28> kCaseFields{{
     {"/run/time_step", "time step Δt", "Δt", kLog, "tau", "tau"},
     {"/run/settle/quiet_window", "settling quiet window", "t_quiet", kLinear, "tau", "tau"},
     {"/cluster/file/default_radius", "default primary radius", "r", kLinear, "d", "d"},
+    {"/cluster/generator/method", "cluster generator", "generator", kLinear, kDimensionless, kDimensionless},
     {"/cluster/generator/primaries", "primaries N", "N", kLog, kDimensionless, kDimensionless},
     {"/cluster/generator/fractal_dimension", "fractal dimension D_f", "D_f", kLinear, kDimensionless, kDimensionless},
     {"/cluster/generator/prefactor", "fractal prefactor k_f", "k_f", kLinear, kDimensionless, kDimensionless},

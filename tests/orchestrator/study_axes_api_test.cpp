@@ -77,17 +77,19 @@ const Json& axis_named(const Json& axes, const std::string& name) {
   throw std::logic_error("unreachable");
 }
 
-// The default study (SI) on two speeds and N = 8, with a friction axis (a field without an alias)
-// and a wall flag (a field the table does not describe).
+// The default study (SI) on two speeds and N = 8, with a friction axis (a field without an alias),
+// its two walls (a flag) and a classification threshold (a field the table does not describe).
 Json physical_grid_study() {
   std::ifstream file(std::string(AEROBREAK_SOURCE_DIR) + "/studies/default.study.json");
   Json study = Json::parse(file);
   study["name"] = "axes of a grid study";
   study["base"]["model"].erase("friction");
+  study["base"].erase("classification");
   study["axes"] = {{"impact_speed", {{"values", {8, 12}}}},
                    {"primaries", {{"values", {8}}}},
                    {"/model/friction", {{"values", {0.3}}}},
-                   {"/wall/adhesive", {{"values", {true, false}}}}};
+                   {"/wall/adhesive", {{"values", {true, false}}}},
+                   {"/classification/largest_fragment_share", {{"values", {0.9}}}}};
   study["replicates"] = {{"count", 1}, {"seed", 1}};
   return study;
 }
@@ -120,7 +122,7 @@ TEST_CASE("A study's answers describe its axes, grid and search, as schemas/open
   const std::string search_path = "/api/studies/" + std::to_string(search_id);
 
   const Json grid_axes = service.get(grid_path).at("axes");
-  REQUIRE(grid_axes.size() == 4);
+  REQUIRE(grid_axes.size() == 5);
   CHECK(grid_axes[0] == Json{{"name", "impact_speed"},
                              {"pointer", "/impact/speed"},
                              {"alias", "impact_speed"},
@@ -140,12 +142,16 @@ TEST_CASE("A study's answers describe its axes, grid and search, as schemas/open
   CHECK(friction.at("alias") == nullptr);
   CHECK(friction.at("label") == "friction coefficient μ");
   CHECK(friction.at("log_scale") == false);
-  const Json& wall = axis_named(grid_axes, "/wall/adhesive");  // not in the table: its name, no unit
-  CHECK(wall.at("label") == "/wall/adhesive");
-  CHECK(wall.at("symbol") == "/wall/adhesive");
+  const Json& wall = axis_named(grid_axes, "/wall/adhesive");
+  CHECK(wall.at("label") == "adhesive wall");
   CHECK(wall.at("unit") == nullptr);
-  CHECK(wall.at("log_scale") == false);
   CHECK(wall.at("values") == Json::array({true, false}));
+  const std::string threshold = "/classification/largest_fragment_share";
+  const Json& unknown = axis_named(grid_axes, threshold);  // not in the table: its name, no unit
+  CHECK(unknown.at("label") == threshold);
+  CHECK(unknown.at("symbol") == threshold);
+  CHECK(unknown.at("unit") == nullptr);
+  CHECK(unknown.at("log_scale") == false);
 
   const Json search_axes = service.get(search_path).at("axes");
   REQUIRE(search_axes.size() == 2);

@@ -57,13 +57,14 @@ TEST_CASE("An axis is described by its alias or pointer, in its study's unit sys
   CHECK(describe_axis("/impact/angle", "mixed").unit == "deg");              // the same in both systems
   CHECK(describe_axis("/material/youngs_modulus", "reduced").unit.empty());  // a physical field
   CHECK(describe_axis("/material/youngs_modulus", "physical").unit == "Pa");
-  const AxisDescription unknown = describe_axis("/wall/adhesive", "physical");
+  const AxisDescription unknown = describe_axis("/classification/largest_fragment_share", "physical");
   CHECK(unknown.alias.empty());
-  CHECK(unknown.label == "/wall/adhesive");
-  CHECK(unknown.symbol == "/wall/adhesive");
+  CHECK(unknown.label == "/classification/largest_fragment_share");
+  CHECK(unknown.symbol == "/classification/largest_fragment_share");
   CHECK(unknown.unit.empty());
   CHECK_FALSE(unknown.log_scale);
-  CHECK(describe_axis("generator", "reduced").label == "generator");  // an alias without a table row
+  CHECK(describe_axis("generator", "reduced").label == "cluster generator");
+  CHECK(describe_axis("/wall/adhesive", "physical").label == "adhesive wall");
 }
 
 // The pooled models take gamma/k_n and N in log, D_f and the angle linearly (docs/CORRELATIONS.md):
