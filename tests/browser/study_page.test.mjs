@@ -374,6 +374,9 @@ test('the correlations service: fitted curves with bands over the points, critic
     assert.ok(far.length > 0, 'three speeds, three replicates: some critical value is not pinned down');
     assert.equal(await page.locator('#correlations-warnings li').count(), far.length);
     assert.equal(await page.locator('#correlations-table .warning-mark').count(), far.length);
+    // The scaling of v50 names N by the symbol the service gives the axis, its groups by their labels.
+    assert.match(await page.locator('#correlations-scaling').textContent(),
+      /Scaling of v50 at γ\/k_n = 0\.001 \(\w+\): v50 ∝ N\^-?[\d.]+(e-?\d+)? \[/);
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
   });

@@ -51,7 +51,7 @@ function warningLines(found, names, doseUnit) {
 function scalingLines(fits, names) {
   const lines = fits.filter((fit) => fit.exponents && Object.keys(fit.exponents).length > 0).map((fit) => {
     const terms = Object.entries(fit.exponents).map(([axis, e]) =>
-      `${names.label(axis)}^${formatNumber(e.estimate)} [${intervalText(e.ci95)}]`);
+      `${names.symbol(axis)}^${formatNumber(e.estimate)} [${intervalText(e.ci95)}]`);
     const where = groupText(fit.group || {}, names);
     return el('p', { class: 'scaling' },
       `Scaling of v50${where ? ` at ${where}` : ''} (${fit.status}): v50 ∝ ${terms.join(' · ')} ` +
