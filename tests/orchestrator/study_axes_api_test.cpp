@@ -8,15 +8,10 @@
 #include <set>
 
 #include "engine/impact/json_schema.hpp"
-#include "tests/orchestrator/service_process.hpp"
+#include "tests/orchestrator/synthetic_service.hpp"
 
 namespace aerobreak::testing {
 namespace {
-
-Json openapi() {
-  std::ifstream in(std::filesystem::path(AEROBREAK_SOURCE_DIR) / "schemas" / "openapi.json");
-  return Json::parse(in);
-}
 
 // `node` with every "#/components/schemas/X" reference turned into "#/$defs/X", collecting the X.
 void rewrite_references(Json& node, std::set<std::string>& named) {
@@ -112,10 +107,7 @@ Json reduced_search_study() {
 
 TEST_CASE("A study's answers describe its axes, grid and search, as schemas/openapi.json says", "[service][axes]") {
   ScratchDirectory scratch("study-axes");
-  ::setenv("AEROBREAK_SYNTHETIC_RANKS", "4", 1);
-  ::setenv("AEROBREAK_SYNTHETIC_DELAY", "0", 1);
-  ServiceProcess service(scratch.path(),
-                         {"--launcher", "direct", "--ranks", "1", "--worker-program", AEROBREAK_SYNTHETIC_WORKER});
+  ServiceProcess service(scratch.path(), synthetic_worker_options());
   const auto grid_id = submit(service, physical_grid_study()).at("id").get<std::int64_t>();
   const auto search_id = submit(service, reduced_search_study()).at("id").get<std::int64_t>();
   const std::string grid_path = "/api/studies/" + std::to_string(grid_id);
