@@ -3,7 +3,8 @@
 // for, shows the service's label and unit ("impact angle (deg)") in the axes table, the x and
 // slice choosers, the plots and the case table, plots it in linear scale where the speed is in log
 // scale, names the fragment series by the speed's symbol and unit ("v₀ = 0.3 d/τ"), and the case
-// page names the grid point's axes the same way.
+// page names the grid point's axes the same way. A search study's axes table gives its searched
+// axis's range, not every value the search ran.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPage, serviceAndBrowser, smallStudy, withScreenshot } from './support.mjs';
@@ -70,6 +71,27 @@ test('an axis the page has no table of: label, unit and scale from the service',
     await page.locator('#case-title').waitFor();
     const gridPoint = await page.locator('dt:text-is("grid point") + dd').textContent();
     assert.match(gridPoint, /^impact speed v₀ \(d\/τ\) = [\d.]+, impact angle \(deg\) = (0|30)$/);
+    assert.deepEqual(page.problems, []);
+  });
+});
+
+test("a search study's axes table: the searched axis by its range and the values run", async () => {
+  const page = await openPage(browser, service);
+  await withScreenshot(page, 'axes-search', async () => {
+    const study = smallStudy('search', { speeds: [0.01], primaries: [8, 16], gammas: [0.001], replicates: 1 });
+    delete study.axes.impact_speed;
+    study.search = { axis: 'impact_speed', range: { from: 0.005, to: 0.3 }, relative_width: 0.5, budget: 20,
+      batch: 10, initial: 10 };
+    const id = await service.submit(study);
+    await service.waitComplete(id);
+    const run = (await service.get(`/api/studies/${id}/grid`)).axes.find((axis) => axis.name === 'impact_speed');
+    assert.ok(run.values.length > 2);
+    await page.goto(`${service.origin}/?study=${id}`);
+    await page.waitForFunction(() => document.getElementById('plot-probability')?.uplot);
+    const rows = await page.locator('#axes-table tbody tr').evaluateAll((trs) => trs.map((tr) =>
+      [...tr.cells].map((cell) => cell.textContent)));
+    assert.deepEqual(rows, [['γ/k_n', '0.001'], ['primaries N', '8, 16'],
+      ['impact speed v₀ (d/τ)', `searched over 0.005–0.3: ${run.values.length} values run`]]);
     assert.deepEqual(page.problems, []);
   });
 });

@@ -45,11 +45,19 @@ function progressText(progress) {
   return `${progress.total} cases: ${parts.join(', ')}${rate}${left}`;
 }
 
-function axesTable(axes, names) {
+// The study's axes (GET /api/studies/ID: axes) with their values, the search's axis (docs/ADAPTIVE.md)
+// by its range and the number of values run so far (`gridAxes`, GET /api/studies/ID/grid: axes).
+function axesTable(studyAxes, gridAxes, names) {
+  const valuesText = (axis) => {
+    if (axis.role !== 'search') return axis.values.map((value) => formatNumber(value, 4)).join(', ');
+    const run = (gridAxes.find((other) => other.name === axis.name) || { values: [] }).values.length;
+    const [from, to] = axis.range.map((value) => formatNumber(value, 4));
+    return `searched over ${from}–${to}: ${run} value${run === 1 ? '' : 's'} run`;
+  };
   return table([
     { label: 'Axis', value: (axis) => names.label(axis.name) },
-    { label: 'Values', value: (axis) => axis.values.map((value) => formatNumber(value, 4)).join(', ') },
-  ], axes, { id: 'axes-table' });
+    { label: 'Values', value: valuesText },
+  ], studyAxes, { id: 'axes-table' });
 }
 
 const kUnitsText = { physical: 'SI units', reduced: 'reduced units (d, m, τ)',
@@ -146,8 +154,9 @@ export async function showStudy(view, parameters, { showNotice }) {
     else plots.draw(current.grid, names);
   }));
   const headerHolder = el('div', {}, header(study, { onCancel }));
+  const axesHolder = el('div', {}, axesTable(study.axes, grid.axes, names));
   replaceChildren(view, headerHolder,
-    el('h2', {}, 'Axes'), axesTable(grid.axes, names),
+    el('h2', {}, 'Axes'), axesHolder,
     el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tablesHolder,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
@@ -166,6 +175,7 @@ export async function showStudy(view, parameters, { showNotice }) {
     askResultParts(nextStudy);
     if (!gridChanged) return;
     caseTable.forget();
+    replaceChildren(axesHolder, axesTable(study.axes, nextGrid.axes, names));
     await Promise.all([plots.draw(nextGrid, names), caseTable.load(nextGrid.axes, names)]);
   }
   async function poll() {
