@@ -4,11 +4,22 @@
 // describe is named by its pointer, without a unit, in linear scale.
 import { unitText, withUnit } from './units.js';
 
+// What the page does with an axis follows from the case field it sets, not from how the study
+// names it (a study may write the alias impact_speed or the pointer /impact/speed,
+// docs/ORCHESTRATOR.md): an axis's identity is the service's alias of its field, or its pointer
+// where the field has none. By identity, the roles:
+//   speed   the default x, the dose of the fits, the critical speed's axis;
+//   size    one curve per value, x of the critical speed against N, the shade of a colour;
+//   series  one curve per value.
+const kRoles = { impact_speed: 'speed', primaries: 'size', gamma_over_kn: 'series' };
+// Roles whose axis gets one curve per value (the others are fixed by the slice choosers).
+export const kSeriesRoles = ['size', 'series'];
+
 // Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
-// which varies along the named axis (each point of a curve is still one grid point). Not case
+// which varies along the axis of a role (each point of a curve is still one grid point). Not case
 // fields, so named here.
 export const kDerivedX = {
-  energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean',
+  energy_per_contact: { along: 'speed', field: 'energy_per_contact_mean',
     label: 'energy per contact E_kin / (N_c E_break)', symbol: 'E/(N_c E_b)', unit: null, log_scale: true },
 };
 
@@ -22,6 +33,31 @@ export class AxisNames {
 
   describe(name) {
     return this.byName.get(name) || kDerivedX[name] || undescribed(name);
+  }
+
+  // The axis's identity: its alias ("impact_speed"), else its pointer, else its name.
+  identity(name) {
+    const axis = this.byName.get(name);
+    return axis ? axis.alias || axis.pointer || name : name;
+  }
+
+  // 'speed', 'size', 'series' or null (kRoles).
+  role(name) {
+    return kRoles[this.identity(name)] || null;
+  }
+
+  // The study's name of the axis that `reference` names by the study's name, alias or pointer
+  // (an address written for another study, or before the study named it so); null: none.
+  find(reference) {
+    if (this.byName.has(reference)) return reference;
+    for (const [name, axis] of this.byName) if (axis.alias === reference || axis.pointer === reference) return name;
+    return null;
+  }
+
+  // The study's name of its axis with `role` ('speed'); null: none.
+  withRole(role) {
+    for (const name of this.byName.keys()) if (this.role(name) === role) return name;
+    return null;
   }
 
   // "impact speed v₀ (m/s)": the label with its unit, if it has one.

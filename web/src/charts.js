@@ -36,11 +36,11 @@ function lighter(color, share) {
 }
 
 // Colours of curves grouped by up to two axes (curve.groupValues): one hue per value of one axis
-// and, where there is a second (N, say), lighter shades for its smaller values; a curve keeps its
-// colour in every plot of the page.
-export function colourGroups(curves) {
+// and, where there is a second (`shadeFirst` where it is one of the two, N say), lighter shades
+// for its smaller values; a curve keeps its colour in every plot of the page.
+export function colourGroups(curves, shadeFirst = null) {
   const keys = Object.keys((curves[0] || {}).groupValues || {});
-  const shadeAxis = keys.length === 2 ? (keys.includes('primaries') ? 'primaries' : keys[0]) : null;
+  const shadeAxis = keys.length === 2 ? (keys.includes(shadeFirst) ? shadeFirst : keys[0]) : null;
   const hueAxis = keys.find((key) => key !== shadeAxis);
   const values = (axis) => [...new Set(curves.map((curve) => JSON.stringify(curve.groupValues[axis])))].sort((a, b) =>
     (JSON.parse(a) < JSON.parse(b) ? -1 : 1));

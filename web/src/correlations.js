@@ -9,8 +9,13 @@
 import { ApiError, getJson } from './api.js';
 import { conditionKey, observedCriticalCurves, valueKey } from './series.js';
 
-// The dose of a fit for each choice of x (series.js).
-const kDoseOfX = { impact_speed: 'impact_speed', energy_per_contact: 'energy_per_contact' };
+// The dose of the fits along x (series.js): the impact speed along the axis with the role of the
+// speed, whatever the study calls it (axis_names.js AxisNames `names`), the energy per contact along
+// that; null along any other axis.
+export function doseOf(xAxis, names) {
+  if (names.role(xAxis) === 'speed') return 'impact_speed';
+  return xAxis === 'energy_per_contact' ? 'energy_per_contact' : null;
+}
 // The levels whose crossings are the critical values, and how each is drawn against N.
 export const kLevels = [0.1, 0.5, 0.9];
 const kLevelDashes = { 0.1: 'dashed', 0.5: 'solid', 0.9: 'dotted' };
@@ -51,15 +56,15 @@ export class Correlations {
   }
 
   // The per-group fits of `outcome` against the dose of `xAxis` in `slice`; [] when x has no fits.
-  groupFits(outcome, xAxis, slice) {
-    const dose = kDoseOfX[xAxis];
+  groupFits(outcome, xAxis, slice, names) {
+    const dose = doseOf(xAxis, names);
     if (!dose) return [];
     return this.summary.fits.filter((fit) => isGroupFit(fit, outcome, dose) && inSlice(fit.group, slice));
   }
 
   // One dashed curve with its band per measured curve (series.js curvesAlong) that has a fit.
-  async fittedCurves(measured, { outcome, xAxis, slice }) {
-    const fits = this.groupFits(outcome, xAxis, slice);
+  async fittedCurves(measured, { outcome, xAxis, slice, names }) {
+    const fits = this.groupFits(outcome, xAxis, slice, names);
     const pairs = measured
       .map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
       .filter(({ fit }) => fit);
@@ -77,11 +82,11 @@ export class Correlations {
   // in `groupValues`), so that a condition's measured and fitted series share a colour and an
   // entry of the legend. Axes named in `names` (axis_names.js AxisNames).
   criticalCurves(outcome, xAxis, slice, names) {
+    const size = names.withRole('size');
     const series = new Map();
-    for (const fit of this.groupFits(outcome, xAxis, slice)) {
-      if (!('primaries' in fit.group)) continue;
-      const { primaries, ...rest } = fit.group;
-      const others = Object.entries(rest).filter(([axis]) => !(axis in slice));
+    for (const fit of this.groupFits(outcome, xAxis, slice, names)) {
+      if (!size || !(size in fit.group)) continue;
+      const others = Object.entries(fit.group).filter(([axis]) => axis !== size && !(axis in slice));
       for (const critical of fit.critical || []) {
         if (typeof critical.estimate !== 'number') continue;
         const level = levelName(critical.level, fit.dose);
@@ -93,7 +98,7 @@ export class Correlations {
           styleLabel: `fitted ${level}${critical.level === 0.5 ? ', band: 95 % interval' : ''}`,
           dash: kLevelDashes[critical.level], points: [] });
         const [lo, hi] = critical.level === 0.5 && critical.ci95 ? critical.ci95 : [null, null];
-        series.get(key).points.push({ x: primaries, y: critical.estimate, lo, hi });
+        series.get(key).points.push({ x: fit.group[size], y: critical.estimate, lo, hi });
       }
     }
     return [...series.values()].map((curve) => ({ ...curve, points: curve.points.sort((a, b) => a.x - b.x) }));
@@ -102,7 +107,7 @@ export class Correlations {
   // The measured crossings of 0.5 against N, as the service computes them from each group's
   // measured proportions (observed_crossings of the fits along x), one series per other series axis.
   observedCurves(outcome, xAxis, slice, names) {
-    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice, names);
+    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice, names), slice, names);
   }
 
   // The scaling fits of v50 for `outcome` (exponents per axis) whose group lies in the slice.

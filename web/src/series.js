@@ -1,38 +1,41 @@
-// Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM.
-import { kDerivedX } from './axis_names.js';
+// Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM. Axes
+// are keyed by the study's names for them (as grid_point and the fits' groups key them) and take
+// their roles from `names` (axis_names.js AxisNames), by the field each sets.
+import { kDerivedX, kSeriesRoles } from './axis_names.js';
 
-// Axes that get one curve per value (the others are fixed by the slice choosers).
-export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
+// Whether the axis gets one curve per value (the others are fixed by the slice choosers).
+const isSeriesAxis = (name, names) => kSeriesRoles.includes(names.role(name));
 export const valueKey = (value) => JSON.stringify(value);
 // The same key for the same axis values in whatever order: a condition of the series axes.
 export const conditionKey = (values) => JSON.stringify(Object.entries(values)
   .sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0)));
 
 // The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
-export const alongAxis = (xAxis) => (kDerivedX[xAxis] ? kDerivedX[xAxis].along : xAxis);
+export const alongAxis = (xAxis, names) => (kDerivedX[xAxis] ? names.withRole(kDerivedX[xAxis].along) : xAxis);
 export const xValueOf = (xAxis) => (kDerivedX[xAxis]
   ? (row) => row[kDerivedX[xAxis].field] ?? null : (row) => row.grid_point[xAxis]);
 
 // The derived quantities the grid offers along x: those whose axis is swept and that some grid
 // point has a value of.
-export function derivedXChoices(grid) {
+export function derivedXChoices(grid, names) {
   return Object.entries(kDerivedX)
-    .filter(([, { along, field }]) => grid.axes.some((axis) => axis.name === along && axis.values.length > 1) &&
+    .filter(([name, { field }]) => grid.axes.some((axis) => axis.name === alongAxis(name, names) &&
+      axis.values.length > 1) &&
       grid.grid_points.some((row) => typeof row[field] === 'number'))
     .map(([name]) => name);
 }
 
-// The axis along x: impact_speed when swept, else the first numeric axis with several values.
-export function defaultXAxis(axes) {
+// The axis along x: the impact speed when swept, else the first numeric axis with several values.
+export function defaultXAxis(axes, names) {
   const swept = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'));
-  const speed = swept.find((axis) => axis.name === 'impact_speed');
+  const speed = swept.find((axis) => names.role(axis.name) === 'speed');
   return (speed || swept[0] || {}).name || null;
 }
 
 // Axes with several values other than x and the series axes: each fixed to one value.
-export function sliceAxes(axes, xAxis) {
-  const along = alongAxis(xAxis);
-  return axes.filter((axis) => axis.values.length > 1 && axis.name !== along && !kSeriesAxes.includes(axis.name));
+export function sliceAxes(axes, xAxis, names) {
+  const along = alongAxis(xAxis, names);
+  return axes.filter((axis) => axis.values.length > 1 && axis.name !== along && !isSeriesAxis(axis.name, names));
 }
 
 export function inSlice(gridPoint, slice) {
@@ -48,9 +51,9 @@ function curveLabel(groupValues, names) {
 // One curve per combination of the series axes, among the grid points in the slice: points
 // {x, y, lo, hi} sorted by x, from yOf(row) = {y, lo, hi} or null (no value there), named in `names`.
 export function curvesAlong(rows, { axes, xAxis, slice, yOf, names }) {
-  const along = alongAxis(xAxis);
+  const along = alongAxis(xAxis, names);
   const xOf = xValueOf(xAxis);
-  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along &&
+  const seriesAxes = axes.filter((axis) => isSeriesAxis(axis.name, names) && axis.name !== along &&
     axis.values.length > 1);
   const curves = new Map();
   for (const row of rows) {
@@ -87,15 +90,16 @@ export const meanOf = (quantity) => (row) => {
 // group's fit, which the fitting library computes): one series per value of the series axes other
 // than N (those outside the slice), named in `names`.
 export function observedCriticalCurves(fits, slice, names, level = 0.5) {
+  const size = names.withRole('size');
   const series = new Map();
   for (const fit of fits) {
     const crossing = (fit.observed_crossings || []).find((c) => c.level === level);
-    if (!('primaries' in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
+    if (!size || !(size in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
     const rest = Object.fromEntries(Object.entries(fit.group)
-      .filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
+      .filter(([axis]) => axis !== size && !(axis in slice)));
     const key = valueKey(rest);
     if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest, names), points: [] });
-    series.get(key).points.push({ x: fit.group.primaries, y: crossing.dose });
+    series.get(key).points.push({ x: fit.group[size], y: crossing.dose });
   }
   const sorted = [...series.values()];
   for (const curve of sorted) curve.points.sort((a, b) => a.x - b.x);
@@ -105,7 +109,7 @@ export function observedCriticalCurves(fits, slice, names, level = 0.5) {
 // Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
 // per result, named in `names`.
 export function fragmentCurves(response, xAxis, names) {
-  const along = alongAxis(xAxis);
+  const along = alongAxis(xAxis, names);
   return response.grid_points
     .filter((point) => point.results > 0)
     .sort((a, b) => a.grid_point[along] - b.grid_point[along])

@@ -34,6 +34,19 @@ class ViewState {
     for (const [name, value] of this.parameters) if (name.startsWith(prefix)) found[name.slice(prefix.length)] = value;
     return found;
   }
+  // Names each axis in the address (x, s.AXIS, f.axis.AXIS) as the study does, whether the address
+  // names it so, by its alias or by its pointer (axis_names.js AxisNames.find): an address keeps
+  // working whichever way the study and the address name them.
+  nameAxesAs(names) {
+    const renamed = (reference) => names.find(reference) || reference;
+    const before = this.parameters.toString();
+    this.parameters = new URLSearchParams([...this.parameters].map(([name, value]) => {
+      if (name === 'x') return [name, renamed(value)];
+      const prefix = ['s.', 'f.axis.'].find((p) => name.startsWith(p));
+      return prefix ? [prefix + renamed(name.slice(prefix.length)), value] : [name, value];
+    }));
+    if (this.parameters.toString() !== before) history.replaceState(null, '', `/?${this.parameters.toString()}`);
+  }
 }
 
 function progressText(progress) {
@@ -78,10 +91,10 @@ function header(study, { onCancel }) {
 
 function controls(state, grid, names, onChange) {
   const { axes } = grid;
-  const xAxis = state.get('x', defaultXAxis(axes));
+  const xAxis = state.get('x', defaultXAxis(axes, names));
   const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
-    .concat(derivedXChoices(grid).map((name) => ({ name })));
-  const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${names.label(axis.name)} `,
+    .concat(derivedXChoices(grid, names).map((name) => ({ name })));
+  const slices = sliceAxes(axes, xAxis, names).map((axis) => el('label', {}, `${names.label(axis.name)} `,
     select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]),
       state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
@@ -128,10 +141,15 @@ export async function showStudy(view, parameters, { showNotice }) {
   const state = new ViewState(parameters);
   const id = Number(state.get('study'));
   const caseTable = createCaseTable({ state, studyId: id });
-  const firstCases = caseTable.fetchPage();
-  firstCases.catch(() => {});
+  // The first page of cases is asked for with the study, unless the address filters it by an axis
+  // (which the service knows by the study's name for it only, known with the study).
+  const filtered = Object.keys(state.withPrefix('f.axis.')).length > 0;
+  const earlyCases = filtered ? null : caseTable.fetchPage();
+  earlyCases?.catch(() => {});
   const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
   const names = new AxisNames(study.axes);
+  state.nameAxesAs(names);
+  const firstCases = earlyCases || caseTable.fetchPage();
   let current = { study, grid };
   let timer = null;
   let stopped = false;

@@ -3,7 +3,7 @@
 // value the data do not pin down (its estimate outside the tested doses, or its interval reaching
 // far beyond them), and the scaling exponents of v50 (docs/CORRELATIONS.md).
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
-import { extrapolations, kFarBeyond, kLevels, levelName } from '../correlations.js';
+import { doseOf, extrapolations, kFarBeyond, kLevels, levelName } from '../correlations.js';
 import { unitText } from '../units.js';
 
 function interval(critical, warning) {
@@ -12,10 +12,10 @@ function interval(critical, warning) {
   return warning ? [text, ' ', el('span', { class: 'warning-mark', title: warning }, '⚠')] : text;
 }
 
-// The table's columns; axes named in `names` (axis_names.js AxisNames), the critical values in the
-// unit of the dose's axis.
-function criticalColumns(shownAxes, { names, dose }, warningOf) {
-  const unit = names.unit(dose) ? ` (${unitText(names.unit(dose))})` : '';
+// The table's columns; axes named in `names` (axis_names.js AxisNames), the critical values (named
+// by the fits' `dose`) in the unit of the axis along x.
+function criticalColumns(shownAxes, { names, xAxis, dose }, warningOf) {
+  const unit = names.unit(xAxis) ? ` (${unitText(names.unit(xAxis))})` : '';
   return [
     ...shownAxes.map((axis) => ({ label: names.label(axis), value: (fit) => formatNumber(fit.group[axis], 4),
       numeric: true })),
@@ -73,7 +73,7 @@ export function createCorrelationsPanel() {
   function draw(correlations, { outcome, xAxis, slice, names }) {
     node.hidden = !correlations;
     if (!correlations) return [];
-    const fits = correlations.groupFits(outcome, xAxis, slice);
+    const fits = correlations.groupFits(outcome, xAxis, slice, names);
     const found = extrapolations(fits);
     const warningOf = (fit, level) => {
       const entry = found.find((f) => f.fit === fit && f.level === level);
@@ -83,7 +83,8 @@ export function createCorrelationsPanel() {
     const shownAxes = fits.length ? Object.keys(fits[0].group).filter((axis) => !(axis in slice)) : [];
     replaceChildren(body, fits.length === 0 ? el('p', { class: 'note' },
       `No fit of ${outcome} along ${names.label(xAxis)}.`)
-      : table(criticalColumns(shownAxes, { names, dose: xAxis }, warningOf), fits, { id: 'correlations-table' }),
+      : table(criticalColumns(shownAxes, { names, xAxis, dose: doseOf(xAxis, names) }, warningOf), fits,
+        { id: 'correlations-table' }),
     warningLines(found, names, doseUnit), scalingLines(correlations.scalings(outcome, slice), names));
     return found;
   }

@@ -11,7 +11,7 @@ import {
   meanOf, probabilityOf, sliceAxes, valueKey,
 } from '../series.js';
 import { withUnit } from '../units.js';
-import { levelName } from '../correlations.js';
+import { doseOf, levelName } from '../correlations.js';
 import { createFlags } from './study_flags.js';
 import { createCorrelationsPanel } from './study_correlations.js';
 
@@ -30,8 +30,8 @@ function panel(id, title, note) {
   return { node, chart, noteNode, extra, heading };
 }
 
-function currentSlice(state, axes, xAxis) {
-  return Object.fromEntries(sliceAxes(axes, xAxis)
+function currentSlice(state, axes, xAxis, names) {
+  return Object.fromEntries(sliceAxes(axes, xAxis, names)
     .map((axis) => [axis.name, state.get(`s.${axis.name}`, valueKey(axis.values[0]))]));
 }
 
@@ -66,34 +66,35 @@ function createPanels() {
   };
 }
 
-// Measured curves of the series axes' groups (series.js curvesAlong), coloured by group, each the
-// measured member of its group in the legend (chart_legend.js).
-function measuredGroups(curves, styleLabel) {
-  return colourGroups(curves)
+// Measured curves of the series axes' groups (series.js curvesAlong), coloured by group (shaded by
+// N), each the measured member of its group in the legend (chart_legend.js).
+function measuredGroups(curves, styleLabel, names) {
+  return colourGroups(curves, names.withRole('size'))
     .map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
 }
 
-// The measured crossings as the service computes them (correlations.js observedCurves).
-function measuredCritical(observed, xAxis) {
+// The measured crossings as the service computes them (correlations.js observedCurves), named by the
+// fits' dose (v50, E50).
+function measuredCritical(observed, dose) {
   return observed.map((curve) => ({
     ...curve, style: 'points', group: conditionKey(curve.groupValues), groupLabel: curve.label,
-    styleLabel: `measured ${levelName(0.5, xAxis)}`,
-    label: `measured ${levelName(0.5, xAxis)}${curve.label === 'all' ? '' : `, ${curve.label}`}` }));
+    styleLabel: `measured ${levelName(0.5, dose)}`,
+    label: `measured ${levelName(0.5, dose)}${curve.label === 'all' ? '' : `, ${curve.label}`}` }));
 }
 
 // The critical value along x against N, in the unit of the x axis (the service's description).
 function drawCritical(critical, view, observed, fitted) {
   const { names, xAxis } = view;
-  const hasN = view.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) &&
-    alongAxis(xAxis) !== 'primaries';
+  const size = names.withRole('size');
+  const hasN = view.axes.some((axis) => axis.name === size && axis.values.length > 1) &&
+    alongAxis(xAxis, names) !== size;
   critical.node.hidden = !hasN;
   if (!hasN) return;
-  const speed = xAxis === 'impact_speed';
+  const speed = names.role(xAxis) === 'speed';
   critical.heading.textContent = `Critical ${speed ? 'speed' : names.label(xAxis)} of ${view.outcome} against N`;
-  const points = measuredCritical(observed, xAxis);
-  colourGroups([...points, ...fitted]);
-  plotCurves(critical.chart, [...points, ...fitted], { xLabel: names.label('primaries'),
-    xLog: names.logScale('primaries'),
+  const points = measuredCritical(observed, doseOf(xAxis, names));
+  colourGroups([...points, ...fitted], size);
+  plotCurves(critical.chart, [...points, ...fitted], { xLabel: names.label(size), xLog: names.logScale(size),
     yLabel: withUnit(`critical ${speed ? 'speed' : names.symbol(xAxis)}`, names.unit(xAxis)),
     yLog: true, fitIntervals: false });
   critical.chart.dataset.fitted = fitted.length;
@@ -134,7 +135,7 @@ function createOutcomePlots({ probability, critical }, correlationsPanel) {
     if (mine !== drawing) return;
     const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
     const measured = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) }),
-      'measured, whiskers: 95 % interval');
+      'measured, whiskers: 95 % interval', view.names);
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
     const drawBoth = async (fitted, fittedCritical, observed) => {
@@ -180,7 +181,7 @@ export function createPlots({ state }) {
       await nextTask();
       if (mine !== drawing) return;
       const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
-        'mean, whiskers: 95 % interval');
+        'mean, whiskers: 95 % interval', view.names);
       plotCurves(chart, curves, { xLabel: view.xLabel, xLog: view.xLog, yLabel, bounds, empty });
     }
     await nextTask();
@@ -196,8 +197,9 @@ export function createPlots({ state }) {
 
   // `names`: the study's axes as the service describes them (axis_names.js AxisNames).
   function currentView(grid, names) {
-    const xAxis = state.get('x', defaultXAxis(grid.axes));
-    return { outcome: state.get('outcome', 'break-up'), xAxis, slice: currentSlice(state, grid.axes, xAxis), names,
+    const xAxis = state.get('x', defaultXAxis(grid.axes, names));
+    return { outcome: state.get('outcome', 'break-up'), xAxis, slice: currentSlice(state, grid.axes, xAxis, names),
+      names,
       xLabel: names.label(xAxis), xLog: names.logScale(xAxis), axes: grid.axes };
   }
 
