@@ -174,6 +174,26 @@ test('a bad study shows its errors at the fields their pointers name', async () 
   });
 });
 
+test('a study naming its axes by pointer: the form shows and edits them where the study has them', async () => {
+  const page = await openPage(browser, service);
+  await withScreenshot(page, 'submit-pointer-axes', async () => {
+    await page.goto(`${service.origin}/?submit`);
+    await page.locator('#form-youngs_modulus').waitFor();
+    const study = await jsonView(page);
+    study.axes = { '/impact/speed': study.axes.impact_speed, '/wall/adhesive': study.axes['/wall/adhesive'],
+      '/cluster/generator/primaries': study.axes.primaries };
+    await page.fill('#study-json', JSON.stringify(study, null, 2));
+    assert.equal(await page.inputValue('#form-speeds'), '4, 8, 12, 16, 20, 25, 30, 40');
+    assert.equal(await page.inputValue('#form-primaries'), '32, 64');
+    await page.fill('#form-speeds', '10, 40');
+    await page.fill('#form-primaries', '8');
+    assert.deepEqual((await jsonView(page)).axes, { '/impact/speed': { values: [10, 40] },
+      '/wall/adhesive': { values: [true, false] }, '/cluster/generator/primaries': { values: [8] } });
+    assert.match(await page.textContent('#form-summary'), /^40 cases/);
+    assert.deepEqual(page.problems, []);
+  });
+});
+
 test('a study read from a file is submitted as application/json, and a running study is cancelled', async () => {
   const page = await openPage(browser, service);
   await withScreenshot(page, 'submit-cancel', async () => {

@@ -3,7 +3,7 @@
 // other fields are edited in the JSON view (submit.js), which the form follows. A material field
 // is only offered for a physical study (the reduced material is edited in the JSON view).
 import { el, replaceChildren, select } from '../dom.js';
-import { getAt, removeAt, setAt } from '../json_pointer.js';
+import { escapeToken, getAt, removeAt, setAt } from '../json_pointer.js';
 import { fieldText, kFormFields, kGeneratorFields, kWallPointer, readField, unusualValue } from './submit_fields.js';
 
 const kWalls = [[true, 'adhesive (JKR, the primaries’ material)'], [false, 'without adhesion (Hertz)']];
@@ -22,11 +22,20 @@ export function caseCount(document) {
   return sizes.reduce((product, size) => product * size, 1) * (Number(getAt(document, '/replicates/count')) || 1);
 }
 
+// Where the document keeps a field's value. An axis field's values lie under the axis's alias
+// (field.pointer, /axes/impact_speed/values) or, where the study names the axis by the pointer of
+// the case field instead (docs/ORCHESTRATOR.md), under that (/axes/~1impact~1speed/values).
+function pointerIn(document, field) {
+  if (!field.base) return field.pointer;
+  const byPointer = `/axes/${escapeToken(field.base.slice('/base'.length))}`;
+  return getAt(document, byPointer) === undefined ? field.pointer : `${byPointer}/values`;
+}
+
 // Writes a field's value; an axis replaces the one value the base may set, and the generator drops
 // the fields the new one does not take and adds those it needs.
 function writeField(document, field, value) {
   if (field.id !== 'generator') {
-    setAt(document, field.pointer, value);
+    setAt(document, pointerIn(document, field), value);
     if (field.base) removeAt(document, field.base);
     return;
   }
@@ -70,14 +79,17 @@ function showMessage(entry, error, note) {
 
 // An axis's values, or the one value the base sets; undefined for an axis given as a range.
 function valueOf(document, field) {
-  const value = getAt(document, field.pointer);
+  const value = getAt(document, pointerIn(document, field));
   if (value !== undefined || !field.base) return value;
   const base = getAt(document, field.base);
   return base === undefined ? undefined : [base];
 }
 
-const isRange = (document, field) => field.base && getAt(document, field.pointer) === undefined &&
-  getAt(document, field.pointer.slice(0, field.pointer.lastIndexOf('/'))) !== undefined;
+function isRange(document, field) {
+  const pointer = pointerIn(document, field);
+  return field.base && getAt(document, pointer) === undefined &&
+    getAt(document, pointer.slice(0, pointer.lastIndexOf('/'))) !== undefined;
+}
 
 // Shows the document's values in the form's fields (leaving alone the one being typed in), the
 // walls, the note on a reduced material and the number of cases.
@@ -163,7 +175,8 @@ export function createStudyForm({ current, changed }) {
     // Shows a message of the service at the form field whose pointer is `pointer` or lies above
     // it; false when no shown field is there.
     markViolation(pointer, message) {
-      const names = ({ field }) => pointer === field.pointer || pointer.startsWith(`${field.pointer}/`);
+      const names = ({ field }) => [field.pointer, pointerIn(current(), field)]
+        .some((at) => pointer === at || pointer.startsWith(`${at}/`));
       const entry = [...entries.values()].find(names);
       if (!entry || entry.row.hidden) return false;
       problems.add(entry.field.id);
