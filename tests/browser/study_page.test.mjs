@@ -109,7 +109,10 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
       ['measured, whiskers: 95 % interval']);
     assert.equal(probability.legend.filter((entry) => entry.group !== undefined).length, 4);
 
-    // A click on a legend entry hides its series, another shows it again.
+    // A click on a legend entry hides its series, another shows it again: once the fits are drawn,
+    // whose arrival redraws the chart (under load they can come after the click).
+    await page.waitForFunction(() => Number(document.getElementById('plot-probability').dataset.fitted) > 0, null,
+      { timeout: 60000 });
     const shown = () => page.evaluate(() => document.getElementById('plot-probability').uplot.series[1].show);
     const firstGroup = page.locator('#plot-probability .legend li[data-group]').first();
     await firstGroup.click();
