@@ -250,6 +250,16 @@ constexpr std::string_view kVersion9 = R"sql(
 ALTER TABLE cases ADD COLUMN primaries INTEGER CHECK (primaries >= 1);
 )sql";
 
+// The stored correlation documents written before a mean had its one shape (the grid-points
+// document's {n, mean, standard_error}, the retained-fraction fit's data rows) are dropped: the
+// next request fits the study again from its results (fitting/mean_estimate.hpp,
+// estimate_json.hpp), to the same fitted numbers, and stores the documents in the shape of
+// schemas/correlation.schema.json.
+constexpr std::string_view kVersion10 = R"sql(
+DELETE FROM correlation_fits;
+DELETE FROM correlation_sets;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -261,6 +271,7 @@ constexpr std::array kMigrations{
     Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
     Migration{8, "data-file paths relative to the data folder", kVersion8},
     Migration{9, "each case's N (primaries of its cluster) beside its document", kVersion9, fill_case_primaries},
+    Migration{10, "stored correlation sets dropped, to be fitted again with one shape of a mean", kVersion10},
 };
 
 int user_version(SqliteDatabase& db) {

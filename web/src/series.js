@@ -10,9 +10,10 @@ const kAxisUnits = { impact_speed: 'speed' };
 const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N', energy_per_contact: 'E/(N_c E_b)' };
 // Axes that get one curve per value (the others are fixed by the slice choosers).
 export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
-// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
-// which varies along the named axis (each point of a curve is still one grid point).
-const kDerivedX = { energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean' } };
+// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity
+// (the `mean` of its MeanEstimate), which varies along the named axis (each point of a curve is
+// still one grid point).
+const kDerivedX = { energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact' } };
 
 // An axis's name for the page, with its unit in the study's `units` (GET /api/studies/ID) if it has one.
 export const axisLabel = (name, units = {}) => withUnit(kAxisLabels[name] || name, units[kAxisUnits[name]]);
@@ -31,14 +32,14 @@ export const conditionKey = (values) => JSON.stringify(Object.entries(values)
 // The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
 export const alongAxis = (xAxis) => (kDerivedX[xAxis] ? kDerivedX[xAxis].along : xAxis);
 export const xValueOf = (xAxis) => (kDerivedX[xAxis]
-  ? (row) => row[kDerivedX[xAxis].field] ?? null : (row) => row.grid_point[xAxis]);
+  ? (row) => row[kDerivedX[xAxis].field]?.mean ?? null : (row) => row.grid_point[xAxis]);
 
 // The derived quantities the grid offers along x: those whose axis is swept and that some grid
 // point has a value of.
 export function derivedXChoices(grid) {
   return Object.entries(kDerivedX)
     .filter(([, { along, field }]) => grid.axes.some((axis) => axis.name === along && axis.values.length > 1) &&
-      grid.grid_points.some((row) => typeof row[field] === 'number'))
+      grid.grid_points.some((row) => typeof row[field]?.mean === 'number'))
     .map(([name]) => name);
 }
 
