@@ -250,12 +250,23 @@ constexpr std::string_view kVersion9 = R"sql(
 ALTER TABLE cases ADD COLUMN primaries INTEGER CHECK (primaries >= 1);
 )sql";
 
+// The N of a cluster file's cases, which their documents do not say, from their results'
+// fragments (every primary is in exactly one fragment), as a result now stores it when it comes;
+// the correlation sets fitted while N was unknown are dropped, to be fitted again on request.
+constexpr std::string_view kVersion10 = R"sql(
+DELETE FROM correlation_sets WHERE study_id IN (
+  SELECT DISTINCT sc.study_id FROM study_cases sc JOIN cases c ON c.id = sc.case_id
+  WHERE c.primaries IS NULL AND EXISTS (SELECT 1 FROM fragments f WHERE f.case_id = c.id));
+UPDATE cases SET primaries = (SELECT sum(f.primaries) FROM fragments f WHERE f.case_id = cases.id)
+WHERE primaries IS NULL AND EXISTS (SELECT 1 FROM fragments f WHERE f.case_id = cases.id);
+)sql";
+
 // The stored correlation documents written before a mean had its one shape (the grid-points
 // document's {n, mean, standard_error}, the retained-fraction fit's data rows) are dropped: the
 // next request fits the study again from its results (fitting/mean_estimate.hpp,
 // estimate_json.hpp), to the same fitted numbers, and stores the documents in the shape of
 // schemas/correlation.schema.json.
-constexpr std::string_view kVersion10 = R"sql(
+constexpr std::string_view kVersion11 = R"sql(
 DELETE FROM correlation_fits;
 DELETE FROM correlation_sets;
 )sql";
@@ -271,7 +282,8 @@ constexpr std::array kMigrations{
     Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
     Migration{8, "data-file paths relative to the data folder", kVersion8},
     Migration{9, "each case's N (primaries of its cluster) beside its document", kVersion9, fill_case_primaries},
-    Migration{10, "stored correlation sets dropped, to be fitted again with one shape of a mean", kVersion10},
+    Migration{10, "a cluster file's N from its results' fragments", kVersion10},
+    Migration{11, "stored correlation sets dropped, to be fitted again with one shape of a mean", kVersion11},
 };
 
 int user_version(SqliteDatabase& db) {

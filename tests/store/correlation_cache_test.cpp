@@ -177,7 +177,7 @@ TEST_CASE("Correlation requests that do not fit the study are refused with the r
   }
 }
 
-TEST_CASE("Sets stored before the one shape of a mean are dropped by migration 10 and fitted again",
+TEST_CASE("Sets stored before the one shape of a mean are dropped by migration 11 and fitted again",
           "[store][correlations]") {
   std::string grid_points_before, fit_before;
   std::int64_t id = 0;
@@ -192,12 +192,12 @@ TEST_CASE("Sets stored before the one shape of a mean are dropped by migration 1
     fit_before = *store.stored_fit(stored.set_id, "break-up.speed.g1");
   }
   {
-    // The store as schema version 9 left it: the set stored, the version one lower.
+    // The store as schema version 10 left it: the set stored, the version one lower.
     SqliteDatabase db(file.path());
-    db.execute("PRAGMA user_version = 9");
+    db.execute("PRAGMA user_version = 10");
   }
   Store store(file.path());
-  CHECK(store.opened_at_version() == 9);
+  CHECK(store.opened_at_version() == 10);
   const auto study = *store.study(id);
   const auto request = correlation_request(study, std::nullopt);
   CHECK_FALSE(store.stored_correlations(id, request_key(request)));
