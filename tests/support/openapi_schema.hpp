@@ -1,11 +1,12 @@
 #pragma once
-// A component of schemas/openapi.json as a JSON Schema the project's validator checks documents
-// against: it and the components it refers to become $defs, their references
-// "#/components/schemas/X" "#/$defs/X".
+// A part of schemas/openapi.json as a JSON Schema that the project's validator (draft 2020-12)
+// checks documents against: the components it reaches become $defs, their references
+// "#/components/schemas/X..." "#/$defs/X...".
 #include <fstream>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "engine/impact/json_schema.hpp"
 
@@ -17,38 +18,45 @@ inline nlohmann::ordered_json schema_file(const std::string& name) {
   return nlohmann::ordered_json::parse(file);
 }
 
-// The names of the components that `schema` refers to, added to `names` with theirs in turn.
-inline void referenced_components(const nlohmann::ordered_json& components, const nlohmann::ordered_json& schema,
-                                  std::set<std::string>& names) {
-  const std::string prefix = "#/components/schemas/";
-  if (schema.is_object())
-    for (const auto& [key, value] : schema.items()) {
-      if (key == "$ref" && value.is_string() && value.get<std::string>().starts_with(prefix)) {
-        // The component's name: a reference may lead into it ("#/components/schemas/X/properties/...").
-        const std::string path = value.get<std::string>().substr(prefix.size());
-        const std::string name = path.substr(0, path.find('/'));
-        if (names.insert(name).second) referenced_components(components, components.at(name), names);
+// `node` with every "#/components/schemas/X..." reference turned into "#/$defs/X...", collecting
+// the X (a reference may lead into a component: "#/components/schemas/X/properties/...").
+inline void rewrite_references(nlohmann::ordered_json& node, std::set<std::string>& named) {
+  constexpr std::string_view kPrefix = "#/components/schemas/";
+  if (node.is_object()) {
+    for (auto& [key, value] : node.items()) {
+      if (key == "$ref" && value.is_string() && value.get<std::string>().starts_with(kPrefix)) {
+        const std::string path = value.get<std::string>().substr(kPrefix.size());
+        named.insert(path.substr(0, path.find('/')));
+        value = "#/$defs/" + path;
       } else {
-        referenced_components(components, value, names);
+        rewrite_references(value, named);
       }
     }
-  else if (schema.is_array())
-    for (const auto& value : schema) referenced_components(components, value, names);
+  } else if (node.is_array()) {
+    for (auto& item : node) rewrite_references(item, named);
+  }
 }
 
-// `component` with the components it refers to (directly or not) as $defs.
-inline JsonSchema openapi_component(const std::string& component) {
-  const auto components = schema_file("openapi.json").at("components").at("schemas");
-  std::set<std::string> names{component};
-  referenced_components(components, components.at(component), names);
-  nlohmann::ordered_json defs = nlohmann::ordered_json::object();
-  for (const auto& name : names) defs[name] = components.at(name);
-  std::string text = defs.dump();
-  const std::string from = "#/components/schemas/", to = "#/$defs/";
-  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return JsonSchema(
-      nlohmann::ordered_json{{"$defs", nlohmann::ordered_json::parse(text)}, {"$ref", "#/$defs/" + component}});
+// `schema` (a part of the OpenAPI `description`) with the components it reaches under $defs.
+inline JsonSchema openapi_schema(const nlohmann::ordered_json& description, nlohmann::ordered_json schema) {
+  std::set<std::string> named, done;
+  rewrite_references(schema, named);
+  nlohmann::ordered_json definitions = nlohmann::ordered_json::object();
+  while (named.size() > done.size()) {
+    for (const auto& name : std::set<std::string>(named)) {
+      if (!done.insert(name).second) continue;
+      auto component = description.at("components").at("schemas").at(name);
+      rewrite_references(component, named);
+      definitions[name] = std::move(component);
+    }
+  }
+  schema["$defs"] = std::move(definitions);
+  return JsonSchema(std::move(schema));
+}
+
+// The component `name` of schemas/openapi.json.
+inline JsonSchema openapi_component(const std::string& name) {
+  return openapi_schema(schema_file("openapi.json"), {{"$ref", "#/components/schemas/" + name}});
 }
 
 }  // namespace aerobreak::testing
