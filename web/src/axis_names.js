@@ -15,11 +15,11 @@ const kRoles = { impact_speed: 'speed', primaries: 'size', gamma_over_kn: 'serie
 // Roles whose axis gets one curve per value (the others are fixed by the slice choosers).
 export const kSeriesRoles = ['size', 'series'];
 
-// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
-// which varies along the axis of a role (each point of a curve is still one grid point). Not case
-// fields, so named here.
+// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity
+// (the `mean` of its MeanEstimate `field`), which varies along the axis of a role (each point of a
+// curve is still one grid point). Not case fields, so named here.
 export const kDerivedX = {
-  energy_per_contact: { along: 'speed', field: 'energy_per_contact_mean',
+  energy_per_contact: { along: 'speed', field: 'energy_per_contact',
     label: 'energy per contact E_kin / (N_c E_break)', symbol: 'E/(N_c E_b)', unit: null, log_scale: true },
 };
 

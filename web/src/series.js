@@ -13,7 +13,7 @@ export const conditionKey = (values) => JSON.stringify(Object.entries(values)
 // The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
 export const alongAxis = (xAxis, names) => (kDerivedX[xAxis] ? names.withRole(kDerivedX[xAxis].along) : xAxis);
 export const xValueOf = (xAxis) => (kDerivedX[xAxis]
-  ? (row) => row[kDerivedX[xAxis].field] ?? null : (row) => row.grid_point[xAxis]);
+  ? (row) => row[kDerivedX[xAxis].field]?.mean ?? null : (row) => row.grid_point[xAxis]);
 
 // The derived quantities the grid offers along x: those whose axis is swept and that some grid
 // point has a value of.
@@ -21,7 +21,7 @@ export function derivedXChoices(grid, names) {
   return Object.entries(kDerivedX)
     .filter(([name, { field }]) => grid.axes.some((axis) => axis.name === alongAxis(name, names) &&
       axis.values.length > 1) &&
-      grid.grid_points.some((row) => typeof row[field] === 'number'))
+      grid.grid_points.some((row) => typeof row[field]?.mean === 'number'))
     .map(([name]) => name);
 }
 
