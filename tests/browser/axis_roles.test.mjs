@@ -2,10 +2,11 @@
 // (a study may write the alias impact_speed or the pointer /impact/speed, docs/ORCHESTRATOR.md),
 // in real Chromium: two studies alike but for how they name their axes, one by alias
 // (impact_speed, primaries) and one by pointer (/impact/speed, /cluster/generator/primaries), both
-// sweeping /wall/adhesive, show the same page: x along the impact speed, one curve per N, the
-// critical speed against N with its measured points and fitted curves, fitted curves over the
-// probabilities, the correlations table. An address that names the pointer study's axes by alias
-// (x=impact_speed, f.axis.primaries=16) still chooses them, and is rewritten to the study's names.
+// sweeping /wall/adhesive, show the same page: x along the impact speed (the energy per contact
+// offered along it), one curve per N, the critical speed against N with its measured points and
+// fitted curves, fitted curves over the probabilities, the correlations table. An address that
+// names the pointer study's axes by alias (x=primaries, s.impact_speed, f.axis.primaries) still
+// chooses them, and is rewritten to the study's names.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPage, serviceAndBrowser, smallStudy, withScreenshot } from './support.mjs';
@@ -41,6 +42,7 @@ async function roles(page, origin, id, search = '') {
     return {
       x: chosenX,
       xLabel: chart('plot-probability').uplot.axes[0].label,
+      xChoices: [...document.querySelectorAll('#choose-x option')].map((node) => node.textContent),
       slices: [...document.querySelectorAll('#plot-controls select[data-slice]')].map((node) => node.dataset.slice),
       curves: measured('plot-probability').map((curve) => curve.label).sort(),
       retainedCurves: measured('plot-retained').map((curve) => curve.label).sort(),
@@ -70,6 +72,8 @@ test('a study naming its axes by pointer: the same roles as by alias', async () 
 
     const aliasRoles = await roles(page, service.origin, byAlias);
     assert.equal(aliasRoles.x, 'impact_speed');
+    assert.deepEqual(aliasRoles.xChoices, ['impact speed v₀ (d/τ)', 'primaries N',
+      'energy per contact E_kin / (N_c E_break)']);
     assert.deepEqual(aliasRoles.curves, ['N = 8', 'N = 16'].sort());
     assert.deepEqual(aliasRoles.slices, ['/wall/adhesive']);
     assert.equal(aliasRoles.critical.hidden, false);
