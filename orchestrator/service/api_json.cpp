@@ -54,6 +54,20 @@ nlohmann::ordered_json study_axes_json(const nlohmann::ordered_json& study_docum
   return axes;
 }
 
+nlohmann::ordered_json case_fields_json() {
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  for (const std::string& pointer : described_case_fields()) {
+    const AxisDescription physical = describe_axis(pointer, "physical");
+    nlohmann::ordered_json item = axis_description_json(physical);
+    item.erase("name");
+    item.erase("unit");
+    item["units"] = {{"physical", text_or_null(physical.unit)},
+                     {"reduced", text_or_null(describe_axis(pointer, "reduced").unit)}};
+    items.push_back(std::move(item));
+  }
+  return {{"items", std::move(items)}};
+}
+
 nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document) {
   nlohmann::ordered_json json{{"id", study.id},
                               {"name", study.name},

@@ -17,6 +17,9 @@ nlohmann::ordered_json axis_description_json(const AxisDescription& axis);
 // A stored (valid) study document's axes in its order, then its search's axis (StudyAxis): each
 // described (describe_axis, in the study's unit system) with its values, or the search's range.
 nlohmann::ordered_json study_axes_json(const nlohmann::ordered_json& study_document);
+// The case fields the one table describes (GET /api/case-fields, CaseField): each field's pointer,
+// alias, label, symbol and scale as describe_axis gives them, and its unit in each unit system.
+nlohmann::ordered_json case_fields_json();
 nlohmann::ordered_json to_json(const StudyProgress& progress);
 nlohmann::ordered_json to_json(const CaseRecord& record);
 nlohmann::ordered_json to_json(const ResultRecord& record);

@@ -70,6 +70,11 @@ void get_templates(Endpoints&, const httplib::Request&, httplib::Response& respo
   send_json(response, 200, study_templates_json());
 }
 
+void get_case_fields(Endpoints&, const httplib::Request&, httplib::Response& response) {
+  static const nlohmann::ordered_json fields = case_fields_json();
+  send_json(response, 200, fields);
+}
+
 void list_studies(Endpoints& e, const httplib::Request& request, httplib::Response& response) {
   const auto page = page_request(request, e.options);
   const auto studies = e.store.studies(page);

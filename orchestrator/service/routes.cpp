@@ -22,6 +22,7 @@ const Route kRoutes[] = {
     {"GET", "/api/health", "getHealth", get_health},
     {"GET", "/api/openapi.json", "getOpenApi", get_openapi},
     {"GET", "/api/templates", "getTemplates", get_templates},
+    {"GET", "/api/case-fields", "getCaseFields", get_case_fields},
     {"GET", "/api/studies", "listStudies", list_studies},
     {"POST", "/api/studies", "submitStudy", submit_study},
     {"GET", "/api/studies/{id}", "getStudy", get_study},

@@ -117,6 +117,12 @@ AxisDescription describe_axis(const std::string& axis_name, const std::string& s
   return axis;
 }
 
+std::vector<std::string> described_case_fields() {
+  std::vector<std::string> pointers;
+  for (const auto& field : kCaseFields) pointers.emplace_back(field.pointer);
+  return pointers;
+}
+
 std::string point_unit_system(const nlohmann::ordered_json& axis_values, const std::string& study_system) {
   const auto units = axis_values.find("/units");
   return units != axis_values.end() && units->is_string() ? units->get<std::string>() : study_system;

@@ -1,6 +1,7 @@
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace aerobreak {
 
@@ -44,5 +45,8 @@ struct AxisDescription {
 
 // The description of axis `axis_name` in unit system `system` ("physical", "reduced" or "mixed").
 AxisDescription describe_axis(const std::string& axis_name, const std::string& system);
+
+// The pointers of the case fields the table describes, in its order (GET /api/case-fields).
+std::vector<std::string> described_case_fields();
 
 }  // namespace aerobreak

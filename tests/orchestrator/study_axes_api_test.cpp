@@ -3,7 +3,8 @@
 // symbol, unit in the study's system and log scale from the one table of case fields
 // (orchestrator/study/field_units.cpp), values for a grid axis and the range for the search's. Each
 // answer is checked against its schema in schemas/openapi.json, validated by the project's JSON
-// Schema validator. Real HTTP, a real store, worker jobs of the engine's test double.
+// Schema validator. GET /api/case-fields, which the submit form reads, names each field as the axes
+// do. Real HTTP, a real store, worker jobs of the engine's test double.
 #include "tests/orchestrator/synthetic_service.hpp"
 #include "tests/support/openapi_schema.hpp"
 
@@ -143,6 +144,44 @@ TEST_CASE("A study's answers describe its axes, grid and search, as schemas/open
     CHECK(names == expected);
     CHECK(axis_named(detail.at("axes"), "impact_speed").at("unit") == speed_unit);
   }
+  CHECK(service.kill(SIGTERM) == 0);
+}
+
+TEST_CASE("GET /api/case-fields names each field as a study's axes do, in both unit systems", "[service][axes]") {
+  ScratchDirectory scratch("case-fields");
+  ServiceProcess service(scratch.path(), synthetic_worker_options());
+  const Json fields = service.get("/api/case-fields");
+  const Json description = openapi();
+  check_valid(openapi_schema(description, response_schema(description, "/api/case-fields")), fields,
+              "/api/case-fields");
+  const auto field_at = [&](const std::string& pointer) -> const Json& {
+    for (const auto& field : fields.at("items"))
+      if (field.at("pointer") == pointer) return field;
+    FAIL("no field " << pointer << " in " << fields.dump());
+    throw std::logic_error("unreachable");
+  };
+  CHECK(field_at("/material/poisson_ratio").at("label") == "Poisson's ratio ν");
+  CHECK(field_at("/material/youngs_modulus").at("units") == Json{{"physical", "Pa"}, {"reduced", nullptr}});
+
+  // Each axis of a physical and of a reduced study: the same label, symbol, scale and unit.
+  const auto grid_id = submit(service, physical_grid_study()).at("id").get<std::int64_t>();
+  const auto search_id = submit(service, reduced_search_study()).at("id").get<std::int64_t>();
+  std::size_t compared = 0;
+  for (const auto& [id, system] : {std::pair{grid_id, "physical"}, std::pair{search_id, "reduced"}}) {
+    const Json study = service.get("/api/studies/" + std::to_string(id));
+    for (const auto& axis : study.at("axes")) {
+      if (axis.at("label") == axis.at("pointer")) continue;  // a field the table does not describe
+      INFO(axis.dump());
+      const Json& field = field_at(axis.at("pointer").get<std::string>());
+      CHECK(field.at("label") == axis.at("label"));
+      CHECK(field.at("symbol") == axis.at("symbol"));
+      CHECK(field.at("alias") == axis.at("alias"));
+      CHECK(field.at("units").at(system) == axis.at("unit"));
+      if (axis.at("role") == "grid") CHECK(field.at("log_scale") == axis.at("log_scale"));
+      ++compared;
+    }
+  }
+  CHECK(compared == 6);
   CHECK(service.kill(SIGTERM) == 0);
 }
 
