@@ -50,6 +50,16 @@ test("the form's limits are the schema's at each field", async () => {
   }
 });
 
+test('a case field the service does not describe is named by its pointer, without a unit', async () => {
+  const { caseFieldNames, kFormFields } = await import('../../web/src/views/submit_fields.js');
+  const density = kFormFields.find((field) => field.id === 'density');
+  assert.deepEqual(caseFieldNames(density, [], true), { label: '/material/density', unit: null });
+  const served = [{ pointer: '/material/density', label: 'density ρ', units: { physical: 'kg/m^3', reduced: null } }];
+  assert.deepEqual(caseFieldNames(density, served, true), { label: 'density ρ', unit: 'kg/m^3' });
+  const seed = kFormFields.find((field) => field.id === 'seed');
+  assert.deepEqual(caseFieldNames(seed, served, true), { label: 'study seed', unit: null });
+});
+
 const jsonView = async (page) => JSON.parse(await page.inputValue('#study-json'));
 const message = (page, id) => page.textContent(`#form-${id}-message`);
 
@@ -64,6 +74,17 @@ test('the form: the default study offered, fields checked as typed, the JSON vie
     assert.equal(await page.inputValue('#form-speeds'), '4, 8, 12, 16, 20, 25, 30, 40');
     assert.equal(await page.textContent('[data-pointer="/axes/impact_speed/values"] .unit'), 'm/s');
     assert.match(await page.textContent('#form-summary'), /^320 cases/);
+    // Each case field named as the service's one table names it (GET /api/case-fields), as a
+    // study's axes are; a field of the study alone keeps its own label.
+    const { items: caseFields } = await service.get('/api/case-fields');
+    const served = (pointer) => caseFields.find((field) => field.pointer === pointer);
+    const rowLabel = (pointer) => page.textContent(`[data-pointer="${pointer}"] label`);
+    assert.equal(await rowLabel('/base/material/poisson_ratio'), "Poisson's ratio ν");
+    assert.equal(await rowLabel('/base/material/poisson_ratio'), served('/material/poisson_ratio').label);
+    assert.equal(await rowLabel('/axes/impact_speed/values'), served('/impact/speed').label);
+    assert.equal(await rowLabel('/axes/primaries/values'), served('/cluster/generator/primaries').label);
+    assert.equal(await page.textContent('[data-pointer="/base/material/density"] .unit'), 'kg/m³');
+    assert.equal(await rowLabel('/replicates/count'), 'replicates');
 
     // Out of the schema's range: the message at once, at the field; the document keeps its value.
     await page.fill('#form-poisson_ratio', '0.7');

@@ -1,9 +1,9 @@
 // The units of a study's or a case's numbers, as the API names them (schemas/openapi.json, Units:
 // SI for physical studies; d, m, tau = sqrt(m/k_n) and k_n d^2 for reduced ones), written for the
-// page: "d/tau" as d/τ, "k_n d^2" as k_n d².
+// page: "d/tau" as d/τ, "k_n d^2" as k_n d², "kg/m^3" as kg/m³.
 export function unitText(unit) {
   if (!unit) return '';
-  return unit.replaceAll('tau', 'τ').replaceAll('^2', '²');
+  return unit.replaceAll('tau', 'τ').replaceAll('^2', '²').replaceAll('^3', '³');
 }
 
 // "label (unit)", or the label alone when the unit is unknown (a study whose axes mix unit systems).

@@ -1,7 +1,8 @@
 // Submitting a study: a form for the common physical study (submit_form.js) beside the study's JSON,
 // which holds the rest; each follows the other as the user types. The page starts from the
-// service's default study (GET /api/templates) or a small reduced-units sweep; a study can also be
-// pasted or read from a file. It is sent as application/json; the service's validation errors are
+// service's default study (GET /api/templates) or a small reduced-units sweep, its fields named by
+// the service's case fields (GET /api/case-fields); a study can also be pasted or read from a file.
+// It is sent as application/json; the service's validation errors are
 // shown at the form fields and in a view of the submitted document at the fields their JSON
 // pointers name, and listed.
 import { ApiError, getJson, postJson } from '../api.js';
@@ -60,12 +61,13 @@ async function templates() {
 }
 
 export async function showSubmit(view) {
-  const choices = await templates();
+  const [choices, caseFields] = await Promise.all([templates(),
+    getJson('/api/case-fields').then((answer) => answer.items, () => [])]);
   let document = structuredClone(choices[0].document);
   const text = el('textarea', { id: 'study-json', spellcheck: 'false' });
   const jsonMessage = el('p', { class: 'field-message error', id: 'study-json-message', 'aria-live': 'polite' });
   const output = el('div', { id: 'submit-output' });
-  const form = createStudyForm({ current: () => document, changed: (changed) => {
+  const form = createStudyForm({ current: () => document, caseFields, changed: (changed) => {
     text.value = JSON.stringify(changed, null, 2);
     jsonMessage.textContent = '';
   } });

@@ -1,9 +1,11 @@
 // The fields of the submit form for the common physical study (docs/WEB.md): each names the study
 // field it writes (a JSON pointer; for an axis, `base` names the one value a study without the
-// axis sets in its base instead), how its text reads, the limits of the schema at that field
-// (`schema` names where: the browser test compares them with the schema files) and, where a value
-// is allowed but unlikely for an aerosol cluster, the range outside which the form says so
-// without refusing it. Pure data and functions: no DOM, so that node reads them too.
+// axis sets in its base instead), how its text reads (a field of the case takes its label and
+// unit from the service, caseFieldNames; a field of the study alone has its own `label`), the
+// limits of the schema at that field (`schema` names where: the browser test compares them with
+// the schema files) and, where a value is allowed but unlikely for an aerosol cluster, the range
+// outside which the form says so without refusing it. Pure data and functions: no DOM, so that
+// node reads them too.
 
 // A number as JSON writes it: no units, no thousands separators.
 const kNumber = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
@@ -17,31 +19,31 @@ export const kFormFields = [
     schema: 'study.schema.json#/properties/name' },
   { id: 'description', label: 'Description', pointer: '/description', kind: 'text',
     schema: 'study.schema.json#/properties/description' },
-  { id: 'youngs_modulus', label: "Young's modulus E", unit: 'Pa', pointer: '/base/material/youngs_modulus',
+  { id: 'youngs_modulus', pointer: '/base/material/youngs_modulus',
     kind: 'number', minimum: 1e5, maximum: 2e12, usual: [1e6, 1e12], schema: `${kMaterial}/youngs_modulus`,
     material: true },
-  { id: 'poisson_ratio', label: 'Poisson ratio ν', pointer: '/base/material/poisson_ratio', kind: 'number',
+  { id: 'poisson_ratio', pointer: '/base/material/poisson_ratio', kind: 'number',
     exclusiveMinimum: -1, exclusiveMaximum: 0.5, schema: `${kMaterial}/poisson_ratio`, material: true },
-  { id: 'density', label: 'density ρ', unit: 'kg/m³', pointer: '/base/material/density', kind: 'number',
+  { id: 'density', pointer: '/base/material/density', kind: 'number',
     minimum: 100, maximum: 30000, usual: [100, 25000], schema: `${kMaterial}/density`, material: true },
-  { id: 'surface_energy', label: 'surface energy γ', unit: 'J/m²', pointer: '/base/material/surface_energy',
+  { id: 'surface_energy', pointer: '/base/material/surface_energy',
     kind: 'number', minimum: 0, maximum: 10, usual: [0, 5], schema: `${kMaterial}/surface_energy`, material: true },
-  { id: 'diameter', label: 'primary diameter d', unit: 'm', pointer: '/base/material/diameter', kind: 'number',
+  { id: 'diameter', pointer: '/base/material/diameter', kind: 'number',
     minimum: 1e-9, maximum: 1e-3, usual: [1e-9, 1e-5], schema: `${kMaterial}/diameter`, material: true },
-  { id: 'speeds', label: 'impact speeds v₀', unit: 'speed', pointer: '/axes/impact_speed/values', kind: 'numbers',
+  { id: 'speeds', pointer: '/axes/impact_speed/values', kind: 'numbers',
     exclusiveMinimum: 0, usual: [0, 1000], schema: 'case.schema.json#/$defs/impact/properties/speed',
     base: '/base/impact/speed' },
-  { id: 'primaries', label: 'cluster sizes N', unit: 'primaries', pointer: '/axes/primaries/values', kind: 'integers',
+  { id: 'primaries', pointer: '/axes/primaries/values', kind: 'integers',
     minimum: 1, maximum: 10000000, usual: [2, 100000], schema: `${kGenerator}/primaries`,
     base: '/base/cluster/generator/primaries' },
-  { id: 'generator', label: 'generator', pointer: '/base/cluster/generator/method', kind: 'choice',
+  { id: 'generator', pointer: '/base/cluster/generator/method', kind: 'choice',
     options: [['ballistic', 'ballistic cluster-cluster'], ['dlca', 'diffusion-limited (DLCA)'],
       ['tunable', 'tunable D_f, k_f']],
     schema: `${kGenerator}/method` },
-  { id: 'fractal_dimension', label: 'fractal dimension D_f', pointer: '/base/cluster/generator/fractal_dimension',
+  { id: 'fractal_dimension', pointer: '/base/cluster/generator/fractal_dimension',
     kind: 'number', minimum: 1.5, maximum: 2.8, only: 'tunable', initial: 1.8,
     schema: `${kGenerator}/fractal_dimension` },
-  { id: 'prefactor', label: 'prefactor k_f', pointer: '/base/cluster/generator/prefactor', kind: 'number',
+  { id: 'prefactor', pointer: '/base/cluster/generator/prefactor', kind: 'number',
     exclusiveMinimum: 0, only: 'tunable', initial: 1.3, schema: `${kGenerator}/prefactor` },
   { id: 'replicates', label: 'replicates', pointer: '/replicates/count', kind: 'integer', minimum: 1, maximum: 1000,
     schema: `${kReplicates}/count` },
@@ -54,6 +56,23 @@ export const kWallPointer = '/axes/~1wall~1adhesive/values';
 // Fields a generator takes beyond the common ones (engine/impact/cluster_generators.cpp): switching
 // the generator removes the others' fields, which the study would refuse.
 export const kGeneratorFields = { ballistic: [], dlca: ['sintering'], tunable: ['fractal_dimension', 'prefactor'] };
+
+// The case field a form field sets (/material/density), or null for a field of the study alone.
+export function casePointer(field) {
+  const pointer = field.base || field.pointer;
+  return pointer.startsWith('/base/') ? pointer.slice('/base'.length) : null;
+}
+
+// A form field's label and its unit in a physical or reduced study, from the service's case fields
+// (GET /api/case-fields: items); a case field the service does not describe is named by its
+// pointer, without a unit.
+export function caseFieldNames(field, caseFields, physical) {
+  const pointer = casePointer(field);
+  if (!pointer) return { label: field.label, unit: null };
+  const described = caseFields.find((item) => item.pointer === pointer);
+  if (!described) return { label: pointer, unit: null };
+  return { label: described.label, unit: described.units[physical ? 'physical' : 'reduced'] };
+}
 
 // What one value breaks of the field's limits, or null.
 function limitProblem(value, field) {

@@ -4,16 +4,14 @@
 // is only offered for a physical study (the reduced material is edited in the JSON view).
 import { el, replaceChildren, select } from '../dom.js';
 import { escapeToken, getAt, removeAt, setAt } from '../json_pointer.js';
-import { fieldText, kFormFields, kGeneratorFields, kWallPointer, readField, unusualValue } from './submit_fields.js';
+import { unitText } from '../units.js';
+import {
+  caseFieldNames, fieldText, kFormFields, kGeneratorFields, kWallPointer, readField, unusualValue,
+} from './submit_fields.js';
 
 const kWalls = [[true, 'adhesive (JKR, the primaries’ material)'], [false, 'without adhesion (Hertz)']];
 const isPhysical = (document) => getAt(document, '/base/units') === 'physical';
 const byId = (id) => kFormFields.find((field) => field.id === id);
-
-function unitOf(field, document) {
-  if (field.unit !== 'speed') return field.unit;
-  return isPhysical(document) ? 'm/s' : 'd/τ';
-}
 
 // How many cases the document's axes and replicates make (ranges count `count` values).
 export function caseCount(document) {
@@ -46,7 +44,8 @@ function writeField(document, field, value) {
     if (getAt(document, needed.pointer) === undefined) setAt(document, needed.pointer, needed.initial);
 }
 
-// A field's row: label, input, unit and message. `onInput(field)` runs as the user types.
+// A field's row: label, input, unit and message (label and unit shown by fillForm). `onInput(field)`
+// runs as the user types.
 function fieldRow(field, onInput) {
   const id = `form-${field.id}`;
   const input = field.kind === 'choice' ? select(field.options, field.options[0][0], () => onInput(field), { id })
@@ -54,9 +53,10 @@ function fieldRow(field, onInput) {
       { id, type: 'text', spellcheck: 'false', oninput: () => onInput(field) });
   const unit = el('span', { class: 'unit' });
   const message = el('span', { class: 'field-message', id: `${id}-message`, 'aria-live': 'polite' });
+  const label = el('label', { for: id });
   const row = el('div', { class: 'form-row', dataset: { pointer: field.pointer } },
-    el('label', { for: id }, field.label), el('span', { class: 'input' }, input, unit), message);
-  return { field, row, input, unit, message };
+    label, el('span', { class: 'input' }, input, unit), message);
+  return { field, row, label, input, unit, message };
 }
 
 // The walls: two boxes that write the /wall/adhesive axis (at least one is needed).
@@ -92,15 +92,18 @@ function isRange(document, field) {
 }
 
 // Shows the document's values in the form's fields (leaving alone the one being typed in), the
-// walls, the note on a reduced material and the number of cases.
-function fillForm(document, { entries, walls, materialNote, summary }) {
+// walls, the note on a reduced material and the number of cases; labels and units of the case fields
+// as the service names them (caseFields: GET /api/case-fields).
+function fillForm(document, { entries, walls, materialNote, summary, caseFields }) {
   const physical = isPhysical(document);
   const method = getAt(document, '/base/cluster/generator/method') || 'ballistic';
-  for (const { field, row, input, unit } of entries.values()) {
+  for (const { field, row, label, input, unit } of entries.values()) {
+    const names = caseFieldNames(field, caseFields, physical);
+    label.textContent = names.label;
+    unit.textContent = unitText(names.unit);
     row.hidden = Boolean(field.only && field.only !== method);
     input.disabled = Boolean((field.material && !physical) || isRange(document, field));
     input.title = isRange(document, field) ? 'a range of values: edit it in the JSON view' : '';
-    unit.textContent = unitOf(field, document) || '';
     if (input !== globalThis.document.activeElement)
       input.value = field.kind === 'choice' ? method : fieldText(field, valueOf(document, field));
   }
@@ -111,8 +114,9 @@ function fillForm(document, { entries, walls, materialNote, summary }) {
     `${caseCount(document)} cases: every combination of the axes' values, times the replicates.`);
 }
 
-// `current()` gives the study document, `changed(document)` is called after the form wrote into it.
-export function createStudyForm({ current, changed }) {
+// `current()` gives the study document, `changed(document)` is called after the form wrote into it;
+// `caseFields`: the service's case fields (GET /api/case-fields: items), empty when not known.
+export function createStudyForm({ current, changed, caseFields = [] }) {
   const entries = new Map();
   const problems = new Set();
   const check = (entry, read) => {
@@ -145,7 +149,7 @@ export function createStudyForm({ current, changed }) {
     entries.set(id, entry);
     return entry.row;
   }), extra);
-  const parts = { entries, walls, materialNote: el('p', { class: 'note', id: 'form-material-note' }),
+  const parts = { entries, walls, caseFields, materialNote: el('p', { class: 'note', id: 'form-material-note' }),
     summary: el('p', { class: 'note', id: 'form-summary' }) };
   const node = el('form', { class: 'study-form', id: 'study-form', onsubmit: (event) => event.preventDefault() },
     group('Study', ['name', 'description']),
