@@ -183,7 +183,7 @@ class ContactForcesFor final : public ContactForces {
           if (distance2 >= reach * reach) continue;
           slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
           if (local.drifted) {
-            finish_block(block, p, dt, local);  // (3): the loads of the pairs before this one first
+            empty_block(block, p, dt, local);  // (3): the loads of the pairs before this one first
             time_pair_formation(p, i, j, separation, slot, dt, local);
           }
         }
@@ -191,7 +191,7 @@ class ContactForcesFor final : public ContactForces {
         const double overlap = touching - distance;
         const Vec3 normal = separation * (1.0 / distance);
         if (overlap < -pool.break_overlap(slot)) {
-          finish_block(block, p, dt, local);  // (3), and the tally in the order of the pairs too
+          empty_block(block, p, dt, local);  // (3), and the tally in the order of the pairs too
           const double timing = close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
           p.force[i] -= timing * normal;
           p.force[j] += timing * normal;
@@ -205,6 +205,13 @@ class ContactForcesFor final : public ContactForces {
     }
     report_before(end, p, dt, pass, block, c);
     c.row = end;
+  }
+
+  // The block evaluated and its loads added before a contact event adds its own (take_rows' (3));
+  // kept out of the pass's loop, where the laws' code would crowd the common path.
+  [[gnu::noinline, gnu::cold]] void empty_block(ContactBlock& block, Particles& p, double dt,
+                                                ContactLedger& ledger) const {
+    finish_block(block, p, dt, ledger);
   }
 
   // Evaluates the block and reports the particles before `row` complete.
