@@ -6,42 +6,29 @@
 // primaries. Checked against the run itself.
 #include <catch2/catch.hpp>
 
-#include <numbers>
-
 #include "engine/core/units.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/fate_rule.hpp"
 #include "engine/impact/fragments.hpp"
+#include "impact_support.hpp"
 
 using namespace aerobreak;
+using aerobreak::testing::unit_mass_density;
+using aerobreak::testing::wall_contacts_of;
 
 namespace {
-
-const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter sphere
 
 // A dimer (the largest fragment) rising from a wall without adhesion, and two primaries 1.5 d above
 // the wall and 2 `half_gap` apart along it, coming down at 0.01 d/tau and moving along the wall at
 // `along` each, away from each other if `along` > 0. JKR, Mindlin friction mu = 0.3.
 Simulation bouncing_pair(double half_gap, double along) {
   Particles p;
-  p.add({0.0, 20.0, 20.0}, 0.5, density);
-  p.add({0.982, 20.0, 20.0}, 0.5, density);
-  p.add({-half_gap, 0.0, 2.0}, 0.5, density);
-  p.add({half_gap, 0.0, 2.0}, 0.5, density);
+  for (const Vec3& x :
+       {Vec3{0.0, 20.0, 20.0}, Vec3{0.982, 20.0, 20.0}, Vec3{-half_gap, 0.0, 2.0}, Vec3{half_gap, 0.0, 2.0}})
+    p.add(x, 0.5, unit_mass_density);
   p.velocity = {{0.0, 0.0, 0.05}, {0.0, 0.0, 0.05}, {-along, 0.0, -0.01}, {along, 0.0, -0.01}};
-  ContactModelSpec model;
-  model.normal = NormalLaw::jkr;
-  model.tangential = true;
-  model.friction = 0.3;
-  Wall wall;
-  wall.adhesive = false;
-  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {wall}, model);
-}
-
-std::size_t wall_contacts_of(const Simulation& sim, std::uint32_t i) {
-  std::size_t n = 0;
-  sim.contacts().for_each([&](const ContactState& c) { n += c.with_wall && c.i == i; });
-  return n;
+  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {testing::flat_wall(false)},
+                    testing::jkr_with_friction());
 }
 
 // Runs for `time`; whether primaries 2 and 3 touched the wall and whether they touched each other.

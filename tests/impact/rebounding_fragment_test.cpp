@@ -7,18 +7,18 @@
 // energy than its bond's is not judged so.
 #include <catch2/catch.hpp>
 
-#include <numbers>
+#include <cmath>
 
 #include "engine/core/units.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/fate_rule.hpp"
 #include "engine/impact/fragments.hpp"
+#include "impact_support.hpp"
 
 using namespace aerobreak;
+using aerobreak::testing::unit_mass_density;
 
 namespace {
-
-const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter sphere
 
 // A straight trimer (the largest fragment) rising at 0.05 d/tau far from the wall, and a dimer lying
 // along x with its centre `height` above a wall without adhesion, moving at `normal_speed` along the
@@ -26,26 +26,21 @@ const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter s
 // JKR with visco-elastic damping, Mindlin friction, rolling resistance, gamma/k_n = 0.001.
 Simulation dimer_near_wall(double height, double normal_speed, double orbit) {
   Particles p;
-  for (int k = 0; k < 3; ++k) p.add({40.0 + 0.982 * k, 0.0, 20.0}, 0.5, density);
-  p.add({-0.491, 0.0, height}, 0.5, density);
-  p.add({0.491, 0.0, height}, 0.5, density);
+  for (int k = 0; k < 3; ++k) p.add({40.0 + 0.982 * k, 0.0, 20.0}, 0.5, unit_mass_density);
+  p.add({-0.491, 0.0, height}, 0.5, unit_mass_density);
+  p.add({0.491, 0.0, height}, 0.5, unit_mass_density);
   p.velocity = {{0.0, 0.0, 0.05},
                 {0.0, 0.0, 0.05},
                 {0.0, 0.0, 0.05},
                 {0.0, 0.0, normal_speed + 0.5 * orbit},
                 {0.0, 0.0, normal_speed - 0.5 * orbit}};
   p.angular_velocity[3] = p.angular_velocity[4] = {0.0, orbit / 0.982, 0.0};  // spinning with the turn
-  ContactModelSpec model;
-  model.normal = NormalLaw::jkr;
+  ContactModelSpec model = testing::jkr_with_friction();
   model.damping = DampingLaw::viscoelastic;
   model.dissipative_time = 0.05;
-  model.tangential = true;
-  model.friction = 0.3;
   model.rolling = true;
   model.critical_rolling = 0.02;
-  Wall wall;
-  wall.adhesive = false;
-  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {wall}, model);
+  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {testing::flat_wall(false)}, model);
 }
 
 bool dimer_touches_wall(const Simulation& sim) {
