@@ -6,6 +6,7 @@
 #include "engine/core/version.hpp"
 #include "orchestrator/fitting/correlation_json.hpp"
 #include "orchestrator/fitting/correlation_set.hpp"
+#include "orchestrator/study/field_units.hpp"
 #include "orchestrator/study/sha256.hpp"
 #include "orchestrator/study/study_axes.hpp"
 
@@ -53,7 +54,7 @@ Covariate resolve(const StudyRecord& study, const std::vector<std::string>& axes
         throw CorrelationRequestError("covariate '" + name + "' is not an axis of study " + std::to_string(study.id) +
                                           " (its axes: " + joined(axes) + ")",
                                       false);
-      return {axis, known.logarithmic};
+      return {axis, field_log_scale(std::string(known.pointer))};
     }
   if (std::find(axes.begin(), axes.end(), name) == axes.end() || axis_pointer(name) == speed_pointer())
     throw CorrelationRequestError("covariate '" + name + "' is not a non-speed axis of study " +

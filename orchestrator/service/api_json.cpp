@@ -1,5 +1,8 @@
 #include "orchestrator/service/api_json.hpp"
 
+#include "orchestrator/study/field_units.hpp"
+#include "orchestrator/study/study_axes.hpp"
+#include "orchestrator/study/study_search.hpp"
 #include "orchestrator/study/study_units.hpp"
 
 namespace aerobreak {
@@ -10,7 +13,46 @@ nlohmann::ordered_json optional_json(const std::optional<T>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
 }
 
+nlohmann::ordered_json text_or_null(const std::string& text) {
+  return text.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(text);
+}
+
+// One axis of a study, a grid axis with its values or the search's with its range (StudyAxis).
+nlohmann::ordered_json study_axis_json(const AxisDescription& axis, const std::string& role,
+                                       nlohmann::ordered_json values, nlohmann::ordered_json range) {
+  nlohmann::ordered_json json = axis_description_json(axis);
+  json["role"] = role;
+  json["values"] = std::move(values);
+  json["range"] = std::move(range);
+  return json;
+}
+
 }  // namespace
+
+nlohmann::ordered_json axis_description_json(const AxisDescription& axis) {
+  return {{"name", axis.name},          {"pointer", axis.pointer}, {"alias", text_or_null(axis.alias)},
+          {"label", axis.label},        {"symbol", axis.symbol},   {"unit", text_or_null(axis.unit)},
+          {"log_scale", axis.log_scale}};
+}
+
+nlohmann::ordered_json study_axes_json(const nlohmann::ordered_json& study_document) {
+  const std::string system = study_unit_system(study_document);
+  const nlohmann::ordered_json grid_axes = study_document.value("axes", nlohmann::ordered_json::object());
+  std::vector<SchemaViolation> unused;  // the stored document passed parse_study
+  nlohmann::ordered_json axes = nlohmann::ordered_json::array();
+  std::vector<std::string> pointers;
+  for (const auto& axis : read_axes(grid_axes, unused)) {
+    pointers.push_back(axis.pointer);
+    axes.push_back(study_axis_json(describe_axis(axis.name, system), "grid", axis.values, nullptr));
+  }
+  if (const auto search = study_document.find("search"); search != study_document.end()) {
+    const BoundarySearchSpec spec = read_search_spec(*search, pointers, unused);
+    AxisDescription axis = describe_axis(spec.axis, system);
+    axis.log_scale = spec.logarithmic;  // the scale the search places its cases in
+    axes.push_back(study_axis_json(axis, "search", nullptr, {spec.from, spec.to}));
+  }
+  return axes;
+}
 
 nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document) {
   nlohmann::ordered_json json{{"id", study.id},
@@ -23,7 +65,8 @@ nlohmann::ordered_json to_json(const StudyRecord& study, bool with_document) {
                               {"case_wall_time", study.case_wall_time},
                               {"created_at", study.created_at},
                               {"cancelled_at", optional_json(study.cancelled_at)},
-                              {"units", units_json(study_unit_system(study.document))}};
+                              {"units", units_json(study_unit_system(study.document))},
+                              {"axes", study_axes_json(study.document)}};
   if (with_document) json["document"] = study.document;
   return json;
 }
@@ -88,7 +131,11 @@ nlohmann::ordered_json to_json(const ResultRecord& record) {
 
 nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<DataFileCheck>& data_file_check) {
   nlohmann::ordered_json json = to_json(detail.record);
-  json["units"] = units_json(case_unit_system(detail.document));
+  const std::string system = case_unit_system(detail.document);
+  json["units"] = units_json(system);
+  auto& axes = json["axes"] = nlohmann::ordered_json::array();
+  for (const auto& [name, value] : detail.record.grid_point.items())
+    axes.push_back(axis_description_json(describe_axis(name, system)));
   json["document"] = detail.document;
   auto& attempts = json["attempt_history"] = nlohmann::ordered_json::array();
   for (const auto& attempt : detail.attempts) {
@@ -113,9 +160,6 @@ nlohmann::ordered_json to_json(const CaseDetail& detail, const std::optional<Dat
   json["data_file_check"] = nullptr;
   if (data_file_check) {
     const auto& digest = detail.data_file_digest;
-    const auto text_or_null = [](const std::string& text) {
-      return text.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(text);
-    };
     json["data_file_check"] = {
         {"state", std::string(to_string(data_file_check->state))},
         {"problem", text_or_null(data_file_check->problem)},

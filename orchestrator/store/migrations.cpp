@@ -250,6 +250,17 @@ constexpr std::string_view kVersion9 = R"sql(
 ALTER TABLE cases ADD COLUMN primaries INTEGER CHECK (primaries >= 1);
 )sql";
 
+// The N of a cluster file's cases, which their documents do not say, from their results'
+// fragments (every primary is in exactly one fragment), as a result now stores it when it comes;
+// the correlation sets fitted while N was unknown are dropped, to be fitted again on request.
+constexpr std::string_view kVersion10 = R"sql(
+DELETE FROM correlation_sets WHERE study_id IN (
+  SELECT DISTINCT sc.study_id FROM study_cases sc JOIN cases c ON c.id = sc.case_id
+  WHERE c.primaries IS NULL AND EXISTS (SELECT 1 FROM fragments f WHERE f.case_id = c.id));
+UPDATE cases SET primaries = (SELECT sum(f.primaries) FROM fragments f WHERE f.case_id = cases.id)
+WHERE primaries IS NULL AND EXISTS (SELECT 1 FROM fragments f WHERE f.case_id = cases.id);
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -261,6 +272,7 @@ constexpr std::array kMigrations{
     Migration{7, "adaptive boundary searches: groups, rounds, cases linked to both", kVersion7},
     Migration{8, "data-file paths relative to the data folder", kVersion8},
     Migration{9, "each case's N (primaries of its cluster) beside its document", kVersion9, fill_case_primaries},
+    Migration{10, "a cluster file's N from its results' fragments", kVersion10},
 };
 
 int user_version(SqliteDatabase& db) {

@@ -276,6 +276,17 @@ void insert_result(SqliteDatabase& db, std::int64_t case_id, int attempt, const 
   }
 }
 
+// A cluster file's N is not in its case's document (the case's primaries column stays null when
+// it is stored): its first result tells it, as its fragments' primaries together, since every
+// primary is in exactly one fragment.
+void fill_primaries_from_fragments(SqliteDatabase& db, std::int64_t case_id) {
+  db.prepare(
+        "UPDATE cases SET primaries = (SELECT sum(primaries) FROM fragments WHERE case_id = ?1) "
+        "WHERE id = ?1 AND primaries IS NULL")
+      .bind_all(case_id)
+      .run();
+}
+
 }  // namespace
 
 bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ordered_json& result,
@@ -293,6 +304,7 @@ bool Store::commit_result(std::int64_t case_id, int attempt, const nlohmann::ord
   drop_result(*writer_, case_id);
   insert_result(*writer_, case_id, attempt, result, stored_data_path(data_directory_, data_file), wall_clock_seconds,
                 digest, now);
+  fill_primaries_from_fragments(*writer_, case_id);
   writer_->prepare("UPDATE attempts SET ended_at = ?, outcome = 'done' WHERE case_id = ? AND attempt = ?")
       .bind_all(now, case_id, attempt)
       .run();

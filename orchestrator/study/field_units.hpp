@@ -26,4 +26,23 @@ std::string study_axis_unit(const std::string& axis_name, const std::string& sys
 // axis sets it, the study's otherwise.
 std::string point_unit_system(const nlohmann::ordered_json& axis_values, const std::string& study_system);
 
+// Whether the case field at `pointer` is plotted in log scale (it spans decades: speeds, moduli,
+// N, gamma/k_n); false for a field the table does not list. A covariate of the correlations on such
+// a field enters the pooled models as its logarithm.
+bool field_log_scale(const std::string& pointer);
+
+// A study axis as the API and the web page show it (schemas/openapi.json, AxisDescription).
+struct AxisDescription {
+  std::string name;     // as the study names it: an alias or a JSON pointer
+  std::string pointer;  // the case field it sets
+  std::string alias;    // its short name (named_case_fields); empty: none
+  std::string label;    // "impact speed v₀"; a field without one: the name
+  std::string symbol;   // "v₀", for legends; a field without one: the alias or the name
+  std::string unit;     // study_axis_unit in `system`; empty: none (a count, a ratio, a name, mixed units)
+  bool log_scale;       // plotted in log scale (decades); false for a field without a label
+};
+
+// The description of axis `axis_name` in unit system `system` ("physical", "reduced" or "mixed").
+AxisDescription describe_axis(const std::string& axis_name, const std::string& system);
+
 }  // namespace aerobreak

@@ -20,16 +20,16 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // The case fields that studies and correlation requests name by short names: one table. Their
-// units come from field_units.cpp by pointer (study_axis_unit).
+// units, labels and scales come from field_units.cpp by pointer (study_axis_unit, describe_axis).
 constexpr std::array<NamedCaseField, 8> kNamedFields{{
-    {"impact_speed", "/impact/speed", true, false, "", false},
-    {"gamma_over_kn", "/material/gamma_over_kn", true, false, "gamma_over_kn", true},
-    {"primaries", "/cluster/generator/primaries", true, true, "N", true},
-    {"generator", "/cluster/generator/method", true, false, "", false},
-    {"fractal_dimension", "/cluster/generator/fractal_dimension", true, false, "Df", false},
-    {"prefactor", "/cluster/generator/prefactor", true, false, "", false},
-    {"geometric_standard_deviation", "/cluster/generator/geometric_standard_deviation", true, false, "", false},
-    {"angle", "/impact/angle", false, false, "angle", false},
+    {"impact_speed", "/impact/speed", true, false, ""},
+    {"gamma_over_kn", "/material/gamma_over_kn", true, false, "gamma_over_kn"},
+    {"primaries", "/cluster/generator/primaries", true, true, "N"},
+    {"generator", "/cluster/generator/method", true, false, ""},
+    {"fractal_dimension", "/cluster/generator/fractal_dimension", true, false, "Df"},
+    {"prefactor", "/cluster/generator/prefactor", true, false, ""},
+    {"geometric_standard_deviation", "/cluster/generator/geometric_standard_deviation", true, false, ""},
+    {"angle", "/impact/angle", false, false, "angle"},
 }};
 
 constexpr std::size_t kMaxAxes = 8;

@@ -17,14 +17,14 @@ namespace aerobreak {
 // A case field that studies and correlation requests name by a short name. The one table of them
 // (study_axes.cpp) serves the axis aliases (axis_pointer, the integer check of read_axes) and the
 // correlations' known covariates (orchestrator/app/study_fits.cpp); a field's unit is
-// study_axis_unit(pointer) (field_units.hpp).
+// study_axis_unit(pointer), its label and scale describe_axis (field_units.hpp): a covariate enters
+// the pooled models as its logarithm where its field is on a log scale (field_log_scale).
 struct NamedCaseField {
   std::string_view name;       // the axis alias (axis_alias) or, for a covariate only, its long name
   std::string_view pointer;    // the case field
   bool axis_alias;             // a study may name an axis so (schemas/study.schema.json lists them)
   bool integer;                // a count: an axis of it refuses values that are not integers
   std::string_view covariate;  // its short name as a covariate of the correlations (N, Df); empty: none
-  bool logarithmic;            // as a covariate: enters the pooled models as its logarithm
 };
 std::span<const NamedCaseField> named_case_fields();
 // The covariates' short names, in the table's order: "gamma_over_kn, N, Df, angle".

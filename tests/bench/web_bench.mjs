@@ -34,7 +34,8 @@ const server = spawn(binary, ['serve', '--store', store, '--data', scratch, '--p
   ...webDirectory], { stdio: 'ignore' });
 
 function drawn() {
-  const charts = ['plot-probability', 'plot-critical', 'plot-retained', 'plot-damage', 'plot-restitution', 'plot-fragments'];
+  const charts = ['plot-probability', 'plot-critical', 'plot-retained', 'plot-damage', 'plot-restitution',
+    'plot-fragments'];
   return charts.every((id) => document.getElementById(id)?.dataset.series !== undefined) &&
     document.querySelector('#case-table table') !== null;
 }

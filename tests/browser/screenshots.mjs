@@ -31,7 +31,8 @@ try {
     await ready();
     await page.screenshot({ path: path.join(figures, `web-${name}.png`), fullPage });
   };
-  const fitted = () => page.waitForFunction(() => Number(document.getElementById('plot-probability')?.dataset.fitted) > 0 &&
+  const fitted = () => page.waitForFunction(() =>
+    Number(document.getElementById('plot-probability')?.dataset.fitted) > 0 &&
     document.getElementById('plot-fragments')?.uplot);
   await shoot('', 'studies', () => page.locator('#studies-table').waitFor(), { height: 400 });
   await shoot(`?study=${id}&s.%2Fwall%2Fadhesive=true`, 'study', fitted);
@@ -40,7 +41,8 @@ try {
   await page.locator('#panel-correlations').screenshot({ path: path.join(figures, 'web-study-correlations.png') });
   await shoot(`?study=${id}&s.%2Fwall%2Fadhesive=true`, 'study-1920', fitted, { width: 1920, height: 1600 });
   const cases = await service.get(`/api/studies/${id}/case-table?outcome=break-up&axis.impact_speed=30&limit=1`);
-  await shoot(`?case=${cases.items[0].id}`, 'case', () => page.locator('#fragments-table').waitFor(), { fullPage: true });
+  await shoot(`?case=${cases.items[0].id}`, 'case', () => page.locator('#fragments-table').waitFor(),
+    { fullPage: true });
   await shoot('?submit', 'submit', async () => {
     await page.locator('#form-youngs_modulus').waitFor();
     await page.fill('#form-diameter', '20');

@@ -17,7 +17,8 @@ test('the list shows a submitted study and its progress advances without a reloa
     await page.getByText('No studies yet').waitFor();
     await page.evaluate(() => { window.notReloaded = true; });
     // 24 cases of 128 primaries: several seconds on two ranks, so that the list polls meanwhile.
-    const id = await service.submit(smallStudy('progress watch', { speeds: [0.01, 0.05, 0.2], primaries: [128], gammas: [0.001], replicates: 8 }));
+    const id = await service.submit(smallStudy('progress watch',
+      { speeds: [0.01, 0.05, 0.2], primaries: [128], gammas: [0.001], replicates: 8 }));
     const row = page.locator('#studies-table tbody tr', { has: page.locator(`a[href="/?study=${id}"]`) });
     await row.waitFor({ timeout: 10000 });
     assert.equal(await row.locator('a.study-name').textContent(), 'progress watch');
@@ -60,7 +61,8 @@ test('a study named with HTML is shown as text, on the list and on its page', as
   });
 });
 
-test('the page is served with a policy against inline scripts and other origins, and no request leaves loopback', async () => {
+test('the page is served with a policy against inline scripts and other origins, and no request leaves loopback',
+  async () => {
   const page = await openPage(browser, service);
   await withScreenshot(page, 'studies-list-policy', async () => {
     const response = await page.goto(`${service.origin}/`);
@@ -72,7 +74,13 @@ test('the page is served with a policy against inline scripts and other origins,
     // aborted by the test's interception if it were not).
     const blocked = await page.evaluate(() => fetch('http://127.0.0.2:9/').then(() => 'sent', () => 'refused'));
     assert.equal(blocked, 'refused');
-    assert.equal(await page.evaluate(() => { const s = document.createElement('script'); s.textContent = 'window.inline = 1'; document.body.append(s); return window.inline; }), undefined);
+    const inlineRan = await page.evaluate(() => {
+      const script = document.createElement('script');
+      script.textContent = 'window.inline = 1';
+      document.body.append(script);
+      return window.inline;
+    });
+    assert.equal(inlineRan, undefined);
     // Node_modules files other than those the page names are not served.
     assert.equal((await service.request('GET', '/node_modules/uplot/package.json')).status, 404);
     assert.equal((await service.request('GET', '/package.json')).status, 404);

@@ -85,7 +85,8 @@ const probabilities = (outcome) => serverCurves((row) => row.outcomes[outcome].p
 
 // The measured curves of a chart: neither a fit nor the small-strain rings.
 const measuredCurves = (chart) => chart.curves.filter((curve) => !curve.fit && !curve.label.startsWith('outside'));
-const sortedPoints = (curves) => curves.map((c) => c.points).sort((a, b) => JSON.stringify(a).localeCompare(JSON.stringify(b)));
+const sortedPoints = (curves) => curves.map((c) => c.points)
+  .sort((a, b) => JSON.stringify(a).localeCompare(JSON.stringify(b)));
 
 test('the plots hold one curve per N and gamma/k_n with a point per speed, and the server numbers', async () => {
   const page = await openPage(browser, service);
@@ -143,6 +144,10 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     assert.equal(restitution.curves.flatMap((c) => c.points).length, bounced);
     if (bounced === 0) {
       assert.match(await page.locator('#plot-restitution').innerText(), /no case here bounced/);
+      // The panel holds its message only, not the height of a plot beside it.
+      const [restitutionHeight, fragmentsHeight] = await page.evaluate(() => ['panel-restitution', 'panel-fragments']
+        .map((id) => document.getElementById(id).getBoundingClientRect().height));
+      assert.ok(restitutionHeight < fragmentsHeight / 2, `restitution ${restitutionHeight} px, ${fragmentsHeight} px`);
     }
     const retained = (await chartContents(page, 'plot-retained')).curves.flatMap((c) => c.points.map((p) => p[1]));
     assert.ok(retained.every((value) => value >= 0 && value <= 1));
@@ -151,7 +156,8 @@ test('the plots hold one curve per N and gamma/k_n with a point per speed, and t
     // service computes it (observed_crossings; drawn once the correlations have arrived).
     const crossing = probabilities('break-up').filter((points) =>
       points.some(([, p], i) => i > 0 && (points[i - 1][1] - 0.5) * (p - 0.5) <= 0 && points[i - 1][1] !== p));
-    await page.waitForFunction(() => Number(document.getElementById('plot-critical').dataset.fitted) > 0, null, { timeout: 60000 });
+    await page.waitForFunction(() => Number(document.getElementById('plot-critical').dataset.fitted) > 0, null,
+      { timeout: 60000 });
     const critical = await chartContents(page, 'plot-critical');
     const measuredCritical = critical.curves.filter((curve) => !curve.label.startsWith('fitted'));
     assert.equal(measuredCritical.flatMap((c) => c.points).length, crossing.length);
@@ -188,7 +194,8 @@ test('a plot choice is a permalink: the URL reproduces it', async () => {
     await again.locator('#case-table table').waitFor();
     assert.equal(await again.inputValue('#choose-outcome'), 'stick');
     const probability = await chartContents(again, 'plot-probability');
-    assert.deepEqual(sortedPoints(measuredCurves(probability)), sortedPoints(probabilities('stick').map((points) => ({ points }))));
+    assert.deepEqual(sortedPoints(measuredCurves(probability)),
+      sortedPoints(probabilities('stick').map((points) => ({ points }))));
   });
 });
 
@@ -205,7 +212,8 @@ test('filters narrow the case table, paging walks it, and both are kept in the U
     await page.waitForFunction(() => document.getElementById('page-range').textContent === '1–18 of 18');
     const expected = await service.get(`/api/studies/${studyId}/case-table?axis.primaries=8&outcome=stick`);
     await page.selectOption('#filter-outcome', 'stick');
-    await page.waitForFunction((total) => document.getElementById('case-table').dataset.total === String(total), expected.total);
+    await page.waitForFunction((total) => document.getElementById('case-table').dataset.total === String(total),
+      expected.total);
     const rows = page.locator('#case-table tbody tr');
     assert.equal(await rows.count(), Math.min(25, expected.total));
     assert.ok(expected.total < 18, 'the outcome filter narrows further');
@@ -217,19 +225,23 @@ test('filters narrow the case table, paging walks it, and both are kept in the U
     assert.match(page.url(), /f\.axis\.primaries=8/);
     const again = await openPage(browser, service);
     await again.goto(page.url());
-    await again.waitForFunction((total) => document.getElementById('case-table')?.dataset.total === String(total), expected.total);
+    await again.waitForFunction((total) => document.getElementById('case-table')?.dataset.total === String(total),
+      expected.total);
     assert.equal(await again.inputValue('#filter-outcome'), 'stick');
   });
 });
 
-test("a case's page shows its outcome, validity, energy groups, fragments and attempts and downloads its H5MD file", async () => {
+test("a case's page shows its outcome, validity, energy groups, fragments and attempts and downloads its H5MD file",
+  async () => {
   const page = await openPage(browser, service);
   await withScreenshot(page, 'case-page', async () => {
     await openStudy(page);
     const row = page.locator('#case-table tbody tr').last();
     const caseId = Number(await row.locator('a').textContent());
-    const listed = (await service.get(`/api/studies/${studyId}/case-table?limit=36`)).items.find((c) => c.id === caseId);
-    const flags = [listed.fractured_on_wall && 'fractured on wall', listed.small_strain_exceeded && 'small strain exceeded'].filter(Boolean);
+    const listed = (await service.get(`/api/studies/${studyId}/case-table?limit=36`)).items
+      .find((c) => c.id === caseId);
+    const flags = [listed.fractured_on_wall && 'fractured on wall',
+      listed.small_strain_exceeded && 'small strain exceeded'].filter(Boolean);
     assert.equal((await row.locator('td.flags').textContent()), flags.join(', '));
     await row.locator('a').click();
     await page.locator('#case-title').waitFor();
@@ -242,7 +254,8 @@ test("a case's page shows its outcome, validity, energy groups, fragments and at
     const outcomeFacts = await facts(page, '#outcome-facts');
     assert.equal(outcomeFacts['fractured on the wall'], outcome.fractured_on_wall ? 'yes' : 'no');
     assert.equal(Number(outcomeFacts['retained mass fraction']), Number(outcome.retained_mass_fraction.toPrecision(4)));
-    assert.equal(Number(outcomeFacts['re-entrained mass fraction']), Number(outcome.reentrained_mass_fraction.toPrecision(4)));
+    assert.equal(Number(outcomeFacts['re-entrained mass fraction']),
+      Number(outcome.reentrained_mass_fraction.toPrecision(4)));
     const reentrained = page.locator('#reentrained-table tbody tr');
     assert.equal(await reentrained.count(), outcome.reentrained_fragments.length);
     for (const [i, fragment] of outcome.reentrained_fragments.entries())
@@ -251,7 +264,8 @@ test("a case's page shows its outcome, validity, energy groups, fragments and at
     const groups = await facts(page, '#energy-groups-facts');
     assert.equal(Number(groups['E_kin / (N_c E_break)']), Number(dimensionless.energy_per_contact.toPrecision(4)));
     assert.equal(Number(groups['N_c, initial contacts']), dimensionless.initial_contacts);
-    assert.doesNotMatch(await page.locator('#view').textContent(), /\[object /, 'every value shown as text, none as an object');
+    assert.doesNotMatch(await page.locator('#view').textContent(), /\[object /,
+      'every value shown as text, none as an object');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-h5')]);
     const bytes = readFileSync(await download.path());
     assert.deepEqual([...bytes.subarray(0, 8)], [0x89, 0x48, 0x44, 0x46, 0x0d, 0x0a, 0x1a, 0x0a], 'an HDF5 file');
@@ -266,13 +280,15 @@ test('the outcome fields: damage ratio plot, flagged results, energy per contact
   await withScreenshot(page, 'study-outcome-fields', async () => {
     await openStudy(page);
     const damage = await chartContents(page, 'plot-damage');
-    assert.deepEqual(sortedPoints(damage.curves), sortedPoints(serverCurves((row) => row.damage_ratio?.mean).map((points) => ({ points }))));
+    assert.deepEqual(sortedPoints(damage.curves),
+      sortedPoints(serverCurves((row) => row.damage_ratio?.mean).map((points) => ({ points }))));
     assert.equal(damage.curves.flatMap((c) => c.points).length, 12);
 
     const summary = await page.locator('#flags-summary').evaluate((node) => ({ ...node.dataset }));
     for (const flag of ['fractured_on_wall', 'small_strain_exceeded', 'small_strain_unchecked'])
       assert.equal(Number(summary[flag]), grid.grid_points.reduce((sum, row) => sum + row[flag], 0), flag);
-    const flaggedRows = grid.grid_points.filter((row) => row.fractured_on_wall + row.small_strain_exceeded + row.small_strain_unchecked > 0);
+    const flaggedRows = grid.grid_points.filter((row) =>
+      row.fractured_on_wall + row.small_strain_exceeded + row.small_strain_unchecked > 0);
     assert.equal(Number(await page.locator('#flags-table').getAttribute('data-rows')), flaggedRows.length);
     const probability = await chartContents(page, 'plot-probability');
     const rings = probability.curves.filter((curve) => curve.label.startsWith('outside the small-strain range'));
@@ -289,12 +305,14 @@ test('the outcome fields: damage ratio plot, flagged results, energy per contact
       (expected[`${row.grid_point.primaries},${row.grid_point.gamma_over_kn}`] ||= [])
         .push([row.energy_per_contact_mean, row.outcomes['break-up'].probability]);
     const measured = measuredCurves(alongEnergy);
-    assert.deepEqual(sortedPoints(measured), sortedPoints(Object.values(expected).map((points) => ({ points: points.sort((a, b) => a[0] - b[0]) }))));
+    assert.deepEqual(sortedPoints(measured),
+      sortedPoints(Object.values(expected).map((points) => ({ points: points.sort((a, b) => a[0] - b[0]) }))));
     assert.deepEqual(page.problems, []);
   });
 });
 
-test('the correlations service: fitted curves with bands over the points, critical speeds against N, their table', async () => {
+test('the correlations service: fitted curves with bands over the points, critical speeds against N, their table',
+  async () => {
   const page = await openPage(browser, service);
   await withScreenshot(page, 'study-correlations', async () => {
     await openStudy(page);
@@ -302,11 +320,12 @@ test('the correlations service: fitted curves with bands over the points, critic
     const groupFits = summary.fits.filter((fit) => fit.kind === 'logistic' && fit.response === 'break-up' &&
       fit.dose === 'impact_speed' && fit.pooled_over.length === 0);
     assert.equal(groupFits.length, 4, 'one fit per N and gamma/k_n');
-    const documents = await Promise.all(groupFits.map((fit) => service.get(`/api/studies/${studyId}/correlations/${fit.name}`)));
+    const documents = await Promise.all(groupFits.map((fit) =>
+      service.get(`/api/studies/${studyId}/correlations/${fit.name}`)));
     const withCurves = documents.filter((document) => document.curves.length > 0);
     assert.ok(withCurves.length >= 1, 'some group has a fitted curve');
-    await page.waitForFunction((n) => document.getElementById('plot-probability').dataset.fitted === String(n), withCurves.length,
-      { timeout: 60000 });
+    await page.waitForFunction((n) => document.getElementById('plot-probability').dataset.fitted === String(n),
+      withCurves.length, { timeout: 60000 });
     const probability = await chartContents(page, 'plot-probability');
     const fitted = probability.curves.filter((curve) => curve.label.endsWith('(fit)'));
     assert.equal(fitted.length, withCurves.length);
@@ -325,7 +344,8 @@ test('the correlations service: fitted curves with bands over the points, critic
     // The legend keeps fitted and measured apart: its key has a swatch of each, a fit's dashed over
     // a band; each group's entry stands for both of its series.
     const kinds = probability.legend.filter((entry) => entry.group === undefined && !entry.text.startsWith('outside'));
-    assert.deepEqual(kinds.map((entry) => entry.text), ['measured, whiskers: 95 % interval', 'fit, band: 95 % interval']);
+    assert.deepEqual(kinds.map((entry) => entry.text),
+      ['measured, whiskers: 95 % interval', 'fit, band: 95 % interval']);
     assert.match(kinds[0].swatch, /\bmeasured\b.*\bwhiskers\b/);
     assert.match(kinds[1].swatch, /\bfitted\b.*\bband\b/);
 
@@ -337,7 +357,8 @@ test('the correlations service: fitted curves with bands over the points, critic
     const fittedCritical = critical.curves.filter((curve) => curve.label.startsWith('fitted'));
     assert.deepEqual(fittedCritical.flatMap((curve) => curve.points).sort(), expected.sort());
     // v50 with its 95 % interval as a band: the summary's intervals.
-    const v50 = groupFits.flatMap((fit) => fit.critical.filter((value) => value.level === 0.5 && typeof value.estimate === 'number')
+    const v50 = groupFits.flatMap((fit) => fit.critical
+      .filter((value) => value.level === 0.5 && typeof value.estimate === 'number')
       .map((value) => [fit.group.primaries, ...value.ci95]));
     const drawnV50 = fittedCritical.filter((curve) => curve.label.startsWith('fitted v50'))
       .flatMap((curve) => curve.points.map(([n], i) => [n, ...curve.band[i]]));
@@ -353,6 +374,9 @@ test('the correlations service: fitted curves with bands over the points, critic
     assert.ok(far.length > 0, 'three speeds, three replicates: some critical value is not pinned down');
     assert.equal(await page.locator('#correlations-warnings li').count(), far.length);
     assert.equal(await page.locator('#correlations-table .warning-mark').count(), far.length);
+    // The scaling of v50 names N by the symbol the service gives the axis, its groups by their labels.
+    assert.match(await page.locator('#correlations-scaling').textContent(),
+      /Scaling of v50 at γ\/k_n = 0\.001 \(\w+\): v50 ∝ N\^-?[\d.]+(e-?\d+)? \[/);
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
   });

@@ -153,7 +153,8 @@ test('a bad study shows its errors at the fields their pointers name', async () 
     await page.fill('#study-json', JSON.stringify(study, null, 2));
     await page.click('#submit-study');
     await page.locator('#violations li').first().waitFor();
-    const pointers = await page.locator('#violations li').evaluateAll((items) => items.map((item) => item.dataset.pointer));
+    const pointers = await page.locator('#violations li')
+      .evaluateAll((items) => items.map((item) => item.dataset.pointer));
     const expected = ['/axes/impact_speed/values', '/replicates/count', '/execution/max_attempts'];
     assert.deepEqual(pointers.sort(), [...expected].sort());
     for (const pointer of expected) {
@@ -180,7 +181,8 @@ test('a study read from a file is submitted as application/json, and a running s
     page.on('request', (request) => { if (request.method() === 'POST') posts.push(request); });
     await page.goto(`${service.origin}/?submit`);
     // 120 cases of 128 primaries: about 20 s of work on two ranks, so that there is time to cancel.
-    const study = smallStudy('to cancel', { speeds: [0.01, 0.05, 0.1, 0.2, 0.3], primaries: [128], gammas: [0.001, 0.01], replicates: 12 });
+    const study = smallStudy('to cancel',
+      { speeds: [0.01, 0.05, 0.1, 0.2, 0.3], primaries: [128], gammas: [0.001, 0.01], replicates: 12 });
     const file = path.join(service.directory, 'study.json');
     writeFileSync(file, JSON.stringify(study));
     await page.setInputFiles('#study-file', file);
@@ -196,7 +198,8 @@ test('a study read from a file is submitted as application/json, and a running s
     const progress = await service.get(`/api/studies/${id}/progress`);
     assert.ok(progress.counts.cancelled > 0, JSON.stringify(progress));
     assert.equal((await service.get(`/api/studies/${id}`)).status, 'cancelled');
-    await until(async () => (await service.get(`/api/studies/${id}/progress`)).complete, { what: 'running cases to end' });
+    await until(async () => (await service.get(`/api/studies/${id}/progress`)).complete,
+      { what: 'running cases to end' });
     await page.waitForFunction(() => !document.getElementById('cancel-study'), null, { timeout: 15000 });
     assert.deepEqual(page.foreignRequests, []);
     assert.deepEqual(page.problems, []);
@@ -209,7 +212,8 @@ test('with a token configured the page asks for it and sends it as a bearer toke
     const posts = [];
     page.on('request', (request) => { if (request.method() === 'POST') posts.push(request.headers()); });
     await page.goto(`${guarded.origin}/?submit`);
-    await page.fill('#study-json', JSON.stringify(smallStudy('with token', { speeds: [0.01], primaries: [8], gammas: [0.001], replicates: 1 })));
+    await page.fill('#study-json', JSON.stringify(smallStudy('with token',
+      { speeds: [0.01], primaries: [8], gammas: [0.001], replicates: 1 })));
     await page.click('#submit-study');
     await page.locator('#token-dialog[open]').waitFor();
     await page.fill('#token-input', kToken);

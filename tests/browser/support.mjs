@@ -114,7 +114,8 @@ export async function openPage(browser, service) {
   });
   page.on('pageerror', (error) => page.problems.push(`page error: ${error.message}`));
   page.on('console', (message) => {
-    if (message.type() === 'error' && !/status of 40[14]/.test(message.text())) page.problems.push(`console: ${message.text()}`);
+    if (message.type() === 'error' && !/status of 40[14]/.test(message.text()))
+      page.problems.push(`console: ${message.text()}`);
   });
   return page;
 }
@@ -154,7 +155,8 @@ export async function withScreenshot(page, name, body) {
 
 // A study of ballistic clusters small enough for tests: every combination of `speeds`,
 // `primaries` and `gammas`, `replicates` each.
-export function smallStudy(name, { speeds, primaries = [8, 16], gammas = [0.001, 0.01], replicates = 2, description = '' }) {
+export function smallStudy(name,
+  { speeds, primaries = [8, 16], gammas = [0.001, 0.01], replicates = 2, description = '' }) {
   return {
     name, description,
     base: {

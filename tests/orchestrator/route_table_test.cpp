@@ -5,19 +5,13 @@
 // description lists: a handler's answer, never the router's "no endpoint". The service is a real
 // `aerobreak serve` with worker jobs of the engine's test double (tests/support/synthetic_worker.cpp).
 #include <cctype>
-#include <fstream>
 #include <set>
 
 #include "orchestrator/service/routes.hpp"
-#include "tests/orchestrator/service_process.hpp"
+#include "tests/orchestrator/synthetic_service.hpp"
 
 namespace aerobreak::testing {
 namespace {
-
-Json openapi() {
-  std::ifstream in(std::filesystem::path(AEROBREAK_SOURCE_DIR) / "schemas" / "openapi.json");
-  return Json::parse(in);
-}
 
 std::string lower(std::string_view text) {
   std::string out(text);
@@ -73,10 +67,7 @@ TEST_CASE("Every route is an operation of schemas/openapi.json, and every operat
 
 TEST_CASE("Every documented operation answers over HTTP with a status its description lists", "[service][routes]") {
   ScratchDirectory scratch("routes");
-  ::setenv("AEROBREAK_SYNTHETIC_RANKS", "4", 1);
-  ::setenv("AEROBREAK_SYNTHETIC_DELAY", "0", 1);
-  ServiceProcess service(scratch.path(),
-                         {"--launcher", "direct", "--ranks", "1", "--worker-program", AEROBREAK_SYNTHETIC_WORKER});
+  ServiceProcess service(scratch.path(), synthetic_worker_options());
   const Json study = grid_study();
   const auto study_id = submit(service, study).at("id").get<std::int64_t>();
   REQUIRE(eventually([&] { return study_complete(service, study_id); }, 120s));

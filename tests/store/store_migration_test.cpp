@@ -1,6 +1,7 @@
 // Migration 2 on a store written by schema version 1 (made here from version 1's own SQL):
 // stored results are classified again by what leaves the wall, from their stored fragments,
-// without re-running them. Migration 9 on a store of version 8: each case's N read from its document.
+// without re-running them. Migration 9 on a store of version 8: each case's N read from its document;
+// migration 10: a cluster file's N from its results' fragments.
 #include <optional>
 #include <string>
 #include <vector>
@@ -238,6 +239,51 @@ TEST_CASE("A case's N is stored with it when its study is submitted", "[store]")
   REQUIRE(points.size() == 2);
   CHECK(points[0].primaries == 128);
   CHECK_FALSE(points[1].primaries);
+}
+
+TEST_CASE("A cluster file's N is stored with its first result, from the fragments", "[store]") {
+  testing::TemporaryStoreFile file("cluster-file-primaries");
+  Store store(file.path());
+  auto study = testing::submission("study", "case", {1.0});
+  study.cases[0].document["cluster"] = {{"file", {{"path", "cluster.xyz"}}}};
+  const auto receipt = store.submit_study(study);
+  CHECK_FALSE(store.grid_point_cases(receipt.study_id)[0].primaries);
+  const auto claimed = store.claim_next_case(store.start_job("test", 1));
+  REQUIRE(claimed);
+  REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, testing::result_document("break-up", {20, 9, 3}), "",
+                              1.0));
+  CHECK(store.grid_point_cases(receipt.study_id)[0].primaries == 32);
+  REQUIRE(store.study_outcomes(receipt.study_id).table.cases.size() == 1);
+  CHECK(store.study_outcomes(receipt.study_id).table.cases[0].primaries == 32);
+}
+
+TEST_CASE("Migration 10 stores a cluster file's N from its results and drops the fits made without it", "[store]") {
+  testing::TemporaryStoreFile file("migration-10");
+  {
+    write_version_8_store(file.path(), {R"({"cluster": {"file": {"path": "cluster.h5"}}})",
+                                        R"({"cluster": {"file": {"path": "other.h5"}}})"});
+    SqliteDatabase db(file.path());
+    migrate_store(db, store_migrations().first(9));
+    db.execute(
+        "INSERT INTO fragments (case_id, rank, primaries, mass, on_wall) VALUES (1, 0, 24, 24.0, 1), "
+        "(1, 1, 8, 8.0, 0);"
+        "INSERT INTO correlation_sets (id, study_id, request, result_set_version, result_set_hash, "
+        "aerobreak_version, computed_at, fit_seconds, summary) VALUES (1, 1, '{}', 1, 'h', 'v', 0, 0, '{}');"
+        "INSERT INTO correlation_fits (set_id, name, kind, status, document) VALUES (1, 'f', 'k', 'ok', '{}')");
+  }
+  {
+    Store store(file.path());
+    CHECK(store.opened_at_version() == 9);
+  }
+  SqliteDatabase db(file.path());
+  auto cases = db.prepare("SELECT primaries FROM cases ORDER BY id");
+  std::vector<std::optional<std::int64_t>> primaries;
+  while (cases.step()) primaries.push_back(cases.optional_integer(0));
+  CHECK(primaries == std::vector<std::optional<std::int64_t>>{32, std::nullopt});  // the second has no result
+  auto sets = db.prepare("SELECT (SELECT count(*) FROM correlation_sets), (SELECT count(*) FROM correlation_fits)");
+  REQUIRE(sets.step());
+  CHECK(sets.integer(0) == 0);
+  CHECK(sets.integer(1) == 0);
 }
 
 }  // namespace aerobreak

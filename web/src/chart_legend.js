@@ -2,9 +2,9 @@
 // measured series and its fit) get a key of their kinds, each swatch drawn as the kind is plotted
 // (a line with a dot and a whisker for measured values, a dot alone for measured points, a dashed,
 // dotted or solid line over a light band for a fit, a ring for markers) and labelled by
-// curve.styleLabel, then one entry per group in the group's colour (none for a single group). Other curves get an entry of
-// their own, with their swatch. A click on an entry (or Enter) hides or shows its series: a kind
-// in the key all of that kind, a group all of that group.
+// curve.styleLabel, then one entry per group in the group's colour (none for a single group).
+// Other curves get an entry of their own, with their swatch. A click on an entry (or Enter) hides
+// or shows its series: a kind in the key all of that kind, a group all of that group.
 import { el } from './dom.js';
 
 const kKeyColor = '#4a5361';
@@ -25,8 +25,8 @@ function colourBlock(color) {
 
 // A legend entry that flips between shown and hidden on a click or Enter, calling `onFlip(shown)`.
 function switchEntry(children, dataset, onFlip) {
-  const entry = el('li', { tabindex: 0, role: 'switch', 'aria-checked': 'true', title: 'click to hide or show', dataset },
-    children);
+  const entry = el('li',
+    { tabindex: 0, role: 'switch', 'aria-checked': 'true', title: 'click to hide or show', dataset }, children);
   const flip = () => {
     const shown = entry.getAttribute('aria-checked') !== 'true';
     entry.setAttribute('aria-checked', String(shown));
@@ -66,9 +66,10 @@ export function legend(curves, toggle) {
   const keyColor = groups.length === 1 ? groups[0].color : kKeyColor;
   const keyEntries = kinds.map((curve) => switchEntry([swatch(curve, keyColor), curve.styleLabel],
     { kind: curve.style, points: 0 }, flipping(`kind:${kindOf(curve)}`)));
-  const groupEntries = groups.length === 1 ? [] : groups.map((curve) => switchEntry([colourBlock(curve.color), curve.groupLabel],
-    { group: curve.group, points: grouped.filter((c) => c.group === curve.group).reduce((n, c) => n + c.points.length, 0) },
-    flipping(`group:${curve.group}`)));
+  const pointsOf = (group) => grouped.filter((c) => c.group === group).reduce((n, c) => n + c.points.length, 0);
+  const groupEntries = groups.length === 1 ? [] : groups.map((curve) =>
+    switchEntry([colourBlock(curve.color), curve.groupLabel], { group: curve.group, points: pointsOf(curve.group) },
+      flipping(`group:${curve.group}`)));
   const ownEntries = curves.filter((curve) => curve.group === undefined).map((curve) =>
     switchEntry([swatch(curve), curve.label], { style: curve.style, points: curve.points.length }, flipping(curve)));
   return el('div', { class: 'legends' },

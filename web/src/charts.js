@@ -48,7 +48,8 @@ export function colourGroups(curves) {
   for (const curve of curves) {
     const hue = paletteColor(Math.max(0, hues.indexOf(JSON.stringify(curve.groupValues[hueAxis]))));
     const shade = shadeAxis ? shades.indexOf(JSON.stringify(curve.groupValues[shadeAxis])) : 0;
-    curve.color = shadeAxis && shades.length > 1 ? lighter(hue, (0.5 * (shades.length - 1 - shade)) / (shades.length - 1)) : hue;
+    curve.color = shadeAxis && shades.length > 1
+      ? lighter(hue, (0.5 * (shades.length - 1 - shade)) / (shades.length - 1)) : hue;
   }
   return curves;
 }

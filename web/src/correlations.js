@@ -28,9 +28,11 @@ export async function loadCorrelationSummary(studyId) {
 }
 
 // Whether every axis value of a fit's group equals the grid point's.
-const groupMatches = (group, gridPoint) => Object.entries(group).every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
+const groupMatches = (group, gridPoint) => Object.entries(group)
+  .every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
 // Whether the group lies in the slice ({axis: valueKey}) the plots show.
-const inSlice = (group, slice) => Object.entries(slice).every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
+const inSlice = (group, slice) => Object.entries(slice)
+  .every(([axis, key]) => !(axis in group) || valueKey(group[axis]) === key);
 // A group's own fit: a pooled model names the axes it pools along.
 const isGroupFit = (fit, outcome, dose) => fit.kind === 'logistic' && fit.response === outcome && fit.dose === dose &&
   fit.pooled_over.length === 0;
@@ -58,7 +60,8 @@ export class Correlations {
   // One dashed curve with its band per measured curve (series.js curvesAlong) that has a fit.
   async fittedCurves(measured, { outcome, xAxis, slice }) {
     const fits = this.groupFits(outcome, xAxis, slice);
-    const pairs = measured.map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
+    const pairs = measured
+      .map((curve) => ({ curve, fit: fits.find((fit) => groupMatches(fit.group, curve.points[0].row.grid_point)) }))
       .filter(({ fit }) => fit);
     const documents = await Promise.all(pairs.map(({ fit }) => this.document(fit.name)));
     return pairs.flatMap(({ curve, fit }, i) => (documents[i].curves || []).slice(0, 1).map((fitted) => ({
@@ -72,8 +75,8 @@ export class Correlations {
   // other than N outside the slice), the groups' estimates; v50 carries its 95 % interval as a
   // band and is drawn solid, v10 dashed, v90 dotted. `group` keys the condition (its axis values
   // in `groupValues`), so that a condition's measured and fitted series share a colour and an
-  // entry of the legend.
-  criticalCurves(outcome, xAxis, slice) {
+  // entry of the legend. Axes named in `names` (axis_names.js AxisNames).
+  criticalCurves(outcome, xAxis, slice, names) {
     const series = new Map();
     for (const fit of this.groupFits(outcome, xAxis, slice)) {
       if (!('primaries' in fit.group)) continue;
@@ -83,7 +86,7 @@ export class Correlations {
         if (typeof critical.estimate !== 'number') continue;
         const level = levelName(critical.level, fit.dose);
         const key = `${level} ${valueKey(others)}`;
-        const where = others.map(([axis, value]) => `, ${axis === 'gamma_over_kn' ? 'γ/k_n' : axis} = ${value}`);
+        const where = others.map(([axis, value]) => `, ${names.symbol(axis)} = ${value}`);
         const groupValues = Object.fromEntries(others);
         if (!series.has(key)) series.set(key, { label: `fitted ${level}${where.join('')}`, level, style: 'fitted',
           groupValues, group: conditionKey(groupValues), groupLabel: where.join('').slice(2) || 'all',
@@ -98,8 +101,8 @@ export class Correlations {
 
   // The measured crossings of 0.5 against N, as the service computes them from each group's
   // measured proportions (observed_crossings of the fits along x), one series per other series axis.
-  observedCurves(outcome, xAxis, slice) {
-    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice);
+  observedCurves(outcome, xAxis, slice, names) {
+    return observedCriticalCurves(this.groupFits(outcome, xAxis, slice), slice, names);
   }
 
   // The scaling fits of v50 for `outcome` (exponents per axis) whose group lies in the slice.

@@ -53,7 +53,8 @@ export function formatTime(unixSeconds) {
 export function table(columns, rows, attributes = {}) {
   const head = el('tr', {}, columns.map((column) => el('th', {}, column.label)));
   const body = rows.map((row) =>
-    el('tr', {}, columns.map((column) => el('td', { class: column.numeric ? 'number' : column.className }, column.value(row)))));
+    el('tr', {}, columns.map((column) =>
+      el('td', { class: column.numeric ? 'number' : column.className }, column.value(row)))));
   return el('table', attributes, el('thead', {}, head), el('tbody', {}, body));
 }
 

@@ -1,28 +1,8 @@
 // Shaping the server's per-grid-point statistics into plot series: pure functions, no DOM.
-import { unitText, withUnit } from './units.js';
+import { kDerivedX } from './axis_names.js';
 
-const kAxisLabels = {
-  impact_speed: 'impact speed v₀', gamma_over_kn: 'γ/k_n', primaries: 'N',
-  energy_per_contact: 'energy per contact E_kin / (N_c E_break)',
-};
-// The kind of unit of each axis that has one (the study's units name it: study.units).
-const kAxisUnits = { impact_speed: 'speed' };
-const kShortLabels = { impact_speed: 'v₀', gamma_over_kn: 'γ/k_n', primaries: 'N', energy_per_contact: 'E/(N_c E_b)' };
 // Axes that get one curve per value (the others are fixed by the slice choosers).
 export const kSeriesAxes = ['primaries', 'gamma_over_kn'];
-// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
-// which varies along the named axis (each point of a curve is still one grid point).
-const kDerivedX = { energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean' } };
-
-// An axis's name for the page, with its unit in the study's `units` (GET /api/studies/ID) if it has one.
-export const axisLabel = (name, units = {}) => withUnit(kAxisLabels[name] || name, units[kAxisUnits[name]]);
-// A value of an axis with its unit, e.g. "20 m/s".
-export const axisValueText = (name, value, units = {}) => {
-  const unit = units[kAxisUnits[name]];
-  return unit ? `${value} ${unitText(unit)}` : String(value);
-};
-export const shortAxisLabel = (name) => kShortLabels[name] || name;
-const shortLabel = shortAxisLabel;
 export const valueKey = (value) => JSON.stringify(value);
 // The same key for the same axis values in whatever order: a condition of the series axes.
 export const conditionKey = (values) => JSON.stringify(Object.entries(values)
@@ -59,17 +39,19 @@ export function inSlice(gridPoint, slice) {
   return Object.entries(slice).every(([axis, key]) => valueKey(gridPoint[axis]) === key);
 }
 
-function curveLabel(groupValues) {
-  const parts = Object.entries(groupValues).map(([axis, value]) => `${shortLabel(axis)} = ${value}`);
+// "N = 16, γ/k_n = 0.001" in the symbols of `names` (axis_names.js AxisNames).
+function curveLabel(groupValues, names) {
+  const parts = Object.entries(groupValues).map(([axis, value]) => `${names.symbol(axis)} = ${value}`);
   return parts.length ? parts.join(', ') : 'all';
 }
 
 // One curve per combination of the series axes, among the grid points in the slice: points
-// {x, y, lo, hi} sorted by x, from yOf(row) = {y, lo, hi} or null (no value there).
-export function curvesAlong(rows, { axes, xAxis, slice, yOf }) {
+// {x, y, lo, hi} sorted by x, from yOf(row) = {y, lo, hi} or null (no value there), named in `names`.
+export function curvesAlong(rows, { axes, xAxis, slice, yOf, names }) {
   const along = alongAxis(xAxis);
   const xOf = xValueOf(xAxis);
-  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along && axis.values.length > 1);
+  const seriesAxes = axes.filter((axis) => kSeriesAxes.includes(axis.name) && axis.name !== along &&
+    axis.values.length > 1);
   const curves = new Map();
   for (const row of rows) {
     if (!inSlice(row.grid_point, slice)) continue;
@@ -78,7 +60,8 @@ export function curvesAlong(rows, { axes, xAxis, slice, yOf }) {
     if (!value || value.y === null || value.y === undefined || x === null) continue;
     const groupValues = Object.fromEntries(seriesAxes.map((axis) => [axis.name, row.grid_point[axis.name]]));
     const key = valueKey(groupValues);
-    if (!curves.has(key)) curves.set(key, { key, groupValues, label: curveLabel(groupValues), points: [] });
+    if (!curves.has(key)) curves.set(key, { key, groupValues, label: curveLabel(groupValues, names),
+      points: [] });
     curves.get(key).points.push({ x, ...value, row });
   }
   const sorted = [...curves.values()];
@@ -102,15 +85,16 @@ export const meanOf = (quantity) => (row) => {
 
 // Critical speed against N from the service's measured crossings (`observed_crossings` of each
 // group's fit, which the fitting library computes): one series per value of the series axes other
-// than N (those outside the slice).
-export function observedCriticalCurves(fits, slice, level = 0.5) {
+// than N (those outside the slice), named in `names`.
+export function observedCriticalCurves(fits, slice, names, level = 0.5) {
   const series = new Map();
   for (const fit of fits) {
     const crossing = (fit.observed_crossings || []).find((c) => c.level === level);
     if (!('primaries' in fit.group) || !crossing || typeof crossing.dose !== 'number') continue;
-    const rest = Object.fromEntries(Object.entries(fit.group).filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
+    const rest = Object.fromEntries(Object.entries(fit.group)
+      .filter(([axis]) => axis !== 'primaries' && !(axis in slice)));
     const key = valueKey(rest);
-    if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest), points: [] });
+    if (!series.has(key)) series.set(key, { key, groupValues: rest, label: curveLabel(rest, names), points: [] });
     series.get(key).points.push({ x: fit.group.primaries, y: crossing.dose });
   }
   const sorted = [...series.values()];
@@ -119,15 +103,15 @@ export function observedCriticalCurves(fits, slice, level = 0.5) {
 }
 
 // Fragment-size distributions: one series per x value (e.g. impact speed), fragments of each size
-// per result.
-export function fragmentCurves(response, xAxis, units) {
+// per result, named in `names`.
+export function fragmentCurves(response, xAxis, names) {
   const along = alongAxis(xAxis);
   return response.grid_points
     .filter((point) => point.results > 0)
     .sort((a, b) => a.grid_point[along] - b.grid_point[along])
     .map((point) => ({
       key: valueKey(point.grid_point[along]),
-      label: `${shortLabel(along)} = ${axisValueText(along, point.grid_point[along], units)} ` +
+      label: `${names.symbol(along)} = ${names.valueText(along, point.grid_point[along])} ` +
         `(${point.results} results)`,
       points: point.sizes.map(([primaries, count]) => ({ x: primaries, y: count / point.results })),
     }));

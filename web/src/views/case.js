@@ -4,7 +4,7 @@
 import { getJson } from '../api.js';
 import { el, formatNumber, formatTime, replaceChildren, table } from '../dom.js';
 import { plotCurves } from '../charts.js';
-import { axisLabel } from '../series.js';
+import { AxisNames } from '../axis_names.js';
 import { caseUnits } from '../units.js';
 import { energyGroupsSection, facts, outcomeSection, validitySection } from './case_outcome.js';
 
@@ -66,10 +66,10 @@ function attemptsSection(detail) {
 }
 
 // The grid point's values in words, each axis with its unit: the study's inputs, in the case's
-// unit system (GET /api/cases/ID: units).
+// unit system, named as the service describes them (GET /api/cases/ID: axes).
 const valueText = (value) => (typeof value === 'number' ? formatNumber(value, 6) : JSON.stringify(value));
-const gridPointText = (gridPoint, units) => Object.entries(gridPoint || {})
-  .map(([axis, value]) => `${axisLabel(axis, units)} = ${valueText(value)}`).join(', ');
+const gridPointText = (gridPoint, names) => Object.entries(gridPoint || {})
+  .map(([axis, value]) => `${names.label(axis)} = ${valueText(value)}`).join(', ');
 
 const kUnitSystems = { physical: 'SI (a physical case)', reduced: 'reduced: d, m, τ = √(m/k_n), energy k_n d²' };
 
@@ -90,7 +90,8 @@ export async function showCase(view, parameters) {
     el('h1', { id: 'case-title' }, `Case ${detail.id}`),
     el('p', { class: 'description' }, (detail.document || {}).name || ''),
     facts([['status', detail.status], ['outcome', detail.outcome],
-      ['grid point', gridPointText(detail.grid_point, detail.units)], ['units', kUnitSystems[detail.units.system]],
+      ['grid point', gridPointText(detail.grid_point, new AxisNames(detail.axes))],
+      ['units', kUnitSystems[detail.units.system]],
       ['replicate', String(detail.replicate)], ['hash', detail.hash],
       ['attempts', `${detail.attempts} (${detail.failures} failed)`],
       ['worker', detail.worker], ['finished', formatTime(detail.finished_at)], ['error', detail.error]]),

@@ -52,8 +52,9 @@ export function outcomeSection(outcome, units) {
 }
 
 function strainRow(label, strain) {
-  return strain ? [label, `overlap ${formatNumber(strain.overlap_ratio, 3)}, contact radius ${formatNumber(strain.contact_radius_ratio, 3)}`]
-    : [label, undefined];
+  if (!strain) return [label, undefined];
+  return [label,
+    `overlap ${formatNumber(strain.overlap_ratio, 3)}, contact radius ${formatNumber(strain.contact_radius_ratio, 3)}`];
 }
 
 export function validitySection(validity) {
@@ -62,10 +63,12 @@ export function validitySection(validity) {
   return el('section', { class: 'panel', id: 'validity' }, el('h2', {}, 'Validity'),
     el('p', { class: within ? 'ok' : 'warning', id: 'validity-verdict' }, within
       ? 'Within the small-strain range of the contact laws.'
-      : 'Outside the small-strain range of the contact laws (docs/MODEL.md 3.7): this result extrapolates the contact model.'),
+      : 'Outside the small-strain range of the contact laws (docs/MODEL.md 3.7): this result extrapolates the ' +
+        'contact model.'),
     facts([['deepest overlap / primary radius', formatNumber(validity.deepest_overlap_ratio, 4)],
       ['largest contact radius / primary radius', formatNumber(validity.largest_contact_radius_ratio, 4)],
-      strainRow('particle-particle', validity.pair), strainRow('with the wall', validity.wall), strainRow('limits', validity.limits),
+      strainRow('particle-particle', validity.pair), strainRow('with the wall', validity.wall),
+      strainRow('limits', validity.limits),
       ['ratios are upper bounds', yesNo(validity.bound)]], { id: 'validity-facts' }));
 }
 

@@ -3,7 +3,7 @@
 // asked for while the user reads this one, so that turning to it shows it at once.
 import { getJson } from '../api.js';
 import { el, formatNumber, replaceChildren, select, table } from '../dom.js';
-import { axisLabel, valueKey } from '../series.js';
+import { valueKey } from '../series.js';
 
 const kPageSize = 25;
 const kStatuses = ['queued', 'running', 'done', 'failed', 'cancelled'];
@@ -18,10 +18,10 @@ function flagsText(c) {
   return flags.join(', ');
 }
 
-function columns(axes, units) {
+function columns(axes, names) {
   return [
     { label: 'Case', value: (c) => el('a', { href: `/?case=${c.id}`, 'data-nav': true }, String(c.id)) },
-    ...axes.map((axis) => ({ label: axisLabel(axis.name, units), value: (c) => formatNumber(c.grid_point[axis.name], 4),
+    ...axes.map((axis) => ({ label: names.label(axis.name), value: (c) => formatNumber(c.grid_point[axis.name], 4),
       numeric: true })),
     { label: 'Replicate', value: (c) => c.replicate, numeric: true },
     { label: 'Status', value: (c) => c.status },
@@ -42,21 +42,24 @@ export function createCaseTable({ state, studyId }) {
   const pager = el('div', { class: 'pager', id: 'case-pager' });
   const node = el('div', {}, filters, holder, pager);
   let axes = [];
-  let units = {};
+  let names = null;
   let request = 0;
 
   const change = (changes) => {
     state.set({ ...changes, page: changes.page === undefined ? null : changes.page });
-    load(axes, units);
+    load(axes, names);
   };
   const anyOf = (values, labels = values) => [['', 'any'], ...values.map((v, i) => [v, labels[i]])];
 
   function drawFilters() {
     replaceChildren(filters,
-      el('label', {}, 'Status ', select(anyOf(kStatuses), state.get('f.status', ''), (v) => change({ 'f.status': v }), { id: 'filter-status' })),
-      el('label', {}, 'Outcome ', select(anyOf(kOutcomes), state.get('f.outcome', ''), (v) => change({ 'f.outcome': v }), { id: 'filter-outcome' })),
-      axes.map((axis) => el('label', {}, `${axisLabel(axis.name, units)} `,
-        select(anyOf(axis.values.map(valueKey), axis.values.map((v) => formatNumber(v, 4))), state.get(`f.axis.${axis.name}`, ''),
+      el('label', {}, 'Status ', select(anyOf(kStatuses), state.get('f.status', ''),
+        (v) => change({ 'f.status': v }), { id: 'filter-status' })),
+      el('label', {}, 'Outcome ', select(anyOf(kOutcomes), state.get('f.outcome', ''),
+        (v) => change({ 'f.outcome': v }), { id: 'filter-outcome' })),
+      axes.map((axis) => el('label', {}, `${names.label(axis.name)} `,
+        select(anyOf(axis.values.map(valueKey), axis.values.map((v) => formatNumber(v, 4))),
+          state.get(`f.axis.${axis.name}`, ''),
           (v) => change({ [`f.axis.${axis.name}`]: v }), { dataset: { filterAxis: axis.name } }))));
   }
 
@@ -83,22 +86,25 @@ export function createCaseTable({ state, studyId }) {
     return ahead.get(url) || getJson(url);
   }
 
-  // Draws the page of cases the URL asks for, of a study with `studyAxes` in `studyUnits`.
-  async function load(studyAxes, studyUnits, pending = fetchPage()) {
+  // Draws the page of cases the URL asks for, of a study with `studyAxes` (GET .../grid) that
+  // `axisNames` names (axis_names.js AxisNames).
+  async function load(studyAxes, axisNames, pending = fetchPage()) {
     axes = studyAxes;
-    units = studyUnits;
+    names = axisNames;
     drawFilters();
     const page = Number(state.get('page', 0));
     const mine = ++request;
     const result = await pending;
     if (mine !== request) return;
     holder.dataset.total = result.total;
-    replaceChildren(holder, table(columns(axes, units), result.items));
+    replaceChildren(holder, table(columns(axes, names), result.items));
     const first = result.total === 0 ? 0 : page * kPageSize + 1;
     replaceChildren(pager,
-      el('button', { id: 'page-previous', disabled: page === 0, onclick: () => change({ page: page - 1 || null }) }, '← previous'),
+      el('button', { id: 'page-previous', disabled: page === 0, onclick: () => change({ page: page - 1 || null }) },
+        '← previous'),
       el('span', { id: 'page-range' }, `${first}–${page * kPageSize + result.items.length} of ${result.total}`),
-      el('button', { id: 'page-next', disabled: (page + 1) * kPageSize >= result.total, onclick: () => change({ page: page + 1 }) }, 'next →'));
+      el('button', { id: 'page-next', disabled: (page + 1) * kPageSize >= result.total,
+        onclick: () => change({ page: page + 1 }) }, 'next →'));
     if ((page + 1) * kPageSize < result.total) askAhead(pageUrl(page + 1));
   }
   // Drops the pages asked for ahead (the study's cases changed).

@@ -20,7 +20,8 @@ const kColumns = [
   { label: 'Cases', value: (s) => s.cases, numeric: true },
   { label: 'Progress', value: (s) => progressBar(s.progress) },
   { label: 'Counts', value: (s) => el('span', { class: 'counts' }, countsText(s.progress.counts)) },
-  { label: 'Cases/h', value: (s) => el('span', { class: 'rate' }, formatNumber(s.progress.cases_per_hour, 3)), numeric: true },
+  { label: 'Cases/h', value: (s) => el('span', { class: 'rate' }, formatNumber(s.progress.cases_per_hour, 3)),
+    numeric: true },
   { label: 'Time left',
     value: (s) => (s.progress.complete || s.status === 'cancelled' ? '–' : formatDuration(s.progress.seconds_left)) },
   { label: 'Submitted', value: (s) => formatTime(s.created_at) },
@@ -42,9 +43,11 @@ export async function showStudies(view, parameters, { navigate, showNotice }) {
         ? el('p', {}, 'No studies yet. ', el('a', { href: '/?submit', 'data-nav': true }, 'Submit one'), '.')
         : table(kColumns, page.items, { id: 'studies-table' }));
       replaceChildren(pager,
-        offset > 0 && el('button', { onclick: () => navigate(query({ offset: Math.max(0, offset - kPageSize) })) }, '← newer'),
+        offset > 0 && el('button',
+          { onclick: () => navigate(query({ offset: Math.max(0, offset - kPageSize) })) }, '← newer'),
         `${page.total === 0 ? 0 : offset + 1}–${offset + page.items.length} of ${page.total}`,
-        offset + kPageSize < page.total && el('button', { onclick: () => navigate(query({ offset: offset + kPageSize })) }, 'older →'));
+        offset + kPageSize < page.total && el('button',
+          { onclick: () => navigate(query({ offset: offset + kPageSize })) }, 'older →'));
       showNotice('');
     } catch (error) {
       showNotice(`cannot reach the service: ${error.message}`);

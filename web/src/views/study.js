@@ -3,7 +3,8 @@
 // table filters, page) is kept in the URL, so that the address reproduces the view.
 import { getJson, postJson } from '../api.js';
 import { el, formatDuration, formatNumber, replaceChildren, select, table } from '../dom.js';
-import { axisLabel, defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
+import { defaultXAxis, derivedXChoices, sliceAxes, valueKey } from '../series.js';
+import { AxisNames } from '../axis_names.js';
 import { progressBar, studyState } from '../progress.js';
 import { Correlations, loadCorrelationSummary } from '../correlations.js';
 import { createPlots } from './study_plots.js';
@@ -44,11 +45,19 @@ function progressText(progress) {
   return `${progress.total} cases: ${parts.join(', ')}${rate}${left}`;
 }
 
-function axesTable(axes, units) {
+// The study's axes (GET /api/studies/ID: axes) with their values, the search's axis (docs/ADAPTIVE.md)
+// by its range and the number of values run so far (`gridAxes`, GET /api/studies/ID/grid: axes).
+function axesTable(studyAxes, gridAxes, names) {
+  const valuesText = (axis) => {
+    if (axis.role !== 'search') return axis.values.map((value) => formatNumber(value, 4)).join(', ');
+    const run = (gridAxes.find((other) => other.name === axis.name) || { values: [] }).values.length;
+    const [from, to] = axis.range.map((value) => formatNumber(value, 4));
+    return `searched over ${from}–${to}: ${run} value${run === 1 ? '' : 's'} run`;
+  };
   return table([
-    { label: 'Axis', value: (axis) => axisLabel(axis.name, units) },
-    { label: 'Values', value: (axis) => axis.values.map((value) => formatNumber(value, 4)).join(', ') },
-  ], axes, { id: 'axes-table' });
+    { label: 'Axis', value: (axis) => names.label(axis.name) },
+    { label: 'Values', value: valuesText },
+  ], studyAxes, { id: 'axes-table' });
 }
 
 const kUnitsText = { physical: 'SI units', reduced: 'reduced units (d, m, τ)',
@@ -67,18 +76,19 @@ function header(study, { onCancel }) {
       progressText(study.progress))));
 }
 
-function controls(state, grid, units, onChange) {
+function controls(state, grid, names, onChange) {
   const { axes } = grid;
   const xAxis = state.get('x', defaultXAxis(axes));
   const numericAxes = axes.filter((axis) => axis.values.length > 1 && axis.values.every((v) => typeof v === 'number'))
     .concat(derivedXChoices(grid).map((name) => ({ name })));
-  const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${axisLabel(axis.name, units)} `,
-    select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]), state.get(`s.${axis.name}`, valueKey(axis.values[0])),
+  const slices = sliceAxes(axes, xAxis).map((axis) => el('label', {}, `${names.label(axis.name)} `,
+    select(axis.values.map((v) => [valueKey(v), formatNumber(v, 4)]),
+      state.get(`s.${axis.name}`, valueKey(axis.values[0])),
       (value) => onChange({ [`s.${axis.name}`]: value }), { dataset: { slice: axis.name } })));
   return el('div', { class: 'controls', id: 'plot-controls' },
     el('label', {}, 'Outcome ', select(kOutcomes.map((o) => [o, o]), state.get('outcome', 'break-up'),
       (value) => onChange({ outcome: value }), { id: 'choose-outcome' })),
-    el('label', {}, 'Along ', select(numericAxes.map((a) => [a.name, axisLabel(a.name, units)]), xAxis,
+    el('label', {}, 'Along ', select(numericAxes.map((a) => [a.name, names.label(a.name)]), xAxis,
       (value) => onChange({ x: value }), { id: 'choose-x' })),
     slices);
 }
@@ -121,7 +131,7 @@ export async function showStudy(view, parameters, { showNotice }) {
   const firstCases = caseTable.fetchPage();
   firstCases.catch(() => {});
   const [study, grid] = await Promise.all([getJson(`/api/studies/${id}`), getJson(`/api/studies/${id}/grid`)]);
-  const units = study.units;
+  const names = new AxisNames(study.axes);
   let current = { study, grid };
   let timer = null;
   let stopped = false;
@@ -137,21 +147,22 @@ export async function showStudy(view, parameters, { showNotice }) {
   const plots = createPlots({ state });
   const tablesHolder = el('div');
   const controlsHolder = el('div');
-  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, units, (changes) => {
+  const drawControls = () => replaceChildren(controlsHolder, controls(state, current.grid, names, (changes) => {
     state.set(changes);
     drawControls();
-    if (Object.keys(changes).every((name) => name === 'outcome')) plots.drawOutcome(current.grid, units);
-    else plots.draw(current.grid, units);
+    if (Object.keys(changes).every((name) => name === 'outcome')) plots.drawOutcome(current.grid, names);
+    else plots.draw(current.grid, names);
   }));
   const headerHolder = el('div', {}, header(study, { onCancel }));
+  const axesHolder = el('div', {}, axesTable(study.axes, grid.axes, names));
   replaceChildren(view, headerHolder,
-    el('h2', {}, 'Axes'), axesTable(grid.axes, units),
+    el('h2', {}, 'Axes'), axesHolder,
     el('h2', {}, 'Outcomes'), controlsHolder, plots.node, tablesHolder,
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
-  await Promise.all([plots.draw(grid, units), caseTable.load(grid.axes, units, firstCases)]);
+  await Promise.all([plots.draw(grid, names), caseTable.load(grid.axes, names, firstCases)]);
   const askResultParts = createResultParts(id, { plots, tablesHolder,
-    redraw: () => plots.drawOutcome(current.grid, units), stopped: () => stopped });
+    redraw: () => plots.drawOutcome(current.grid, names), stopped: () => stopped });
   askResultParts(study);
 
   async function refresh() {
@@ -164,7 +175,8 @@ export async function showStudy(view, parameters, { showNotice }) {
     askResultParts(nextStudy);
     if (!gridChanged) return;
     caseTable.forget();
-    await Promise.all([plots.draw(nextGrid, units), caseTable.load(nextGrid.axes, units)]);
+    replaceChildren(axesHolder, axesTable(study.axes, nextGrid.axes, names));
+    await Promise.all([plots.draw(nextGrid, names), caseTable.load(nextGrid.axes, names)]);
   }
   async function poll() {
     try {

@@ -3,7 +3,6 @@
 // value the data do not pin down (its estimate outside the tested doses, or its interval reaching
 // far beyond them), and the scaling exponents of v50 (docs/CORRELATIONS.md).
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
-import { axisLabel } from '../series.js';
 import { extrapolations, kFarBeyond, kLevels, levelName } from '../correlations.js';
 import { unitText } from '../units.js';
 
@@ -13,10 +12,12 @@ function interval(critical, warning) {
   return warning ? [text, ' ', el('span', { class: 'warning-mark', title: warning }, '⚠')] : text;
 }
 
-function criticalColumns(shownAxes, { units, dose }, warningOf) {
-  const unit = dose === 'impact_speed' && units.speed ? ` (${unitText(units.speed)})` : '';
+// The table's columns; axes named in `names` (axis_names.js AxisNames), the critical values in the
+// unit of the dose's axis.
+function criticalColumns(shownAxes, { names, dose }, warningOf) {
+  const unit = names.unit(dose) ? ` (${unitText(names.unit(dose))})` : '';
   return [
-    ...shownAxes.map((axis) => ({ label: axisLabel(axis, units), value: (fit) => formatNumber(fit.group[axis], 4),
+    ...shownAxes.map((axis) => ({ label: names.label(axis), value: (fit) => formatNumber(fit.group[axis], 4),
       numeric: true })),
     { label: 'fit', value: (fit) => fit.name }, { label: 'status', value: (fit) => fit.status },
     { label: 'cases', value: (fit) => fit.cases, numeric: true },
@@ -28,15 +29,15 @@ function criticalColumns(shownAxes, { units, dose }, warningOf) {
 }
 
 const intervalText = (bounds) => (bounds || []).map((v) => formatNumber(v)).join(', ');
-const groupText = (group, units) => Object.entries(group).map(([axis,
-  value]) => `${axisLabel(axis, units)} = ${value}`).join(', ');
+const groupText = (group, names) => Object.entries(group).map(([axis,
+  value]) => `${names.label(axis)} = ${value}`).join(', ');
 
 // One line per extrapolated critical value.
-function warningLines(found, units, doseUnit) {
+function warningLines(found, names, doseUnit) {
   if (found.length === 0) return null;
   const text = ({ fit, level, critical, range }) => {
     const [lo, hi] = critical.ci95 || [];
-    const where = groupText(fit.group, units);
+    const where = groupText(fit.group, names);
     const value = `${formatNumber(critical.estimate)} [${formatNumber(lo)}, ${formatNumber(hi)}]${doseUnit}`;
     const tested = `${formatNumber(range[0])}–${formatNumber(range[1])}${doseUnit}`;
     return `${level}${where ? ` at ${where}` : ''}: ${value}, beyond the tested ${tested}: ` +
@@ -47,11 +48,11 @@ function warningLines(found, units, doseUnit) {
 }
 
 // "v50 ∝ N^e [lo, hi]" for each scaling fit that has exponents; nothing for those without.
-function scalingLines(fits, units) {
+function scalingLines(fits, names) {
   const lines = fits.filter((fit) => fit.exponents && Object.keys(fit.exponents).length > 0).map((fit) => {
     const terms = Object.entries(fit.exponents).map(([axis, e]) =>
-      `${axisLabel(axis, units)}^${formatNumber(e.estimate)} [${intervalText(e.ci95)}]`);
-    const where = groupText(fit.group || {}, units);
+      `${names.symbol(axis)}^${formatNumber(e.estimate)} [${intervalText(e.ci95)}]`);
+    const where = groupText(fit.group || {}, names);
     return el('p', { class: 'scaling' },
       `Scaling of v50${where ? ` at ${where}` : ''} (${fit.status}): v50 ∝ ${terms.join(' · ')} ` +
       '(exponents with 95 % intervals).');
@@ -61,15 +62,15 @@ function scalingLines(fits, units) {
 
 export function createCorrelationsPanel() {
   const body = el('div');
-  const note = el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the dose; ' +
-    'critical values where the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood intervals ' +
-    `(docs/CORRELATIONS.md). ⚠: the estimate lies outside the tested range of the dose, or its interval reaches more ` +
-    `than ${kFarBeyond} times beyond it.`);
+  const note = el('p', { class: 'note' }, 'Per group: logistic regression of the outcome against the log of the ' +
+    'dose; critical values where the fitted probability crosses 0.1, 0.5 and 0.9, with 95 % profile-likelihood ' +
+    'intervals (docs/CORRELATIONS.md). ⚠: the estimate lies outside the tested range of the dose, or its interval ' +
+    `reaches more than ${kFarBeyond} times beyond it.`);
   const node = el('section', { class: 'panel', id: 'panel-correlations', hidden: true },
     el('h2', {}, 'Correlations'), body, note);
 
   // Returns the extrapolated critical values drawn (for the critical-speed plot's note).
-  function draw(correlations, { outcome, xAxis, slice, units }) {
+  function draw(correlations, { outcome, xAxis, slice, names }) {
     node.hidden = !correlations;
     if (!correlations) return [];
     const fits = correlations.groupFits(outcome, xAxis, slice);
@@ -78,12 +79,12 @@ export function createCorrelationsPanel() {
       const entry = found.find((f) => f.fit === fit && f.level === level);
       return entry && `beyond the tested ${formatNumber(entry.range[0])}–${formatNumber(entry.range[1])}`;
     };
-    const doseUnit = xAxis === 'impact_speed' && units.speed ? ` ${unitText(units.speed)}` : '';
+    const doseUnit = names.unit(xAxis) ? ` ${unitText(names.unit(xAxis))}` : '';
     const shownAxes = fits.length ? Object.keys(fits[0].group).filter((axis) => !(axis in slice)) : [];
     replaceChildren(body, fits.length === 0 ? el('p', { class: 'note' },
-      `No fit of ${outcome} along ${axisLabel(xAxis, units)}.`)
-      : table(criticalColumns(shownAxes, { units, dose: xAxis }, warningOf), fits, { id: 'correlations-table' }),
-    warningLines(found, units, doseUnit), scalingLines(correlations.scalings(outcome, slice), units));
+      `No fit of ${outcome} along ${names.label(xAxis)}.`)
+      : table(criticalColumns(shownAxes, { names, dose: xAxis }, warningOf), fits, { id: 'correlations-table' }),
+    warningLines(found, names, doseUnit), scalingLines(correlations.scalings(outcome, slice), names));
     return found;
   }
   return { node, draw };

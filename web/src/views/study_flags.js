@@ -2,7 +2,7 @@
 // outside the contact laws' small-strain range and results without that check; counted over the
 // study and listed per grid point of the plotted slice.
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
-import { axisLabel, inSlice } from '../series.js';
+import { inSlice } from '../series.js';
 
 const kMaxRows = 50;
 export const kFlags = [
@@ -16,26 +16,29 @@ const total = (rows, field) => rows.reduce((sum, row) => sum + (row[field] || 0)
 export function createFlags() {
   const summary = el('p', { id: 'flags-summary' });
   const holder = el('div', { id: 'flags-table' });
-  const node = el('section', { class: 'panel', id: 'panel-flags' }, el('h2', {}, 'Flagged results'), summary, holder,
-    el('p', { class: 'note' }, 'Fractured on the wall: more than one fragment rests on the wall (a stick that cracked in ' +
-      'place is still a stick). Outside the small-strain range: the deepest overlap or the largest contact radius left ' +
-      'the range of the contact laws (docs/MODEL.md 3.7), so that the result extrapolates the contact model. Not ' +
-      'checked: results stored before the check existed.'));
+  const node = el('section', { class: 'panel', id: 'panel-flags' },
+    el('h2', {}, 'Flagged results'), summary, holder,
+    el('p', { class: 'note' }, 'Fractured on the wall: more than one fragment rests on the wall (a stick that ' +
+      'cracked in place is still a stick). Outside the small-strain range: the deepest overlap or the largest ' +
+      'contact radius left the range of the contact laws (docs/MODEL.md 3.7), so that the result extrapolates the ' +
+      'contact model. Not checked: results stored before the check existed.'));
 
   // `shownAxes`: the axes that vary within the slice (x and the series axes), one column each.
-  function draw(grid, { slice, shownAxes, units }) {
+  function draw(grid, { slice, shownAxes, names }) {
     const counts = kFlags.map(([flag, label]) => `${total(grid.grid_points, flag)} ${label}`);
     replaceChildren(summary, `Of ${total(grid.grid_points, 'finished')} results: ${counts.join(', ')}.`);
     for (const [flag] of kFlags) summary.dataset[flag] = total(grid.grid_points, flag);
-    const rows = grid.grid_points.filter((row) => inSlice(row.grid_point, slice) && kFlags.some(([flag]) => row[flag] > 0));
+    const rows = grid.grid_points.filter((row) => inSlice(row.grid_point, slice) &&
+      kFlags.some(([flag]) => row[flag] > 0));
     holder.dataset.rows = rows.length;
     const columns = [
-      ...shownAxes.map((axis) => ({ label: axisLabel(axis, units), value: (row) => formatNumber(row.grid_point[axis],
-        4), numeric: true })),
+      ...shownAxes.map((axis) => ({ label: names.label(axis), value: (row) => formatNumber(row.grid_point[axis], 4),
+        numeric: true })),
       { label: 'results', value: (row) => row.finished, numeric: true },
       ...kFlags.map(([flag, label]) => ({ label, value: (row) => row[flag], numeric: true })),
     ];
-    replaceChildren(holder, rows.length === 0 ? el('p', { class: 'note' }, 'No flagged result among the plotted grid points.')
+    replaceChildren(holder, rows.length === 0
+      ? el('p', { class: 'note' }, 'No flagged result among the plotted grid points.')
       : [table(columns, rows.slice(0, kMaxRows)),
         rows.length > kMaxRows && el('p', { class: 'note' }, `and ${rows.length - kMaxRows} more grid points`)]);
   }

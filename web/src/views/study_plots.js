@@ -7,8 +7,8 @@ import { getJson } from '../api.js';
 import { el, replaceChildren, select } from '../dom.js';
 import { colourGroups, plotCurves } from '../charts.js';
 import {
-  alongAxis, axisLabel, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
-  meanOf, probabilityOf, shortAxisLabel, sliceAxes, valueKey,
+  alongAxis, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
+  meanOf, probabilityOf, sliceAxes, valueKey,
 } from '../series.js';
 import { withUnit } from '../units.js';
 import { levelName } from '../correlations.js';
@@ -69,7 +69,8 @@ function createPanels() {
 // Measured curves of the series axes' groups (series.js curvesAlong), coloured by group, each the
 // measured member of its group in the legend (chart_legend.js).
 function measuredGroups(curves, styleLabel) {
-  return colourGroups(curves).map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
+  return colourGroups(curves)
+    .map((curve) => Object.assign(curve, { group: curve.key, groupLabel: curve.label, styleLabel }));
 }
 
 // The measured crossings as the service computes them (correlations.js observedCurves).
@@ -80,17 +81,20 @@ function measuredCritical(observed, xAxis) {
     label: `measured ${levelName(0.5, xAxis)}${curve.label === 'all' ? '' : `, ${curve.label}`}` }));
 }
 
+// The critical value along x against N, in the unit of the x axis (the service's description).
 function drawCritical(critical, view, observed, fitted) {
+  const { names, xAxis } = view;
   const hasN = view.axes.some((axis) => axis.name === 'primaries' && axis.values.length > 1) &&
-    alongAxis(view.xAxis) !== 'primaries';
+    alongAxis(xAxis) !== 'primaries';
   critical.node.hidden = !hasN;
   if (!hasN) return;
-  const speed = view.xAxis === 'impact_speed';
-  critical.heading.textContent = `Critical ${speed ? 'speed' : axisLabel(view.xAxis)} of ${view.outcome} against N`;
-  const points = measuredCritical(observed, view.xAxis);
+  const speed = xAxis === 'impact_speed';
+  critical.heading.textContent = `Critical ${speed ? 'speed' : names.label(xAxis)} of ${view.outcome} against N`;
+  const points = measuredCritical(observed, xAxis);
   colourGroups([...points, ...fitted]);
-  plotCurves(critical.chart, [...points, ...fitted], { xLabel: 'N (primaries)',
-    yLabel: speed ? withUnit('critical speed', view.units.speed) : `critical ${shortAxisLabel(view.xAxis)}`,
+  plotCurves(critical.chart, [...points, ...fitted], { xLabel: names.label('primaries'),
+    xLog: names.logScale('primaries'),
+    yLabel: withUnit(`critical ${speed ? 'speed' : names.symbol(xAxis)}`, names.unit(xAxis)),
     yLog: true, fitIntervals: false });
   critical.chart.dataset.fitted = fitted.length;
 }
@@ -113,7 +117,7 @@ function createFragmentsPlot(state, fragments) {
     const query = axisQuery({ ...view.slice, ...groupKeys });
     const response = await getJson(`/api/studies/${studyId}/fragment-sizes?${query}`);
     if (mine !== request) return;
-    plotCurves(fragments.chart, fragmentCurves(response, view.xAxis, view.units), {
+    plotCurves(fragments.chart, fragmentCurves(response, view.xAxis, view.names), {
       xLabel: 'fragment size (primaries)', yLabel: 'fragments per result', yLog: true });
   }
   return draw;
@@ -128,14 +132,14 @@ function createOutcomePlots({ probability, critical }, correlationsPanel) {
     const mine = ++drawing;
     await nextTask();
     if (mine !== drawing) return;
-    const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice };
+    const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
     const measured = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) }),
       'measured, whiskers: 95 % interval');
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
     const drawBoth = async (fitted, fittedCritical, observed) => {
       plotCurves(probability.chart, [...measured, ...fitted, ...markers],
-        { xLabel: view.xLabel, yLabel: `P(${view.outcome})`, bounds: kBounded });
+        { xLabel: view.xLabel, xLog: view.xLog, yLabel: `P(${view.outcome})`, bounds: kBounded });
       probability.chart.dataset.fitted = fitted.length;
       probability.chart.dataset.outcome = view.outcome;
       await nextTask();
@@ -147,8 +151,8 @@ function createOutcomePlots({ probability, critical }, correlationsPanel) {
     if (!correlations) return;
     const fitted = await correlations.fittedCurves(measured, view);
     if (mine === drawing)
-      await drawBoth(fitted, correlations.criticalCurves(view.outcome, view.xAxis, view.slice),
-        correlations.observedCurves(view.outcome, view.xAxis, view.slice));
+      await drawBoth(fitted, correlations.criticalCurves(view.outcome, view.xAxis, view.slice, view.names),
+        correlations.observedCurves(view.outcome, view.xAxis, view.slice, view.names));
   };
 }
 
@@ -166,7 +170,7 @@ export function createPlots({ state }) {
 
   // The plots that do not depend on the outcome, one task each; stops when a newer draw began.
   async function drawQuantities(grid, view, mine) {
-    const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice };
+    const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
     const charts = [
       [retained.chart, 'retained_mass_fraction', 'retained mass fraction', kBounded, undefined],
       [damage.chart, 'damage_ratio', 'damage ratio', kBounded, undefined],
@@ -177,23 +181,24 @@ export function createPlots({ state }) {
       if (mine !== drawing) return;
       const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
         'mean, whiskers: 95 % interval');
-      plotCurves(chart, curves, { xLabel: view.xLabel, yLabel, bounds, empty });
+      plotCurves(chart, curves, { xLabel: view.xLabel, xLog: view.xLog, yLabel, bounds, empty });
     }
     await nextTask();
     if (mine !== drawing) return;
     const shownAxes = grid.axes.filter((axis) => axis.values.length > 1 && !(axis.name in view.slice))
       .map((axis) => axis.name);
-    flags.draw(grid, { slice: view.slice, shownAxes, units: view.units });
+    flags.draw(grid, { slice: view.slice, shownAxes, names: view.names });
     const seriesCurves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
     await drawFragments(grid.study, seriesCurves, view).catch((error) => {
       replaceChildren(fragments.chart, el('p', { class: 'note' }, error.message));
     });
   }
 
-  function currentView(grid, units) {
+  // `names`: the study's axes as the service describes them (axis_names.js AxisNames).
+  function currentView(grid, names) {
     const xAxis = state.get('x', defaultXAxis(grid.axes));
-    return { outcome: state.get('outcome', 'break-up'), xAxis, slice: currentSlice(state, grid.axes, xAxis), units,
-      xLabel: axisLabel(xAxis, units), axes: grid.axes };
+    return { outcome: state.get('outcome', 'break-up'), xAxis, slice: currentSlice(state, grid.axes, xAxis), names,
+      xLabel: names.label(xAxis), xLog: names.logScale(xAxis), axes: grid.axes };
   }
 
   const outcomesOf = (grid, view) => drawOutcomePlots(grid, view, correlations).catch((error) => {
@@ -202,13 +207,13 @@ export function createPlots({ state }) {
 
   return {
     node,
-    // Every plot, for the grid statistics `grid` of a study in `units`.
-    draw: (grid, units) => {
-      const view = currentView(grid, units);
+    // Every plot, for the grid statistics `grid` of a study whose axes `names` describes.
+    draw: (grid, names) => {
+      const view = currentView(grid, names);
       return Promise.all([outcomesOf(grid, view), drawQuantities(grid, view, ++drawing)]);
     },
     // Only what depends on the outcome (another outcome chosen, or the fits arrived).
-    drawOutcome: (grid, units) => outcomesOf(grid, currentView(grid, units)),
+    drawOutcome: (grid, names) => outcomesOf(grid, currentView(grid, names)),
     // The correlations service's fits (correlations.js Correlations), once they have arrived.
     setCorrelations: (value) => {
       correlations = value;

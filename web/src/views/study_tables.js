@@ -2,7 +2,8 @@
 // per format for the chosen kind of table. Shown once the study has results.
 import { el, replaceChildren, select } from '../dom.js';
 
-const kKinds = [['grid', 'grid: per grid point'], ['fit', 'fit: from the fitted curves'], ['sections', 'sections: per fragment size section']];
+const kKinds = [['grid', 'grid: per grid point'], ['fit', 'fit: from the fitted curves'],
+  ['sections', 'sections: per fragment size section']];
 const kFormats = [['csv', 'CSV'], ['dat', '.dat'], ['json', 'JSON'], ['hdf5', 'HDF5'], ['melcor', 'MELCOR']];
 
 export function tablesPanel(studyId) {
@@ -12,6 +13,8 @@ export function tablesPanel(studyId) {
   }, label), ' ']));
   drawLinks('grid');
   return el('section', { class: 'panel', id: 'tables-panel' }, el('h2', {}, 'Lookup tables'),
-    el('div', { class: 'controls' }, el('label', {}, 'Table ', select(kKinds, 'grid', drawLinks, { id: 'choose-table-kind' }))),
-    links, el('p', { class: 'note' }, 'Tables for system codes, made by the service from the stored results; every column, unit and format: docs/EXPORT.md.'));
+    el('div', { class: 'controls' },
+      el('label', {}, 'Table ', select(kKinds, 'grid', drawLinks, { id: 'choose-table-kind' }))),
+    links, el('p', { class: 'note' }, 'Tables for system codes, made by the service from the stored results; every ' +
+      'column, unit and format: docs/EXPORT.md.'));
 }
