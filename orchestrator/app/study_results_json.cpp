@@ -1,16 +1,11 @@
 #include "orchestrator/app/study_results_json.hpp"
 
-#include "orchestrator/fitting/proportion.hpp"
+#include "orchestrator/fitting/estimate_json.hpp"
 
 namespace aerobreak {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-template <typename T>
-Json optional_json(const std::optional<T>& value) {
-  return value ? Json(*value) : Json(nullptr);
-}
 
 Json round_json(const SearchRoundRecord& round) {
   Json out{{"round", round.round}, {"decided_at", round.decided_at}};
@@ -41,30 +36,26 @@ Json search_groups_json(const std::vector<SearchGroupRecord>& groups) {
   return out;
 }
 
-nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell) {
+nlohmann::ordered_json grid_point_outcomes_json(const GridPointStatistics& statistics) {
+  const GridPointOutcomes& cell = statistics.outcomes;
   const std::size_t finished = cell.finished();
   nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
-  for (const auto& [outcome, count] : cell.outcomes) {
-    const auto estimate = wilson_interval(count, finished);
-    outcomes[outcome] = {{"count", count},
-                         {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-                         {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
-                                           : nlohmann::ordered_json(nullptr)}};
-  }
+  for (const auto& [outcome, count] : cell.outcomes)
+    outcomes[outcome] = proportion_json(count, wilson_interval(count, finished));
   return {{"grid_point", cell.grid_point},
           {"cases", cell.cases},
           {"finished", finished},
           {"failed", cell.failed},
           {"outcomes", outcomes},
-          {"retained_mass_fraction_mean", optional_json(cell.mean_retained_mass_fraction)},
-          {"damage_ratio_mean", optional_json(cell.mean_damage_ratio)},
-          {"energy_per_contact_mean", optional_json(cell.mean_energy_per_contact)},
+          {"retained_mass_fraction", mean_json(mean_estimate(statistics.retained_mass_fraction))},
+          {"damage_ratio", mean_json(mean_estimate(statistics.damage_ratio))},
+          {"energy_per_contact", mean_json(mean_estimate(statistics.energy_per_contact))},
           {"fractured_on_wall", cell.fractured_on_wall},
           {"small_strain_exceeded", cell.small_strain_exceeded},
           {"small_strain_unchecked", cell.small_strain_unchecked}};
 }
 
-nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells) {
+nlohmann::ordered_json outcome_table_json(const std::vector<GridPointStatistics>& cells) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const auto& cell : cells) rows.push_back(grid_point_outcomes_json(cell));
   return {{"confidence", 0.95}, {"interval", "wilson"}, {"grid_points", rows}};

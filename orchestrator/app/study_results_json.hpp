@@ -10,13 +10,13 @@ namespace aerobreak {
 // tables too (orchestrator/cli/outcome_table.hpp, search_table.hpp) as `aerobreak study results`
 // does from the API.
 
-// One grid point: its axis values, cases, finished and failed counts, and per outcome the count and
-// the probability among the finished cases with the 95 % Wilson interval
-// (orchestrator/fitting/proportion.hpp).
-nlohmann::ordered_json grid_point_outcomes_json(const GridPointOutcomes& cell);
-// Per grid point: counts of each outcome and its probability among the finished cases with the
-// 95 % Wilson interval.
-nlohmann::ordered_json outcome_table_json(const std::vector<GridPointOutcomes>& cells);
+// One grid point: its axis values, cases, finished and failed counts, per outcome the count and
+// the probability among the finished cases with the 95 % Wilson interval (fitting/proportion.hpp),
+// the means of the retained mass fraction, the damage ratio and the energy per contact over the
+// results that have them, with their Student intervals (fitting/mean_estimate.hpp), and the flags.
+nlohmann::ordered_json grid_point_outcomes_json(const GridPointStatistics& statistics);
+// Each grid point's row as above.
+nlohmann::ordered_json outcome_table_json(const std::vector<GridPointStatistics>& cells);
 
 // Each group of a search: its axis values, state, rounds, cases and current crossings with their
 // 95 % intervals; with every round's record when the groups carry their history.

@@ -69,7 +69,7 @@ std::vector<std::string> row_of(const Json& point, const std::string& rows_by) {
           percent(outcomes.at("stick")),
           percent(outcomes.at("bounce")),
           percent(outcomes.at("break-up")),
-          fraction(point.at("retained_mass_fraction_mean")),
+          fraction(point.at("retained_mass_fraction").at("mean")),
           count(point.at("fractured_on_wall")),
           flagged(point),
           count(outcomes.at("undetermined").at("count")),

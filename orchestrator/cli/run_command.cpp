@@ -214,7 +214,7 @@ int run(RunOptions options) {
                                      study.search->axis,
                                      study_axis_unit(study.search->axis, study_unit_system(study.document)));
   else
-    std::cout << format_outcome_table(outcome_table_json(store.outcomes(receipt.study_id)),
+    std::cout << format_outcome_table(outcome_table_json(store.grid_statistics(receipt.study_id)),
                                       study_unit_system(study.document));
   StudyFits fits(store);  // fitted once, for the critical speeds, the fit table and the code
   print_critical_speeds(store, fits, receipt.study_id);

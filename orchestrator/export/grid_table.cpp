@@ -6,7 +6,6 @@
 #include "engine/core/units.hpp"
 #include "orchestrator/export/equivalent_diameters.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
-#include "orchestrator/fitting/mean_interval.hpp"
 
 namespace aerobreak {
 namespace {
@@ -39,8 +38,7 @@ std::function<double(const GridRow&)> probability(const std::string& outcome, in
 std::function<double(const GridRow&)> moment_mean(Moments GridPointStatistics::*member, bool standard_deviation) {
   return [member, standard_deviation](const GridRow& row) {
     if (!row.statistics) return kMissing;
-    const Moments& moments = row.statistics->*member;
-    const auto estimate = mean_interval(moments.count, moments.sum, moments.sum_of_squares);
+    const auto estimate = mean_estimate(row.statistics->*member);
     if (!estimate) return kMissing;
     if (!standard_deviation) return estimate->mean;
     return estimate->standard_deviation.value_or(kMissing);

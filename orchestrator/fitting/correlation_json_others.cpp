@@ -103,11 +103,7 @@ nlohmann::ordered_json full_json(const RetainedFractionFit& fit, int points) {
     by_speed[std::exp(fit.data.design(i, 1))].push_back(fit.data.successes[i]);
   nlohmann::ordered_json data = nlohmann::ordered_json::array();
   for (const auto& [speed, fractions] : by_speed) {
-    const auto mean = mean_estimate(fractions);
-    data.push_back({{"dose", speed},
-                    {"n", mean->n},
-                    {"mean", mean->mean},
-                    {"standard_error", number_or_null(mean->standard_error)}});
+    data.push_back({{"dose", speed}, {"retained_mass_fraction", mean_json(mean_estimate(fractions))}});
   }
   json["data"] = data;
   nlohmann::ordered_json curve = nlohmann::ordered_json::array();

@@ -4,10 +4,6 @@
 
 namespace aerobreak {
 
-nlohmann::ordered_json number_or_null(const std::optional<double>& value) {
-  return value && std::isfinite(*value) ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
-}
-
 std::vector<double> log_spaced(double low, double high, int count) {
   std::vector<double> grid;
   for (int i = 0; i < count; ++i)
@@ -16,18 +12,6 @@ std::vector<double> log_spaced(double low, double high, int count) {
 }
 
 namespace {
-
-nlohmann::ordered_json mean_json(const std::optional<MeanWithError>& estimate) {
-  if (!estimate) return {{"n", 0}, {"mean", nullptr}, {"standard_error", nullptr}};
-  return {{"n", estimate->n}, {"mean", estimate->mean}, {"standard_error", number_or_null(estimate->standard_error)}};
-}
-
-nlohmann::ordered_json proportion_json(std::size_t count, const std::optional<ProportionEstimate>& estimate) {
-  return {{"count", count},
-          {"probability", estimate ? nlohmann::ordered_json(estimate->probability) : nullptr},
-          {"ci95", estimate ? nlohmann::ordered_json::array({estimate->lower, estimate->upper})
-                            : nlohmann::ordered_json(nullptr)}};
-}
 
 nlohmann::ordered_json fragments_json(const FragmentStatistics& fragments) {
   nlohmann::ordered_json moments = nlohmann::ordered_json::array();

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "orchestrator/fitting/correlation_set.hpp"
+#include "orchestrator/fitting/estimate_json.hpp"
 
 // The JSON of each part of a correlation set (correlation_json.hpp puts them together).
 namespace aerobreak {
@@ -30,8 +31,5 @@ nlohmann::ordered_json full_json(const FragmentSizeFit& fit, int points);
 
 // `count` values spread evenly in log from exactly `low` to exactly `high`.
 std::vector<double> log_spaced(double low, double high, int count);
-
-// Optional numbers as JSON null when absent.
-nlohmann::ordered_json number_or_null(const std::optional<double>& value);
 
 }  // namespace aerobreak

@@ -10,7 +10,7 @@
 #include "orchestrator/fitting/binomial_glm.hpp"
 #include "orchestrator/fitting/case_outcome.hpp"
 #include "orchestrator/fitting/correlation_request.hpp"
-#include "orchestrator/fitting/proportion.hpp"
+#include "orchestrator/fitting/mean_estimate.hpp"
 
 // The table model of a study's correlations (docs/CORRELATIONS.md): per-grid-point aggregates and
 // every fitted model, as plain structs for the lookup-table export and the JSON of the REST API.
@@ -21,10 +21,10 @@ namespace aerobreak {
 // Re-entrained fragments at one grid point. The units of the uncertainties are the cases: the
 // fragments of one case are not independent of each other.
 struct FragmentStatistics {
-  std::size_t fragments = 0;                            // re-entrained fragments, all cases
-  std::optional<MeanWithError> monomer_fraction;        // monomers / fragments (ratio over cases)
-  std::optional<MeanWithError> mean_size;               // primaries / fragments (ratio over cases)
-  std::array<std::optional<MeanWithError>, 4> moments;  // M_k = sum over a case's fragments of size^k, mean over cases
+  std::size_t fragments = 0;                           // re-entrained fragments, all cases
+  std::optional<MeanEstimate> monomer_fraction;        // monomers / fragments (ratio over cases)
+  std::optional<MeanEstimate> mean_size;               // primaries / fragments (ratio over cases)
+  std::array<std::optional<MeanEstimate>, 4> moments;  // M_k = sum over a case's fragments of size^k, mean over cases
 };
 
 struct GridPointSummary {
@@ -34,10 +34,10 @@ struct GridPointSummary {
   std::size_t small_strain_exceeded = 0;
   std::array<std::size_t, 3> counts{};                               // stick, bounce, break-up
   std::array<std::optional<ProportionEstimate>, 3> probabilities{};  // among the determined cases
-  std::optional<MeanWithError> retained_mass_fraction;
-  std::optional<MeanWithError> restitution_of_bounces;
-  std::optional<MeanWithError> damage_ratio;
-  std::optional<MeanWithError> energy_per_contact;
+  std::optional<MeanEstimate> retained_mass_fraction;
+  std::optional<MeanEstimate> restitution_of_bounces;
+  std::optional<MeanEstimate> damage_ratio;
+  std::optional<MeanEstimate> energy_per_contact;
   FragmentStatistics reentrained;
   std::size_t determined() const { return counts[0] + counts[1] + counts[2]; }
 };

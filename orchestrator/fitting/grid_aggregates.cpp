@@ -7,9 +7,8 @@
 namespace aerobreak {
 namespace {
 
-std::optional<MeanWithError> mean_of(const std::vector<const CaseOutcome*>& cases,
-                                     std::optional<double> CaseOutcome::*field,
-                                     std::optional<ImpactOutcome> only = {}) {
+std::optional<MeanEstimate> mean_of(const std::vector<const CaseOutcome*>& cases,
+                                    std::optional<double> CaseOutcome::*field, std::optional<ImpactOutcome> only = {}) {
   std::vector<double> values;
   for (const CaseOutcome* c : cases)
     if ((!only || c->outcome == *only) && c->*field) values.push_back(*(c->*field));

@@ -7,7 +7,7 @@ namespace aerobreak {
 
 // Per grid point: outcome probabilities among the determined cases (Wilson 95 %), the means of the
 // retained mass fraction, the restitution of the bounces, the damage ratio and the energy per
-// contact (each with n and its standard error), and the re-entrained fragments. A grid point whose
+// contact (each a MeanEstimate: mean_estimate.hpp), and the re-entrained fragments. A grid point whose
 // cases are all undetermined has n = 0 and no estimates, never a guess.
 std::vector<GridPointSummary> summarise_grid_points(const CaseOutcomeTable& table);
 

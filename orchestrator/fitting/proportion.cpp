@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 namespace aerobreak {
@@ -23,41 +22,6 @@ std::optional<ProportionEstimate> wilson_interval(std::size_t successes, std::si
   const double lower = successes == 0 ? 0.0 : std::max(0.0, centre - half_width);
   const double upper = successes == trials ? 1.0 : std::min(1.0, centre + half_width);
   return ProportionEstimate{p, lower, upper};
-}
-
-std::optional<MeanWithError> mean_estimate(std::span<const double> values) {
-  if (values.empty()) return std::nullopt;
-  MeanWithError estimate;
-  estimate.n = values.size();
-  const double n = static_cast<double>(values.size());
-  estimate.mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
-  if (values.size() > 1) {
-    double squares = 0.0;
-    for (const double value : values) squares += (value - estimate.mean) * (value - estimate.mean);
-    estimate.standard_error = std::sqrt(squares / (n - 1.0) / n);
-  }
-  return estimate;
-}
-
-std::optional<MeanWithError> ratio_estimate(std::span<const double> numerators, std::span<const double> denominators) {
-  if (numerators.size() != denominators.size()) throw std::invalid_argument("ratio estimate: unequal lengths");
-  const double a = std::accumulate(numerators.begin(), numerators.end(), 0.0);
-  const double b = std::accumulate(denominators.begin(), denominators.end(), 0.0);
-  if (numerators.empty() || b <= 0.0) return std::nullopt;
-  MeanWithError estimate;
-  estimate.n = numerators.size();
-  estimate.mean = a / b;
-  if (numerators.size() > 1) {
-    const double n = static_cast<double>(numerators.size());
-    double squares = 0.0;
-    for (std::size_t i = 0; i < numerators.size(); ++i) {
-      const double residual = numerators[i] - estimate.mean * denominators[i];
-      squares += residual * residual;
-    }
-    const double mean_b = b / n;
-    estimate.standard_error = std::sqrt(squares / (n * (n - 1.0)) / (mean_b * mean_b));
-  }
-  return estimate;
 }
 
 }  // namespace aerobreak

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "orchestrator/app/study_results_json.hpp"
+#include "orchestrator/fitting/estimate_json.hpp"
 #include "orchestrator/service/api_json.hpp"
 #include "orchestrator/service/case_file_download.hpp"
 #include "orchestrator/service/grid_filter.hpp"
 #include "orchestrator/service/http_support.hpp"
-#include "orchestrator/fitting/mean_interval.hpp"
 #include "orchestrator/service/versioned_documents.hpp"
 
 namespace aerobreak {
@@ -17,19 +17,6 @@ namespace {
 
 constexpr std::size_t kMaxProgressPage = 100;
 constexpr std::size_t kMaxFragmentGridPoints = 1000;
-
-nlohmann::ordered_json moments_json(const Moments& moments) {
-  const auto estimate = mean_interval(moments.count, moments.sum, moments.sum_of_squares);
-  if (!estimate) return nullptr;
-  const auto optional = [](const std::optional<double>& value) {
-    return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
-  };
-  return {{"n", estimate->count},
-          {"mean", estimate->mean},
-          {"sd", optional(estimate->standard_deviation)},
-          {"ci95", estimate->lower ? nlohmann::ordered_json::array({*estimate->lower, *estimate->upper})
-                                   : nlohmann::ordered_json(nullptr)}};
-}
 
 // Each axis (in the study's order) with its distinct values, sorted.
 nlohmann::ordered_json axes_json(const std::vector<GridPointStatistics>& cells) {
@@ -46,13 +33,10 @@ nlohmann::ordered_json axes_json(const std::vector<GridPointStatistics>& cells) 
 nlohmann::ordered_json grid_json(std::int64_t study, const std::vector<GridPointStatistics>& cells) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const auto& cell : cells) {
-    auto row = grid_point_outcomes_json(cell.outcomes);
-    row["retained_mass_fraction"] = moments_json(cell.retained_mass_fraction);
-    row["restitution"] = moments_json(cell.restitution);
-    row["fragment_count"] = moments_json(cell.fragment_count);
-    row["largest_fragment_share"] = moments_json(cell.largest_fragment_share);
-    row["damage_ratio"] = moments_json(cell.damage_ratio);
-    row["energy_per_contact"] = moments_json(cell.energy_per_contact);
+    auto row = grid_point_outcomes_json(cell);
+    row["restitution"] = mean_json(mean_estimate(cell.restitution));
+    row["fragment_count"] = mean_json(mean_estimate(cell.fragment_count));
+    row["largest_fragment_share"] = mean_json(mean_estimate(cell.largest_fragment_share));
     rows.push_back(std::move(row));
   }
   return {{"study", study}, {"confidence", 0.95}, {"axes", axes_json(cells)}, {"grid_points", rows}};

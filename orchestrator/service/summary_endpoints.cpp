@@ -9,7 +9,7 @@
 namespace aerobreak {
 
 std::string outcome_table_document(Store& store, std::int64_t study) {
-  auto json = outcome_table_json(store.outcomes(study));
+  auto json = outcome_table_json(store.grid_statistics(study));
   json["study"] = study;
   return json.dump();
 }

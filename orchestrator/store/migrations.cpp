@@ -261,6 +261,16 @@ UPDATE cases SET primaries = (SELECT sum(f.primaries) FROM fragments f WHERE f.c
 WHERE primaries IS NULL AND EXISTS (SELECT 1 FROM fragments f WHERE f.case_id = cases.id);
 )sql";
 
+// The stored correlation documents written before a mean had its one shape (the grid-points
+// document's {n, mean, standard_error}, the retained-fraction fit's data rows) are dropped: the
+// next request fits the study again from its results (fitting/mean_estimate.hpp,
+// estimate_json.hpp), to the same fitted numbers, and stores the documents in the shape of
+// schemas/correlation.schema.json.
+constexpr std::string_view kVersion11 = R"sql(
+DELETE FROM correlation_fits;
+DELETE FROM correlation_sets;
+)sql";
+
 constexpr std::array kMigrations{
     Migration{1, "studies, cases, attempts, results, fragments, worker jobs", kVersion1},
     Migration{2, "outcomes by what leaves the wall: retained and re-entrained mass, damage, validity, energy groups",
@@ -273,6 +283,7 @@ constexpr std::array kMigrations{
     Migration{8, "data-file paths relative to the data folder", kVersion8},
     Migration{9, "each case's N (primaries of its cluster) beside its document", kVersion9, fill_case_primaries},
     Migration{10, "a cluster file's N from its results' fragments", kVersion10},
+    Migration{11, "stored correlation sets dropped, to be fitted again with one shape of a mean", kVersion11},
 };
 
 int user_version(SqliteDatabase& db) {

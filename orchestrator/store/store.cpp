@@ -5,6 +5,7 @@
 
 #include "orchestrator/store/data_paths.hpp"
 #include "orchestrator/store/migrations.hpp"
+#include "orchestrator/store/statistics_functions.hpp"
 #include "orchestrator/store/store_file.hpp"
 #include "orchestrator/store/store_read_connection.hpp"
 #include "orchestrator/store/store_search_rows.hpp"
@@ -72,7 +73,9 @@ Store::ReadConnection Store::read() {
       return ReadConnection(*this, std::move(db));
     }
   }
-  return ReadConnection(*this, std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only));
+  auto db = std::make_unique<SqliteDatabase>(file_, SqliteDatabase::Mode::read_only);
+  add_statistics_functions(*db);
+  return ReadConnection(*this, std::move(db));
 }
 
 int Store::schema_version() {

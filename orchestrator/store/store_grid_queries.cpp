@@ -34,12 +34,9 @@ constexpr std::array<MomentColumn, 6> kMomentColumns{{
 constexpr std::array<std::string_view, 3> kFlagCounts{"sum(r.fractured_on_wall)", "sum(r.small_strain_exceeded)",
                                                       "count(*) - count(r.small_strain_exceeded)"};
 
-std::optional<double> mean(const Moments& moments) {
-  return moments.count > 0 ? std::optional(moments.sum / static_cast<double>(moments.count)) : std::nullopt;
-}
-
-// The counts come from the grid-point summaries (one row per grid point); the moments and flags from
-// one pass over the study's results, grouped by grid point through study_cases_by_grid_key and read
+// The counts come from the grid-point summaries (one row per grid point); the moments (count, sum,
+// and squared deviations by Welford's update: statistics_functions.hpp) and flags from one pass
+// over the study's results, grouped by grid point through study_cases_by_grid_key and read
 // from the covering index results_statistics instead of the results table (migration 6). A grid
 // point without results has no row in the pass: its moments read as NULL, that is 0.
 std::string grid_statistics_sql() {
@@ -52,7 +49,7 @@ std::string grid_statistics_sql() {
     const std::string value(name);
     add("count(" + value + ")");
     add("total(" + value + ")");
-    add("total(" + value + " * " + value + ")");
+    add("squared_deviations(" + value + ")");
   }
   for (const auto flag : kFlagCounts) add(std::string(flag));
   std::string sql = "SELECT g.grid_key, g.grid_point, g.cases, g.failed, g.stick, g.bounce, g.break_up, g.undetermined";
@@ -77,14 +74,11 @@ GridPointStatistics statistics_from(const SqliteStatement& row) {
     Moments& moments = statistics.*member;
     moments.count = static_cast<std::size_t>(row.integer(column++));
     moments.sum = row.real(column++);
-    moments.sum_of_squares = row.real(column++);
+    moments.squared_deviations = row.real(column++);
   }
   cell.fractured_on_wall = static_cast<std::size_t>(row.integer(column++));
   cell.small_strain_exceeded = static_cast<std::size_t>(row.integer(column++));
   cell.small_strain_unchecked = static_cast<std::size_t>(row.integer(column++));
-  cell.mean_retained_mass_fraction = mean(statistics.retained_mass_fraction);
-  cell.mean_damage_ratio = mean(statistics.damage_ratio);
-  cell.mean_energy_per_contact = mean(statistics.energy_per_contact);
   return statistics;
 }
 
@@ -99,8 +93,7 @@ std::vector<GridPointStatistics> Store::grid_statistics(std::int64_t study_id) {
   return cells;
 }
 
-// The outcome table with every column (means and flag counts need the results themselves); the
-// service caches it by the study's versions, so that it is computed once per change of the results.
+// The outcome and flag counts of grid_statistics, without the moments.
 std::vector<GridPointOutcomes> Store::outcomes(std::int64_t study_id) {
   std::vector<GridPointOutcomes> cells;
   for (auto& statistics : grid_statistics(study_id)) cells.push_back(std::move(statistics.outcomes));

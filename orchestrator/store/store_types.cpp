@@ -52,4 +52,8 @@ std::size_t GridPointOutcomes::finished() const {
   return total;
 }
 
+std::optional<MeanEstimate> mean_estimate(const Moments& moments) {
+  return streamed_mean_estimate(moments.count, moments.sum, moments.squared_deviations);
+}
+
 }  // namespace aerobreak

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "orchestrator/fitting/case_outcome.hpp"
+#include "orchestrator/fitting/mean_estimate.hpp"
 
 namespace aerobreak {
 
@@ -262,21 +263,23 @@ struct GridPointOutcomes {
   std::size_t cases = 0;                        // all replicates, whatever their status
   std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
   std::size_t failed = 0;
-  std::size_t finished() const;                       // cases with a result
-  std::optional<double> mean_retained_mass_fraction;  // over the results (nullopt: none)
-  std::optional<double> mean_damage_ratio;            // over the results that have one
-  std::optional<double> mean_energy_per_contact;      // over the results that have one
-  std::size_t fractured_on_wall = 0;                  // results whose deposit is in pieces
-  std::size_t small_strain_exceeded = 0;              // results flagged outside the small-strain range
-  std::size_t small_strain_unchecked = 0;             // results without the check (migrated from an older store)
+  std::size_t finished() const;            // cases with a result
+  std::size_t fractured_on_wall = 0;       // results whose deposit is in pieces
+  std::size_t small_strain_exceeded = 0;   // results flagged outside the small-strain range
+  std::size_t small_strain_unchecked = 0;  // results without the check (migrated from an older store)
 };
 
-// Count, sum and sum of squares of one result quantity over the results that have it.
+// Count, sum and sum of squared deviations from the mean (Welford's M2, statistics_functions.hpp)
+// of one result quantity over the results that have it.
 struct Moments {
   std::size_t count = 0;
   double sum = 0.0;
-  double sum_of_squares = 0.0;
+  double squared_deviations = 0.0;
 };
+
+// Its mean with standard deviation, standard error and Student interval (mean_estimate.hpp); nullopt
+// when the count is 0.
+std::optional<MeanEstimate> mean_estimate(const Moments& moments);
 
 // One grid point of a study: its outcome counts and the moments of the results' scalar quantities.
 struct GridPointStatistics {

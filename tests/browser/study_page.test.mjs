@@ -303,7 +303,7 @@ test('the outcome fields: damage ratio plot, flagged results, energy per contact
     const expected = {};
     for (const row of grid.grid_points)
       (expected[`${row.grid_point.primaries},${row.grid_point.gamma_over_kn}`] ||= [])
-        .push([row.energy_per_contact_mean, row.outcomes['break-up'].probability]);
+        .push([row.energy_per_contact.mean, row.outcomes['break-up'].probability]);
     const measured = measuredCurves(alongEnergy);
     assert.deepEqual(sortedPoints(measured),
       sortedPoints(Object.values(expected).map((points) => ({ points: points.sort((a, b) => a[0] - b[0]) }))));

@@ -22,7 +22,8 @@ Json grid_point(Json axes, int finished, Json stick, Json bounce, Json break_up)
       {"finished", finished},
       {"failed", 0},
       {"outcomes", {{"stick", stick}, {"bounce", bounce}, {"break-up", break_up}, {"undetermined", {{"count", 0}}}}},
-      {"retained_mass_fraction_mean", 0.25},
+      {"retained_mass_fraction",
+       {{"n", finished}, {"mean", 0.25}, {"standard_deviation", 0.1}, {"standard_error", 0.05}, {"ci95", {0.1, 0.4}}}},
       {"fractured_on_wall", 0},
       {"small_strain_exceeded", 0},
       {"small_strain_unchecked", 0}};

@@ -83,7 +83,7 @@ TEST_CASE("A study runs end to end: CLI client, REST API, mpirun -np 2 workers, 
     const auto& [flagged, retained] = flagged_and_retained.at(point.at("grid_point").dump());
     CHECK(point.at("small_strain_exceeded") == flagged);
     CHECK(point.at("small_strain_unchecked") == 0);
-    CHECK(point.at("retained_mass_fraction_mean").get<double>() == Approx(retained));
+    CHECK(point.at("retained_mass_fraction").at("mean").get<double>() == Approx(retained));
   }
   const auto jobs = service.get("/api/jobs");
   REQUIRE_FALSE(jobs.at("items").empty());

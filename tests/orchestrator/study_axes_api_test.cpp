@@ -4,50 +4,11 @@
 // (orchestrator/study/field_units.cpp), values for a grid axis and the range for the search's. Each
 // answer is checked against its schema in schemas/openapi.json, validated by the project's JSON
 // Schema validator. Real HTTP, a real store, worker jobs of the engine's test double.
-#include <fstream>
-#include <set>
-
-#include "engine/impact/json_schema.hpp"
 #include "tests/orchestrator/synthetic_service.hpp"
+#include "tests/support/openapi_schema.hpp"
 
 namespace aerobreak::testing {
 namespace {
-
-// `node` with every "#/components/schemas/X" reference turned into "#/$defs/X", collecting the X.
-void rewrite_references(Json& node, std::set<std::string>& named) {
-  constexpr std::string_view kPrefix = "#/components/schemas/";
-  if (node.is_object()) {
-    for (auto& [key, value] : node.items()) {
-      if (key == "$ref" && value.is_string() && value.get<std::string>().starts_with(kPrefix)) {
-        const std::string name = value.get<std::string>().substr(kPrefix.size());
-        named.insert(name);
-        value = "#/$defs/" + name;
-      } else {
-        rewrite_references(value, named);
-      }
-    }
-  } else if (node.is_array()) {
-    for (auto& item : node) rewrite_references(item, named);
-  }
-}
-
-// A JSON Schema of `schema` (a part of the OpenAPI description) with the components it reaches
-// under $defs, so that the project's validator (draft 2020-12) checks a document against it.
-JsonSchema openapi_schema(const Json& description, Json schema) {
-  std::set<std::string> named, done;
-  rewrite_references(schema, named);
-  Json definitions = Json::object();
-  while (named.size() > done.size()) {
-    for (const auto& name : std::set<std::string>(named)) {
-      if (!done.insert(name).second) continue;
-      Json component = description.at("components").at("schemas").at(name);
-      rewrite_references(component, named);
-      definitions[name] = std::move(component);
-    }
-  }
-  schema["$defs"] = std::move(definitions);
-  return JsonSchema(std::move(schema));
-}
 
 Json response_schema(const Json& description, const std::string& path) {
   return description.at("paths")

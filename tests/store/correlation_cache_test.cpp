@@ -177,4 +177,41 @@ TEST_CASE("Correlation requests that do not fit the study are refused with the r
   }
 }
 
+TEST_CASE("Sets stored before the one shape of a mean are dropped by migration 11 and fitted again",
+          "[store][correlations]") {
+  std::string grid_points_before, fit_before;
+  std::int64_t id = 0;
+  TemporaryStoreFile file("correlation_migration_10");
+  {
+    Store store(file.path());
+    id = finished_correlation_study(store, "migration-10", 4, 2);
+    StudyFits fits(store);
+    const auto study = *store.study(id);
+    const auto stored = *fits.current(study, correlation_request(study, std::nullopt));
+    grid_points_before = *store.stored_fit(stored.set_id, "grid-points");
+    fit_before = *store.stored_fit(stored.set_id, "break-up.speed.g1");
+  }
+  {
+    // The store as schema version 10 left it: the set stored, the version one lower.
+    SqliteDatabase db(file.path());
+    db.execute("PRAGMA user_version = 10");
+  }
+  Store store(file.path());
+  CHECK(store.opened_at_version() == 10);
+  const auto study = *store.study(id);
+  const auto request = correlation_request(study, std::nullopt);
+  CHECK_FALSE(store.stored_correlations(id, request_key(request)));
+  StudyFits fits(store);
+  const auto refitted = *fits.current(study, request);
+  // The same documents, fitted again from the same results (the test's set had the new shape
+  // already), but for the result-set version, which the migration's rebuild of the summaries raised.
+  const auto without_version = [](const std::string& text) {
+    auto document = nlohmann::json::parse(text);
+    document.at("provenance").erase("result_set_version");
+    return document;
+  };
+  CHECK(without_version(*store.stored_fit(refitted.set_id, "grid-points")) == without_version(grid_points_before));
+  CHECK(without_version(*store.stored_fit(refitted.set_id, "break-up.speed.g1")) == without_version(fit_before));
+}
+
 }  // namespace aerobreak::testing

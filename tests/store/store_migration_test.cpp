@@ -158,7 +158,7 @@ TEST_CASE("Migration 2 classifies the results of a version-1 store again by what
   CHECK(cells[0].fractured_on_wall == 1);
   CHECK(cells[0].small_strain_unchecked == 1);
   CHECK(cells[0].small_strain_exceeded == 0);
-  CHECK(*cells[1].mean_retained_mass_fraction == Approx(0.99));
+  CHECK(mean_estimate(store.grid_statistics(1)[1].retained_mass_fraction)->mean == Approx(0.99));
 }
 
 TEST_CASE("A migrated store is not migrated again when reopened", "[store]") {
@@ -271,11 +271,9 @@ TEST_CASE("Migration 10 stores a cluster file's N from its results and drops the
         "aerobreak_version, computed_at, fit_seconds, summary) VALUES (1, 1, '{}', 1, 'h', 'v', 0, 0, '{}');"
         "INSERT INTO correlation_fits (set_id, name, kind, status, document) VALUES (1, 'f', 'k', 'ok', '{}')");
   }
-  {
-    Store store(file.path());
-    CHECK(store.opened_at_version() == 9);
-  }
   SqliteDatabase db(file.path());
+  // Up to 10 only: migration 11 drops every stored set (the one shape of a mean).
+  CHECK(migrate_store(db, store_migrations().first(10)) == 9);
   auto cases = db.prepare("SELECT primaries FROM cases ORDER BY id");
   std::vector<std::optional<std::int64_t>> primaries;
   while (cases.step()) primaries.push_back(cases.optional_integer(0));

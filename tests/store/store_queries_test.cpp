@@ -101,17 +101,21 @@ TEST_CASE("Results and outcome tables carry the retained mass, the damage and th
   CHECK(third.initial_contacts == 3);
   CHECK(page.items[0].small_strain_exceeded == false);
 
-  const auto cells = store.outcomes(study.study_id);
+  const auto cells = store.grid_statistics(study.study_id);
   REQUIRE(cells.size() == 2);
-  CHECK(*cells[0].mean_retained_mass_fraction == Approx((1.0 + 1.0 + 0.4) / 3.0));
-  CHECK(*cells[0].mean_damage_ratio == Approx((0.0 + 0.2 + 0.5) / 3.0));
-  CHECK(*cells[0].mean_energy_per_contact == Approx(2.0));
-  CHECK(cells[0].fractured_on_wall == 2);
-  CHECK(cells[0].small_strain_exceeded == 1);
-  CHECK(cells[0].small_strain_unchecked == 0);
-  CHECK(*cells[1].mean_retained_mass_fraction == Approx(0.4));
-  CHECK(cells[1].small_strain_exceeded == 2);
-  CHECK(cells[1].finished() == 2);
+  CHECK(mean_estimate(cells[0].retained_mass_fraction)->mean == Approx((1.0 + 1.0 + 0.4) / 3.0));
+  // Squared deviations from the mean 0.8, summed in SQL by Welford's update: 0.2^2 + 0.2^2 + 0.4^2.
+  CHECK(cells[0].retained_mass_fraction.squared_deviations == Approx(0.24).epsilon(1e-14));
+  CHECK(mean_estimate(cells[0].damage_ratio)->mean == Approx((0.0 + 0.2 + 0.5) / 3.0));
+  CHECK(mean_estimate(cells[0].energy_per_contact)->mean == Approx(2.0));
+  CHECK(cells[0].outcomes.fractured_on_wall == 2);
+  CHECK(cells[0].outcomes.small_strain_exceeded == 1);
+  CHECK(cells[0].outcomes.small_strain_unchecked == 0);
+  CHECK(mean_estimate(cells[1].retained_mass_fraction)->mean == Approx(0.4));
+  CHECK(cells[1].retained_mass_fraction.count == 2);
+  CHECK(cells[1].retained_mass_fraction.squared_deviations == Approx(0.3 * 0.3 * 2.0).epsilon(1e-14));  // 0.7, 0.1
+  CHECK(cells[1].outcomes.small_strain_exceeded == 2);
+  CHECK(cells[1].outcomes.finished() == 2);
 }
 
 }  // namespace aerobreak

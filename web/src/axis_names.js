@@ -4,11 +4,11 @@
 // describe is named by its pointer, without a unit, in linear scale.
 import { unitText, withUnit } from './units.js';
 
-// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity,
-// which varies along the named axis (each point of a curve is still one grid point). Not case
-// fields, so named here.
+// Quantities that can go along x instead of an axis: the grid point's mean of a result quantity
+// (the `mean` of its MeanEstimate `field`), which varies along the named axis (each point of a
+// curve is still one grid point). Not case fields, so named here.
 export const kDerivedX = {
-  energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact_mean',
+  energy_per_contact: { along: 'impact_speed', field: 'energy_per_contact',
     label: 'energy per contact E_kin / (N_c E_break)', symbol: 'E/(N_c E_b)', unit: null, log_scale: true },
 };
 

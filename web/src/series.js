@@ -11,14 +11,14 @@ export const conditionKey = (values) => JSON.stringify(Object.entries(values)
 // The axis a choice of x runs along: itself, or the axis a derived quantity varies with.
 export const alongAxis = (xAxis) => (kDerivedX[xAxis] ? kDerivedX[xAxis].along : xAxis);
 export const xValueOf = (xAxis) => (kDerivedX[xAxis]
-  ? (row) => row[kDerivedX[xAxis].field] ?? null : (row) => row.grid_point[xAxis]);
+  ? (row) => row[kDerivedX[xAxis].field]?.mean ?? null : (row) => row.grid_point[xAxis]);
 
 // The derived quantities the grid offers along x: those whose axis is swept and that some grid
 // point has a value of.
 export function derivedXChoices(grid) {
   return Object.entries(kDerivedX)
     .filter(([, { along, field }]) => grid.axes.some((axis) => axis.name === along && axis.values.length > 1) &&
-      grid.grid_points.some((row) => typeof row[field] === 'number'))
+      grid.grid_points.some((row) => typeof row[field]?.mean === 'number'))
     .map(([name]) => name);
 }
 
