@@ -147,7 +147,9 @@ class ContactForcesFor final : public ContactForces {
   // the block; (2) every law of every contact in the block, which the compiler evaluates several
   // contacts per vector instruction (the columns are contiguous and the laws straight-line code);
   // (3) the loads added to the particles in the order of the pairs, so that the sums, to the last
-  // bit, do not depend on the skin or on when the list was rebuilt; (4) the particles whose rows
+  // bit, do not depend on the skin, on when the list was rebuilt or on where a wavefront's pass
+  // ends its stretch of rows: a contact that forms or lets go adds its timing force (and a release
+  // its loss to the tally) at once, so the block is emptied before it; (4) the particles whose rows
   // are now all evaluated reported complete, at the latest when the last row is taken: the block
   // is then empty again for the next call, of this pass or another.
   // Separation vectors come from `separation_of` (OpenSpace or PeriodicSpace), which the compiler
@@ -180,12 +182,16 @@ class ContactForcesFor final : public ContactForces {
           const double reach = touching + formation_gap;
           if (distance2 >= reach * reach) continue;
           slot = open_pair(p, materials, i, j, touching - std::sqrt(distance2), local);
-          if (local.drifted) time_pair_formation(p, i, j, separation, slot, dt, local);
+          if (local.drifted) {
+            empty_block(block, p, dt, local);  // (3): the loads of the pairs before this one first
+            time_pair_formation(p, i, j, separation, slot, dt, local);
+          }
         }
         const double distance = std::sqrt(distance2);
         const double overlap = touching - distance;
         const Vec3 normal = separation * (1.0 / distance);
         if (overlap < -pool.break_overlap(slot)) {
+          empty_block(block, p, dt, local);  // (3), and the tally in the order of the pairs too
           const double timing = close(slot, overlap, dot(velocity[i] - velocity[j], normal), dt, local);
           p.force[i] -= timing * normal;
           p.force[j] += timing * normal;
@@ -199,6 +205,13 @@ class ContactForcesFor final : public ContactForces {
     }
     report_before(end, p, dt, pass, block, c);
     c.row = end;
+  }
+
+  // The block evaluated and its loads added before a contact event adds its own (take_rows' (3));
+  // kept out of the pass's loop, where the laws' code would crowd the common path.
+  [[gnu::noinline, gnu::cold]] void empty_block(ContactBlock& block, Particles& p, double dt,
+                                                ContactLedger& ledger) const {
+    finish_block(block, p, dt, ledger);
   }
 
   // Evaluates the block and reports the particles before `row` complete.

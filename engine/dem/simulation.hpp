@@ -33,7 +33,7 @@ struct SimulationSettings {
   // resolve (steps_per_break_overlap > 0, a law with a tensile range), in open space and without
   // Langevin forces.
   bool adaptive_time_step = true;
-  double step_headroom = 0.25;  // StepChooser's headroom
+  double step_headroom = 0.15;  // StepChooser's headroom (docs/MODEL.md 9.2)
   double skin = 0.0;            // Verlet skin; 0: automatic, from the speed scale and time step
   bool brute_force_neighbors = false;
   // Pairs whose surfaces are closer than this at the start are in contact from the start: a

@@ -55,7 +55,7 @@ class StepChooser {
 
   // `headroom`: the share of the fastest speed found that the velocities may change by before the
   // next choice, at least.
-  StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom = 0.25,
+  StepChooser(double cap, BreakOverlaps overlaps, double steps_per_break_overlap, double headroom = 0.15,
               double turn = 0.1);
 
   // Chooses the step for the drifts to come. `built_at` and `skin` are the neighbour list's: until

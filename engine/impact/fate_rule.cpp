@@ -190,6 +190,28 @@ bool cannot_return(const Fragment& f, const Reserve& r, double internal, double 
   return reach + v * std::max((f.lowest_gap - reach) / drift, 0.0) > 0.0;
 }
 
+// A fragment of several primaries off a wall without adhesion that cannot break: its energy in the
+// wall's frame, kinetic and stored above rest, is below its weakest bond's E_b. The wall does no work
+// on it but loses some (damping, friction), so that energy never rises, and a bond lets go only once
+// its own stored energy has risen by E_b: it stays whole whatever it meets at the wall, and it
+// cannot stay there. Its path: until it can first touch the wall its centre moves on its straight
+// line, and that is no sooner than its lowest gap closed at v_n's approach plus the fastest a
+// primary moves about the centre of mass, (2 E_own / m_lightest)^(1/2), E_own its energy in its own
+// frame; from then on its centre stays within a ball about where it was then that grows at the most
+// its centre's speed can be, (2 E / M)^(1/2), its bounding sphere taken a tenth wider (it may flex
+// within its bonds' reach). False if it is not such a fragment.
+bool rebounding_path(const Fragment& f, const Reserve& r, const Wall& wall, FragmentPath& path) {
+  const double energy = r.kinetic + r.above_rest;
+  if (wall.adhesive || f.size == 1 || !(energy < r.weakest_bond)) return false;
+  const double about_centre = std::sqrt(2.0 * (r.own_kinetic + r.above_rest) / r.lightest);
+  const double closing = about_centre - f.normal_velocity;
+  path.radius = 1.1 * f.bounding_radius;
+  path.stop = closing > 0.0 ? std::max(f.lowest_gap, 0.0) / closing : kInfinity;
+  path.after = Vec3{};
+  path.spread = std::sqrt(2.0 * energy / f.mass);
+  return true;
+}
+
 // Sorts one fragment into its fate; returns its path, or why its fate is open.
 struct Verdict {
   std::string open;
@@ -227,19 +249,26 @@ Verdict fate_of(std::size_t k, Fragment& f, const Reserve& r, const Wall& wall, 
   }
   const double speed = f.normal_velocity;
   if (speed > 0.0) {
+    std::string open;
     if (f.size > 1 && !(internal < r.weakest_bond))
-      return {name + " has internal energy " + number(internal) + ", not below its weakest bond's " +
-                  number(r.weakest_bond),
-              v.path};
-    if (f.size > 1 && !(r.pull < r.weakest_pull))
-      return {name + " spins fast enough to pull a bond apart (" + number(r.pull) + " against " +
-                  number(r.weakest_pull) + ")",
-              v.path};
-    if (!cannot_return(f, r, internal, height))
-      return {name + " moves away from the wall but may still swing back to it", v.path};
+      open = name + " has internal energy " + number(internal) + ", not below its weakest bond's " +
+             number(r.weakest_bond);
+    else if (f.size > 1 && !(r.pull < r.weakest_pull))
+      open = name + " spins fast enough to pull a bond apart (" + number(r.pull) + " against " +
+             number(r.weakest_pull) + ")";
+    else if (!cannot_return(f, r, internal, height))
+      open = name + " moves away from the wall but may still swing back to it";
+    if (!open.empty() && rebounding_path(f, r, wall, v.path))
+      f.bouncing = true;
+    else
+      v.open = open;
     return v;
   }
   if (!(speed < 0.0)) return {name + " moves along the wall", v.path};
+  if (rebounding_path(f, r, wall, v.path)) {
+    f.bouncing = true;
+    return v;
+  }
   v.path.stop = f.lowest_gap / -speed;
   const Vec3 tangential = f.velocity - speed * n;
   if (wall.adhesive) {
@@ -358,11 +387,12 @@ FatesJudgement judge_fates(const Simulation& sim, const std::vector<Vec3>& earli
     for (std::size_t b = a + 1; b < fragments.size(); ++b) {
       // Two held fragments that do not approach each other cannot meet (a held fragment's course
       // along the wall is known only roughly: its bounding sphere may overlap another's from the
-      // start); one moving towards another is tested on its course.
+      // start); one moving towards another is tested on its course. Every other pair, two bouncing
+      // primaries too, is tested on its paths: each path holds every course its fragment can take.
       const Vec3 apart = fragments[b].centre_of_mass - fragments[a].centre_of_mass;
       const Vec3 closing = verdicts[b].path.velocity - verdicts[a].path.velocity;
       if (verdicts[a].held && verdicts[b].held && dot(apart, closing) >= 0.0) continue;
-      if ((fragments[a].bouncing && fragments[b].bouncing) || paths_can_meet(verdicts[a].path, verdicts[b].path)) {
+      if (paths_can_meet(verdicts[a].path, verdicts[b].path)) {
         j.reason = name_of(a, fragments[a]) + " and " + name_of(b, fragments[b]) + " can still meet";
         return j;
       }

@@ -21,7 +21,8 @@ class Simulation;
 //    along the wall's normal than one adhesion loop with the wall dissipates: it lands and stays,
 //    then goes on along the wall at its velocity along it;
 //  - bouncing: a primary alone, off a wall without adhesion and moving towards it: it touches it
-//    and leaves on a course within bounds;
+//    and leaves on a course within bounds; or several primaries off such a wall, not clear of it,
+//    with less energy in the wall's frame than their weakest bond's: they stay whole and leave;
 // the largest fragment is held or clear, and no two fragments can meet on their paths
 // (fragment_paths.hpp). `earlier_positions` are the particles' positions at the time `earlier`
 // before now (the last look at the run).

@@ -27,8 +27,8 @@ struct Fragment {
   double bounding_radius = 0.0;     // largest |x_i - x_cm| + r_i
   std::uint32_t first_primary = 0;  // lowest particle index in it (a stable name)
   // Fates foreseen by the fates-fixed rule (docs/IMPACT.md section 4): off the wall now, it lands
-  // on an adhesive wall and stays there (counted on the wall), or it bounces off a wall without
-  // adhesion (counted off it).
+  // on an adhesive wall and stays there (counted on the wall), or it bounces (or, several primaries
+  // unable to break, may bounce) off a wall without adhesion (counted off it).
   bool landing = false;
   bool bouncing = false;
 

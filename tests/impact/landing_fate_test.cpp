@@ -7,45 +7,34 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 
 #include "engine/core/units.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/fate_rule.hpp"
+#include "impact_support.hpp"
 
 using namespace aerobreak;
+using aerobreak::testing::unit_mass_density;
+using aerobreak::testing::wall_contacts_of;
 
 namespace {
-
-const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter sphere
-const double glide = 0.05;                      // speed along the wall (d/tau)
+const double glide = 0.05;  // speed along the wall (d/tau)
 
 // Primary 0 sits on an adhesive wall (a small overlap: in contact from the start); primary 1 glides away from it, 1.5 d
 // above the wall, coming down at `normal_speed`. JKR without damping, Mindlin friction and rolling resistance on.
 Simulation gliding_primary(double normal_speed) {
   Particles p;
-  p.add({0.0, 0.0, 0.495}, 0.5, density);
-  p.add({20.0, 0.0, 2.0}, 0.5, density);
+  p.add({0.0, 0.0, 0.495}, 0.5, unit_mass_density);
+  p.add({20.0, 0.0, 2.0}, 0.5, unit_mass_density);
   p.velocity[1] = {glide, 0.0, -normal_speed};
-  ContactModelSpec model;
-  model.normal = NormalLaw::jkr;
-  model.tangential = true;
-  model.friction = 0.3;
+  ContactModelSpec model = testing::jkr_with_friction();
   model.rolling = true;
   model.critical_rolling = 0.02;
-  Wall wall;
-  wall.adhesive = true;
-  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {wall}, model);
+  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {testing::flat_wall(true)}, model);
 }
 
 double sticking_speed(const Simulation& sim) {
   return std::sqrt(2.0 * sim.wall_loop_energy(1, 0) / sim.particles().mass[1]);
-}
-
-std::size_t wall_contacts_of(const Simulation& sim, std::uint32_t i) {
-  std::size_t n = 0;
-  sim.contacts().for_each([&](const ContactState& c) { n += c.with_wall && c.i == i; });
-  return n;
 }
 
 // Runs until primary 1 has touched the wall and for as long again, the wall contacts of primary 1

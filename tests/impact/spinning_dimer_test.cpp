@@ -6,35 +6,28 @@
 // rule without the rotation's unwinding judged it clear up to 0.060, with it up to 0.030 only.
 #include <catch2/catch.hpp>
 
-#include <numbers>
-
 #include "engine/core/units.hpp"
 #include "engine/dem/simulation.hpp"
 #include "engine/impact/fate_rule.hpp"
 #include "engine/impact/fragments.hpp"
+#include "impact_support.hpp"
 
 using namespace aerobreak;
+using aerobreak::testing::unit_mass_density;
 
 namespace {
-
-const double density = 6.0 / std::numbers::pi;  // unit mass per unit-diameter sphere
 
 // Two JKR primaries (gamma/k_n = 0.001, no damping) 0.982 d apart, far above a wall without
 // adhesion and rising from it at 0.05 d/tau, turning about each other at `orbit` d/tau relative
 // speed and opening at `opening`: the state of a dimer seen in a break-up on an adhesive wall.
 Simulation spinning_dimer(double orbit, double opening) {
   Particles p;
-  p.add({0.0, 0.0, 20.0}, 0.5, density);
-  p.add({0.982, 0.0, 20.0}, 0.5, density);
+  p.add({0.0, 0.0, 20.0}, 0.5, unit_mass_density);
+  p.add({0.982, 0.0, 20.0}, 0.5, unit_mass_density);
   p.velocity = {{-0.5 * opening, -0.5 * orbit, 0.05}, {0.5 * opening, 0.5 * orbit, 0.05}};
   p.angular_velocity = {{0.0, 0.0, orbit / 0.982}, {0.0, 0.0, orbit / 0.982}};  // spinning with the orbit
-  ContactModelSpec model;
-  model.normal = NormalLaw::jkr;
-  model.tangential = true;
-  model.friction = 0.3;
-  Wall wall;
-  wall.adhesive = false;
-  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {wall}, model);
+  return Simulation(std::move(p), {reduced_material(0.001, 0.3)}, {testing::flat_wall(false)},
+                    testing::jkr_with_friction());
 }
 
 std::size_t fragments_after(Simulation& sim, double time) {
