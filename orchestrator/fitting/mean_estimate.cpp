@@ -47,11 +47,11 @@ MeanEstimate mean_with_interval(std::size_t count, double mean, double variance)
 
 std::optional<MeanEstimate> mean_estimate(std::span<const double> values) {
   if (values.empty()) return std::nullopt;
-  const double n = static_cast<double>(values.size());
-  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
+  const double sum = std::accumulate(values.begin(), values.end(), 0.0);
+  const double mean = sum / static_cast<double>(values.size());
   double squares = 0.0;
   for (const double value : values) squares += (value - mean) * (value - mean);
-  return mean_with_interval(values.size(), mean, values.size() > 1 ? squares / (n - 1.0) : 0.0);
+  return streamed_mean_estimate(values.size(), sum, squares);
 }
 
 std::optional<MeanEstimate> streamed_mean_estimate(std::size_t count, double sum, double squared_deviations) {

@@ -41,11 +41,18 @@ const NamedCaseField* alias(const std::string& name) {
   return nullptr;
 }
 
-std::string alias_names() {
+// The named fields' `name_of` (empty: left out), joined by ", ".
+template <typename NameOf>
+std::string joined_field_names(NameOf name_of) {
   std::string names;
   for (const auto& field : kNamedFields)
-    if (field.axis_alias) names += (names.empty() ? "" : ", ") + std::string(field.name);
+    if (const std::string_view name = name_of(field); !name.empty())
+      names += (names.empty() ? "" : ", ") + std::string(name);
   return names;
+}
+
+std::string alias_names() {
+  return joined_field_names([](const NamedCaseField& field) { return field.axis_alias ? field.name : ""; });
 }
 
 bool is_integral(double x) { return std::isfinite(x) && std::floor(x) == x && std::fabs(x) < 9007199254740992.0; }
@@ -181,10 +188,7 @@ std::string array_growth(const nlohmann::ordered_json& base, const std::string& 
 std::span<const NamedCaseField> named_case_fields() { return kNamedFields; }
 
 std::string known_covariate_names() {
-  std::string names;
-  for (const auto& field : kNamedFields)
-    if (!field.covariate.empty()) names += (names.empty() ? "" : ", ") + std::string(field.covariate);
-  return names;
+  return joined_field_names([](const NamedCaseField& field) { return field.covariate; });
 }
 
 std::string axis_pointer(const std::string& name) {
