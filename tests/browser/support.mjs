@@ -31,14 +31,16 @@ export async function until(condition, { timeoutMs = 30000, intervalMs = 100, wh
 
 export class Service {
   // `arguments_`: more options of `aerobreak serve` (e.g. --token-file); `store`: a store file to
-  // serve instead of a fresh one.
-  static async start(arguments_ = [], { store } = {}) {
+  // serve instead of a fresh one; `ranks`: of each worker job; `environment`: more variables of the
+  // service (and so of its workers).
+  static async start(arguments_ = [], { store, ranks = 2, environment = {} } = {}) {
     if (!binary || !existsSync(binary)) throw new Error('AEROBREAK_BINARY must name the built aerobreak');
     const directory = mkdtempSync(path.join(tmpdir(), 'aerobreak-browser-'));
     const portFile = path.join(directory, 'port');
     const storeFile = store || path.join(directory, 'store.sqlite');
     const child = spawn(binary, ['serve', '--store', storeFile, '--port', '0', '--port-file', portFile,
-      '--ranks', '2', '--idle-shutdown', '1', ...arguments_], { stdio: ['ignore', 'ignore', 'pipe'] });
+      '--ranks', String(ranks), '--idle-shutdown', '1', ...arguments_],
+    { stdio: ['ignore', 'ignore', 'pipe'], env: { ...process.env, ...environment } });
     let log = '';
     child.stderr.on('data', (chunk) => { log += chunk; });
     const service = new Service(child, directory, () => log);

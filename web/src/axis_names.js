@@ -54,6 +54,12 @@ export class AxisNames {
     return null;
   }
 
+  // Whether the axis is the adaptive search's (docs/ADAPTIVE.md): its values are placed as the search
+  // runs, not chosen by the study (the service's `role`, 'search' or 'grid').
+  searched(name) {
+    return this.byName.get(name)?.role === 'search';
+  }
+
   // The study's name of its axis with `role` ('speed'); null: none.
   withRole(role) {
     for (const name of this.byName.keys()) if (this.role(name) === role) return name;

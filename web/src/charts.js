@@ -2,7 +2,9 @@
 //   measured  points joined by a line, with the 95 % interval of each point as a whisker;
 //   points    the same points and whiskers without the line;
 //   fitted    a dashed (or dotted: dash 'dotted') line with its 95 % band where it has one;
-//   markers   hollow rings (e.g. grid points with flagged results).
+//   markers   hollow rings (e.g. grid points with flagged results);
+//   crossing  a ring filled white at each point with its interval along x (xlo, xhi; null: not
+//             bounded, to the plot's edge) as a horizontal bar (e.g. the search's v50).
 // Each axis spans the data; a bounded quantity (bounds [0, 1]) keeps its whole range and its
 // intervals are clipped to it. The legend (chart_legend.js) hides and shows series. The chart
 // keeps its uPlot instance, its curves and its whiskers on the element (element.uplot,
@@ -94,21 +96,28 @@ function lineSeries(curve) {
   if (style === 'fitted') return { ...base, width: 1.75, dash, points: { show: false } };
   const ring = { show: true, size: 13, width: 2, stroke: color, fill: 'transparent' };
   if (style === 'markers') return { ...base, paths: none, points: ring };
+  if (style === 'crossing') return { ...base, paths: none, points: { ...ring, size: 11, width: 2.5, fill: '#fff' } };
   return { ...base, width: 2, paths: style === 'points' ? none : undefined,
     points: { show: true, size: 7, fill: color, stroke: color } };
 }
 
 // uPlot's series, bands and data columns, and per measured curve with intervals its whiskers;
-// curve.series lists the uPlot series indices that draw it (for the legend's toggle).
+// and per crossing curve its bars; curve.series lists the uPlot series indices that draw it (for the
+// legend's toggle).
 function seriesOptions(curves, data) {
   const series = [{}];
   const bands = [];
   const columns = [data.xs];
   const whiskers = [];
+  const bars = [];
   for (const curve of curves) {
     curve.series = [series.length];
     series.push(lineSeries(curve));
     columns.push(data.column(curve, 'y'));
+    if (curve.style === 'crossing') {
+      bars.push({ series: curve.series[0], color: curve.color, points: curve.points });
+      continue;
+    }
     if (!hasIntervals(curve) || curve.style === 'markers') continue;
     if (curve.style === 'fitted') {
       for (const bound of ['upper', 'lower']) {
@@ -123,7 +132,7 @@ function seriesOptions(curves, data) {
         lo: data.column(curve, 'lo'), hi: data.column(curve, 'hi') });
     }
   }
-  return { series, bands, columns, whiskers };
+  return { series, bands, columns, whiskers, bars };
 }
 
 // Draws each shown measured series' intervals as vertical whiskers with caps, inside the plot area.
@@ -158,6 +167,38 @@ function drawWhiskers(u, whiskers, log) {
   ctx.restore();
 }
 
+// Draws each shown crossing's interval along x as a bar with caps at its point's height; an end
+// that is not bounded (null) reaches the plot's edge.
+function drawBars(u, bars) {
+  const ctx = u.ctx;
+  const { left, top, width, height } = u.bbox;
+  const ratio = uPlot.pxRatio || 1;
+  const cap = 4 * ratio;
+  ctx.save();
+  ctx.beginPath();
+  ctx.rect(left, top, width, height);
+  ctx.clip();
+  ctx.lineWidth = 2.5 * ratio;
+  for (const bar of bars) {
+    if (!u.series[bar.series].show) continue;
+    ctx.strokeStyle = bar.color;
+    ctx.beginPath();
+    for (const point of bar.points) {
+      const py = u.valToPos(point.y, 'y', true);
+      const from = point.xlo === null ? left : u.valToPos(point.xlo, 'x', true);
+      const to = point.xhi === null ? left + width : u.valToPos(point.xhi, 'x', true);
+      ctx.moveTo(from, py);
+      ctx.lineTo(to, py);
+      for (const end of [from, to]) {
+        ctx.moveTo(end, py - cap);
+        ctx.lineTo(end, py + cap);
+      }
+    }
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
 // The y range: the bounds when given (with a little room), else the data's span, with their
 // intervals unless `fitIntervals` is false (then an interval reaching far out is cut at the edge).
 function yRange(curves, { bounds, yLog, fitIntervals }) {
@@ -174,12 +215,13 @@ function yRange(curves, { bounds, yLog, fitIntervals }) {
 const logTicksOf = (u) => axisTicks([], [u.scales.y.min, u.scales.y.max], { log: true });
 
 // The x axis spans every curve; its ticks sit at the measured x values (a fitted curve's many
-// points would hide them).
-function axisOptions(curves, data, { xLabel, yLabel, xLog, yLog }) {
+// points would hide them), or at 1-2-5 steps without `dataTicks` (x values that are not the
+// tested ones: bins of a searched axis).
+function axisOptions(curves, data, { xLabel, yLabel, xLog, yLog, dataTicks = true }) {
   const xRange = paddedRange(data.xs, { log: xLog, share: 0.04 }) || [0, 1];
-  const measured = curves.filter((curve) => curve.style !== 'fitted')
-    .flatMap((curve) => curve.points.map((point) => point.x));
-  const xTicks = axisTicks(measured.length ? measured : data.xs, xRange, { log: xLog });
+  const measured = dataTicks ? curves.filter((curve) => curve.style !== 'fitted')
+    .flatMap((curve) => curve.points.map((point) => point.x)) : [];
+  const xTicks = axisTicks(measured.length || !dataTicks ? measured : data.xs, xRange, { log: xLog });
   // `filter` keeps every tick (uPlot's own thins a log axis's ticks to whole decades).
   const keepAll = (u, splits) => splits;
   const x = { label: xLabel, values: spacedLabels('x'), filter: keepAll, ...(xTicks ? { splits: () => xTicks } : {}) };
@@ -200,6 +242,7 @@ const resizer = new ResizeObserver((entries) => {
 
 // Draws `curves` ([{label, points: [{x, y, lo, hi}], style, dash, color}]) into `container`.
 // `bounds`: the quantity's range, e.g. [0, 1]; `empty`: what to say when there is nothing to draw.
+// `dataTicks` false: ticks at 1-2-5 steps, not at the curves' x values.
 export function plotCurves(container, curves, options) {
   const { xLabel, yLabel, xLog = true, yLog = false, bounds = null, fitIntervals = true } = options;
   const { empty = 'Nothing to plot yet: no finished cases here.' } = options;
@@ -215,7 +258,7 @@ export function plotCurves(container, curves, options) {
   assignColors(curves);
   const data = aligner(curves, bounds);
   const logX = xLog && data.xs.every((x) => x > 0);
-  const { series, bands, columns, whiskers } = seriesOptions(curves, data);
+  const { series, bands, columns, whiskers, bars } = seriesOptions(curves, data);
   const { xRange, axes } = axisOptions(curves, data, { ...options, xLog: logX });
   const holder = el('div', { class: 'plot' });
   const toggle = (curve, shown) => curve.series.forEach((index) => container.uplot.setSeries(index, { show: shown }));
@@ -228,7 +271,7 @@ export function plotCurves(container, curves, options) {
       y: { distr: yLog ? 3 : 1, range: () => yRange(curves, { bounds, yLog, fitIntervals }) },
     },
     axes, series, bands, cursor: { drag: { x: false, y: false } },
-    hooks: { draw: [(u) => drawWhiskers(u, whiskers, yLog)] },
+    hooks: { draw: [(u) => drawWhiskers(u, whiskers, yLog), (u) => drawBars(u, bars)] },
   };
   container.whiskers = whiskers;
   container.uplot = new uPlot(chartOptions, columns, holder);

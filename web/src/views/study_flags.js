@@ -11,6 +11,11 @@ export const kFlags = [
   ['small_strain_unchecked', 'small strain not checked'],
 ];
 
+// An axis value, or a bin's range of them.
+const valueText = (value) => (Array.isArray(value)
+  ? (value[0] === value[1] ? formatNumber(value[0], 4) : `${formatNumber(value[0], 4)}–${formatNumber(value[1], 4)}`)
+  : formatNumber(value, 4));
+
 const total = (rows, field) => rows.reduce((sum, row) => sum + (row[field] || 0), 0);
 
 export function createFlags() {
@@ -24,15 +29,18 @@ export function createFlags() {
       'contact model. Not checked: results stored before the check existed.'));
 
   // `shownAxes`: the axes that vary within the slice (x and the series axes), one column each.
-  function draw(grid, { slice, shownAxes, names }) {
+  // `pooled`: along a searched axis, the rows of its bins (search_bins.js curveBins), each axis
+  // value of which is one value or a range [from, to]; null: one row per grid point.
+  function draw(grid, { slice, shownAxes, names, pooled = null }) {
     const counts = kFlags.map(([flag, label]) => `${total(grid.grid_points, flag)} ${label}`);
     replaceChildren(summary, `Of ${total(grid.grid_points, 'finished')} results: ${counts.join(', ')}.`);
     for (const [flag] of kFlags) summary.dataset[flag] = total(grid.grid_points, flag);
-    const rows = grid.grid_points.filter((row) => inSlice(row.grid_point, slice) &&
-      kFlags.some(([flag]) => row[flag] > 0));
+    const rows = (pooled || grid.grid_points.filter((row) => inSlice(row.grid_point, slice)))
+      .filter((row) => kFlags.some(([flag]) => row[flag] > 0));
     holder.dataset.rows = rows.length;
+    holder.dataset.pooled = Boolean(pooled);
     const columns = [
-      ...shownAxes.map((axis) => ({ label: names.label(axis), value: (row) => formatNumber(row.grid_point[axis], 4),
+      ...shownAxes.map((axis) => ({ label: names.label(axis), value: (row) => valueText(row.grid_point[axis]),
         numeric: true })),
       { label: 'results', value: (row) => row.finished, numeric: true },
       ...kFlags.map(([flag, label]) => ({ label, value: (row) => row[flag], numeric: true })),
@@ -40,7 +48,8 @@ export function createFlags() {
     replaceChildren(holder, rows.length === 0
       ? el('p', { class: 'note' }, 'No flagged result among the plotted grid points.')
       : [table(columns, rows.slice(0, kMaxRows)),
-        rows.length > kMaxRows && el('p', { class: 'note' }, `and ${rows.length - kMaxRows} more grid points`)]);
+        rows.length > kMaxRows && el('p', { class: 'note' }, `and ${rows.length - kMaxRows} more grid points`),
+        pooled && el('p', { class: 'note' }, 'Along the searched axis, one row per bin of the probability plot.')]);
   }
   return { node, draw };
 }

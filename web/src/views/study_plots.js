@@ -4,14 +4,17 @@
 // Each chart is drawn in a task of its own, so that the page keeps answering while a large study
 // draws; a newer draw stops an older one at its next chart.
 import { getJson } from '../api.js';
-import { el, replaceChildren, select } from '../dom.js';
+import { el, formatNumber, replaceChildren, select } from '../dom.js';
 import { colourGroups, plotCurves } from '../charts.js';
 import {
   alongAxis, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
   meanOf, probabilityOf, sliceAxes, valueKey,
 } from '../series.js';
 import { withUnit } from '../units.js';
+import { kDerivedX } from '../axis_names.js';
 import { doseOf, levelName } from '../correlations.js';
+import { curveBins, kSearchBins, pooledFragmentCurves, pooledProbabilityCurves } from '../search_bins.js';
+import { loadSearch, searchCrossings } from '../search_estimates.js';
 import { createFlags } from './study_flags.js';
 import { createCorrelationsPanel } from './study_correlations.js';
 
@@ -49,6 +52,16 @@ const kCriticalNote = 'Points: where the measured probability crosses 0.5 (inter
   'points). Lines, where the correlations service has fits: the fitted v50 (solid) with its 95 % interval (band), ' +
   'v10 (dashed) and v90 (dotted); along the energy per contact E10, E50 and E90. The axis spans the estimates: an ' +
   'interval reaching beyond is cut at the edge (its numbers are in the correlations table).';
+const kSearchedNote = (symbol) => `Along the searched ${symbol} (the adaptive search placed one or a few cases ` +
+  `at each value): points, the results pooled into at most ${kSearchBins} bins of about equal numbers of results ` +
+  `per condition, at their results' mean ${symbol}, whiskers the 95 % Wilson interval of the pooled counts (no ` +
+  'line). Dashed: ' +
+  'the fitted logistic curve of each group with its 95 % band. White rings: the search\'s own estimate ' +
+  '(docs/ADAPTIVE.md), bar: its 95 % interval. Red rings: bins with results outside the small-strain range. ' +
+  'Click a legend entry to hide or show its series.';
+const kFragmentsNote = 'Fragments of each size per result, one series per grid value.';
+const kSearchedFragmentsNote = 'Fragments of each size per result, one series per bin of the searched axis (the ' +
+  'bins of the probability plot).';
 const kStudent = 'Mean of the results, whiskers: 95 % Student interval';
 const kNoBounces = 'Nothing to plot: no case here bounced (the restitution is that of the bounces).';
 
@@ -61,8 +74,7 @@ function createPanels() {
       `${kStudent} (within 0 and 1).`),
     restitution: panel('restitution', 'Restitution (largest fragment, normal)',
       'Mean over the bounces only (a stick or a break-up has none), whiskers: 95 % Student interval.'),
-    fragments: panel('fragments', 'Fragment-size distribution',
-      'Fragments of each size per result, one series per grid value.'),
+    fragments: panel('fragments', 'Fragment-size distribution', kFragmentsNote),
   };
 }
 
@@ -118,29 +130,65 @@ function createFragmentsPlot(state, fragments) {
     const query = axisQuery({ ...view.slice, ...groupKeys });
     const response = await getJson(`/api/studies/${studyId}/fragment-sizes?${query}`);
     if (mine !== request) return;
-    plotCurves(fragments.chart, fragmentCurves(response, view.xAxis, view.names), {
+    const along = alongAxis(view.xAxis, view.names);
+    const searched = view.names.searched(along);
+    const curve = curves.find((each) => each.groupValues === group);
+    const series = searched && curve
+      ? pooledFragmentCurves(response, curveBins(curve, along), { along, names: view.names, format: formatNumber })
+      : fragmentCurves(response, view.xAxis, view.names);
+    fragments.noteNode.textContent = searched ? kSearchedFragmentsNote : kFragmentsNote;
+    plotCurves(fragments.chart, series, {
       xLabel: 'fragment size (primaries)', yLabel: 'fragments per result', yLog: true });
   }
   return draw;
 }
 
+// The measured probability curves: one point per grid point joined by a line, or along a searched
+// axis the results pooled into bins (search_bins.js), points without a line.
+function probabilityCurves(grid, view, searched) {
+  const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
+  const curves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
+  if (!searched) return measuredGroups(curves, 'measured, whiskers: 95 % interval', view.names);
+  const pooled = pooledProbabilityCurves(curves,
+    { outcome: view.outcome, along: alongAxis(view.xAxis, view.names), xLog: view.xLog });
+  return measuredGroups(pooled, 'results pooled in bins, whiskers: 95 % interval', view.names);
+}
+
+// The search's estimates above the probability plot, one line per condition.
+function searchList(crossings) {
+  return crossings.length === 0 ? null : el('ul', { class: 'search-estimates', id: 'search-estimates' },
+    crossings.map((curve) => el('li', {}, `${curve.label} (${curve.state}, ${curve.cases} cases)`)));
+}
+
 // The probability and critical-value plots and the correlations panel: the measured curves at
 // once, then with the fits where the correlations service has them (each chart's dataset.fitted
 // counts the fitted curves drawn). A newer call stops an older one.
+// Along a searched axis, the search's own estimates are drawn and listed with them.
 function createOutcomePlots({ probability, critical }, correlationsPanel) {
   let drawing = 0;
+  let searchOf = { grid: null, answer: null };
+  // The search's state, asked once per grid statistics (they change as its results arrive).
+  const search = (grid) => {
+    if (searchOf.grid !== grid) searchOf = { grid, answer: loadSearch(grid.study) };
+    return searchOf.answer;
+  };
   return async (grid, view, correlations) => {
     const mine = ++drawing;
     await nextTask();
     if (mine !== drawing) return;
-    const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
-    const measured = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) }),
-      'measured, whiskers: 95 % interval', view.names);
+    const along = alongAxis(view.xAxis, view.names);
+    const searched = view.names.searched(along);
+    const measured = probabilityCurves(grid, view, searched);
+    const crossings = searched && !kDerivedX[view.xAxis]
+      ? searchCrossings(await search(grid), measured, { outcome: view.outcome, along, names: view.names }) : [];
+    if (mine !== drawing) return;
+    probability.noteNode.textContent = searched ? kSearchedNote(view.names.symbol(along)) : kProbabilityNote;
+    replaceChildren(probability.extra, searchList(crossings));
     const flagged = flaggedPoints(measured, 'small_strain_exceeded', 'outside the small-strain range');
     const markers = flagged.points.length ? [flagged] : [];
     const drawBoth = async (fitted, fittedCritical, observed) => {
-      plotCurves(probability.chart, [...measured, ...fitted, ...markers],
-        { xLabel: view.xLabel, xLog: view.xLog, yLabel: `P(${view.outcome})`, bounds: kBounded });
+      plotCurves(probability.chart, [...measured, ...fitted, ...crossings, ...markers], { xLabel: view.xLabel,
+        xLog: view.xLog, yLabel: `P(${view.outcome})`, bounds: kBounded, dataTicks: !searched });
       probability.chart.dataset.fitted = fitted.length;
       probability.chart.dataset.outcome = view.outcome;
       await nextTask();
@@ -177,19 +225,24 @@ export function createPlots({ state }) {
       [damage.chart, 'damage_ratio', 'damage ratio', kBounded, undefined],
       [restitution.chart, 'restitution', 'normal restitution', null, kNoBounces],
     ];
+    // Along a searched axis, each grid point's mean as a point without a line (most hold one result).
+    const searchedAxis = alongAxis(view.xAxis, view.names);
+    const style = view.names.searched(searchedAxis) ? 'points' : 'measured';
     for (const [chart, quantity, yLabel, bounds, empty] of charts) {
       await nextTask();
       if (mine !== drawing) return;
-      const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) }),
-        'mean, whiskers: 95 % interval', view.names);
+      const curves = measuredGroups(curvesAlong(grid.grid_points, { ...along, yOf: meanOf(quantity) })
+        .map((curve) => ({ ...curve, style })), 'mean, whiskers: 95 % interval', view.names);
       plotCurves(chart, curves, { xLabel: view.xLabel, xLog: view.xLog, yLabel, bounds, empty });
     }
     await nextTask();
     if (mine !== drawing) return;
     const shownAxes = grid.axes.filter((axis) => axis.values.length > 1 && !(axis.name in view.slice))
       .map((axis) => axis.name);
-    flags.draw(grid, { slice: view.slice, shownAxes, names: view.names });
     const seriesCurves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
+    const pooled = view.names.searched(searchedAxis)
+      ? seriesCurves.flatMap((curve) => curveBins(curve, searchedAxis).map((bin) => bin.row)) : null;
+    flags.draw(grid, { slice: view.slice, shownAxes, names: view.names, pooled });
     await drawFragments(grid.study, seriesCurves, view).catch((error) => {
       replaceChildren(fragments.chart, el('p', { class: 'note' }, error.message));
     });
