@@ -21,6 +21,17 @@ export async function getJson(path, { signal } = {}) {
   return parse(await fetch(path, { signal, headers: { Accept: 'application/json' } }));
 }
 
+// The JSON at `path`, or null where the service answers 404 (e.g. a study without results or
+// without a search).
+export async function getJsonOrNull(path) {
+  try {
+    return await getJson(path);
+  } catch (error) {
+    if (error instanceof ApiError && error.status === 404) return null;
+    throw error;
+  }
+}
+
 function post(path, body, token) {
   const headers = { 'Content-Type': 'application/json', Accept: 'application/json' };
   if (token) headers.Authorization = `Bearer ${token}`;

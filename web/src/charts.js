@@ -135,54 +135,49 @@ function seriesOptions(curves, data) {
   return { series, bands, columns, whiskers, bars };
 }
 
-// Draws each shown measured series' intervals as vertical whiskers with caps, inside the plot area.
-function drawWhiskers(u, whiskers, log) {
+// Strokes, clipped to the plot area, the path `trace(item)` of each item whose series is shown
+// (item.series, its colour item.color), `width` CSS pixels wide.
+function strokeInPlot(u, items, width, trace) {
   const ctx = u.ctx;
-  const { left, top, width, height } = u.bbox;
-  const ratio = uPlot.pxRatio || 1;
-  const cap = 3 * ratio;
-  const floor = (value) => (log ? Math.max(value, u.scales.y.min) : value);
+  const { left, top, width: areaWidth, height } = u.bbox;
   ctx.save();
   ctx.beginPath();
-  ctx.rect(left, top, width, height);
+  ctx.rect(left, top, areaWidth, height);
   ctx.clip();
-  ctx.lineWidth = 1.25 * ratio;
-  for (const whisker of whiskers) {
-    if (!u.series[whisker.series].show) continue;
-    ctx.strokeStyle = whisker.color;
+  ctx.lineWidth = width * (uPlot.pxRatio || 1);
+  for (const item of items) {
+    if (!u.series[item.series].show) continue;
+    ctx.strokeStyle = item.color;
     ctx.beginPath();
-    u.data[0].forEach((x, i) => {
-      if (whisker.lo[i] === null || whisker.hi[i] === null) return;
-      const px = u.valToPos(x, 'x', true);
-      const [low, high] = [u.valToPos(floor(whisker.lo[i]), 'y', true), u.valToPos(floor(whisker.hi[i]), 'y', true)];
-      ctx.moveTo(px, low);
-      ctx.lineTo(px, high);
-      ctx.moveTo(px - cap, low);
-      ctx.lineTo(px + cap, low);
-      ctx.moveTo(px - cap, high);
-      ctx.lineTo(px + cap, high);
-    });
+    trace(ctx, item);
     ctx.stroke();
   }
   ctx.restore();
 }
 
+// Draws each shown measured series' intervals as vertical whiskers with caps, inside the plot area.
+function drawWhiskers(u, whiskers, log) {
+  const cap = 3 * (uPlot.pxRatio || 1);
+  const floor = (value) => (log ? Math.max(value, u.scales.y.min) : value);
+  strokeInPlot(u, whiskers, 1.25, (ctx, whisker) => u.data[0].forEach((x, i) => {
+    if (whisker.lo[i] === null || whisker.hi[i] === null) return;
+    const px = u.valToPos(x, 'x', true);
+    const [low, high] = [u.valToPos(floor(whisker.lo[i]), 'y', true), u.valToPos(floor(whisker.hi[i]), 'y', true)];
+    ctx.moveTo(px, low);
+    ctx.lineTo(px, high);
+    ctx.moveTo(px - cap, low);
+    ctx.lineTo(px + cap, low);
+    ctx.moveTo(px - cap, high);
+    ctx.lineTo(px + cap, high);
+  }));
+}
+
 // Draws each shown crossing's interval along x as a bar with caps at its point's height; an end
 // that is not bounded (null) reaches the plot's edge.
 function drawBars(u, bars) {
-  const ctx = u.ctx;
-  const { left, top, width, height } = u.bbox;
-  const ratio = uPlot.pxRatio || 1;
-  const cap = 4 * ratio;
-  ctx.save();
-  ctx.beginPath();
-  ctx.rect(left, top, width, height);
-  ctx.clip();
-  ctx.lineWidth = 2.5 * ratio;
-  for (const bar of bars) {
-    if (!u.series[bar.series].show) continue;
-    ctx.strokeStyle = bar.color;
-    ctx.beginPath();
+  const cap = 4 * (uPlot.pxRatio || 1);
+  const { left, width } = u.bbox;
+  strokeInPlot(u, bars, 2.5, (ctx, bar) => {
     for (const point of bar.points) {
       const py = u.valToPos(point.y, 'y', true);
       const from = point.xlo === null ? left : u.valToPos(point.xlo, 'x', true);
@@ -194,9 +189,7 @@ function drawBars(u, bars) {
         ctx.lineTo(end, py + cap);
       }
     }
-    ctx.stroke();
-  }
-  ctx.restore();
+  });
 }
 
 // The y range: the bounds when given (with a little room), else the data's span, with their

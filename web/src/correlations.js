@@ -6,7 +6,7 @@
 // (GET /api/studies/ID/correlations) names every fit with its group and critical values; a fit's
 // curve comes from its own document (GET .../correlations/NAME), fetched once per fit. A 404 (the study
 // has no results yet) hides these parts.
-import { ApiError, getJson } from './api.js';
+import { getJson, getJsonOrNull } from './api.js';
 import { conditionKey, observedCriticalCurves, valueKey } from './series.js';
 
 // The dose of the fits along x (series.js): the impact speed along the axis with the role of the
@@ -23,14 +23,7 @@ const kDosePrefixes = { impact_speed: 'v', energy_per_contact: 'E' };
 // A critical value's name: v50 for the speed where P crosses 0.5, E50 for the energy per contact.
 export const levelName = (level, dose) => `${kDosePrefixes[dose] || 'x'}${Math.round(level * 100)}`;
 
-export async function loadCorrelationSummary(studyId) {
-  try {
-    return await getJson(`/api/studies/${studyId}/correlations`);
-  } catch (error) {
-    if (error instanceof ApiError && error.status === 404) return null;
-    throw error;
-  }
-}
+export const loadCorrelationSummary = (studyId) => getJsonOrNull(`/api/studies/${studyId}/correlations`);
 
 // Whether every axis value of a fit's group equals the grid point's.
 const groupMatches = (group, gridPoint) => Object.entries(group)

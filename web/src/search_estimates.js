@@ -3,19 +3,13 @@
 // 95 % profile-likelihood interval of its Firth fit, drawn on the probability plot as a ring at
 // (estimate, level) with the interval as a horizontal bar, in the colour of the group's curve, and
 // listed beneath the plot.
-import { ApiError, getJson } from './api.js';
+import { getJsonOrNull } from './api.js';
 import { doseOf, levelName } from './correlations.js';
 import { formatNumber } from './dom.js';
 import { valueKey } from './series.js';
 
-export async function loadSearch(studyId) {
-  try {
-    return await getJson(`/api/studies/${studyId}/search`);
-  } catch (error) {
-    if (error instanceof ApiError && error.status === 404) return null;
-    throw error;
-  }
-}
+// The search's groups; null for a study without a search.
+export const loadSearch = (studyId) => getJsonOrNull(`/api/studies/${studyId}/search`);
 
 const groupMatches = (group, gridPoint) => Object.entries(group)
   .every(([axis, value]) => valueKey(gridPoint[axis]) === valueKey(value));
