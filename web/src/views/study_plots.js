@@ -133,8 +133,10 @@ function createFragmentsPlot(state, fragments) {
     const along = alongAxis(view.xAxis, view.names);
     const searched = view.names.searched(along);
     const curve = curves.find((each) => each.groupValues === group);
+    // Ranges written as the flagged-results table writes them (4 digits).
+    const format = (value) => formatNumber(value, 4);
     const series = searched && curve
-      ? pooledFragmentCurves(response, curveBins(curve, along), { along, names: view.names, format: formatNumber })
+      ? pooledFragmentCurves(response, curveBins(curve, along), { along, names: view.names, format })
       : fragmentCurves(response, view.xAxis, view.names);
     fragments.noteNode.textContent = searched ? kSearchedFragmentsNote : kFragmentsNote;
     plotCurves(fragments.chart, series, {
