@@ -4,8 +4,9 @@
     studies/analysis/size_ladder.py runs/size_ladder_n32.sqlite runs/size_ladder_n128.sqlite ...
 
 For each store (one N) and wall: the adaptive search's v50 with its 95 % interval (Firth's fit and
-profile interval, docs/ADAPTIVE.md), the cases and the CPU seconds of their stepping (the sum of
-/run/cpu_seconds), the mean number of initial contacts N_c, E50/(N_c E_break) with its 95 % profile
+profile interval, docs/ADAPTIVE.md), the cases, the CPU seconds of the settled cases' stepping (the
+sum of /run/cpu_seconds; the fits are made of them) and of all cases (the undetermined ones ran to
+the time limit: what the study cost), the mean number of initial contacts N_c, E50/(N_c E_break) with its 95 % profile
 interval (the logistic fit of break-up in ln(E_kin/(N_c E_break)) that `aerobreak serve` computes
 for the store, asked as transition_fit.py, which sits beside this script, asks it; env AEROBREAK
 names the program, build/aerobreak by default), and the mobility-equivalent diameter d N^0.463
@@ -46,14 +47,13 @@ def groups_of(path):
 
 
 def results_of(path, wall):
-    """Per result of one wall: (initial contacts, stepping CPU s) of the settled ones."""
+    """Per result of one wall: (initial contacts, stepping CPU s, settled)."""
     db = sqlite3.connect(path)
     out = []
     for (document,) in db.execute("SELECT document FROM results"):
         d = json.loads(document)
-        if d["case"]["wall"]["adhesive"] != wall or not d["run"]["settled"]:
-            continue
-        out.append((d["contacts"]["initial"], d["run"]["cpu_seconds"]))
+        if d["case"]["wall"]["adhesive"] == wall:
+            out.append((d["contacts"]["initial"], d["run"]["cpu_seconds"], d["run"]["settled"]))
     return out
 
 
@@ -98,23 +98,26 @@ def power_law(points):
 
 
 def main(paths):
-    print("%6s %-9s %5s %-8s %22s %10s %7s %24s %8s %9s" % ("N", "wall", "cases", "search", "v50 m/s [95 %]",
-                                                             "CPU s", "N_c", "E50/(N_c E_break) [95 %]",
-                                                             "d_mob d", "d_mob nm"))
+    print("%6s %-9s %5s %-8s %22s %10s %10s %7s %24s %8s %9s" % (
+        "N", "wall", "cases", "search", "v50 m/s [95 %]", "CPU s set.", "CPU s all", "N_c", "E50/(N_c E_break) [95 %]",
+        "d_mob d", "d_mob nm"))
     ladder = {True: [], False: []}
     for path in paths:
         energies = energy_fits(path)
         for point, state, cases, v50, lower, upper in groups_of(path):
             n, wall = point["primaries"], point["/wall/adhesive"]
             results = results_of(path, wall)
-            cpu = sum(r[1] for r in results)
-            contacts = sum(r[0] for r in results) / len(results) if results else float("nan")
+            settled = [r for r in results if r[2]]
+            cpu_settled = sum(r[1] for r in settled)
+            cpu_all = sum(r[1] for r in results)
+            contacts = sum(r[0] for r in settled) / len(settled) if settled else float("nan")
             energy = energies.get(wall)
             d_mob = n ** 0.463
             e_text = "%.2f [%.2f, %.2f]" % energy if energy else "-"
             v_text = "%.2f [%.2f, %.2f]" % (v50, lower, upper) if v50 else "-"
-            print("%6d %-9s %5d %-8s %22s %10.1f %7.1f %24s %8.2f %9.1f" % (n, "adhesive" if wall else "none", cases,
-                  state.replace("budget_spent", "budget"), v_text, cpu, contacts, e_text, d_mob, d_mob * PRIMARY_NM))
+            print("%6d %-9s %5d %-8s %22s %10.1f %10.1f %7.1f %24s %8.2f %9.1f" % (
+                n, "adhesive" if wall else "none", cases, state.replace("budget_spent", "budget"), v_text, cpu_settled,
+                cpu_all, contacts, e_text, d_mob, d_mob * PRIMARY_NM))
             if v50 and lower and upper:
                 ladder[wall].append((n, v50, lower, upper))
     for wall, points in ladder.items():
