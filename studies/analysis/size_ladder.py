@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The size ladder: v50 of break-up against N, from the stores of the size_ladder_n*.study.json studies.
 
-    studies/analysis/size_ladder.py runs/size_ladder_n32.sqlite runs/size_ladder_n128.sqlite ...
+    studies/analysis/size_ladder.py runs/size_ladder_n32.sqlite runs/size_ladder_n128.sqlite ... [--csv FILE]
 
 For each store (one N) and wall: the adaptive search's v50 with its 95 % interval (Firth's fit and
 profile interval, docs/ADAPTIVE.md), the cases, the CPU seconds of the settled cases' stepping (the
@@ -14,10 +14,13 @@ names the program, build/aerobreak by default), and the mobility-equivalent diam
 material). Then, per wall, v50 = a N^b fitted by weighted least squares to ln v50 against ln N,
 each point weighted by its interval (sigma = (ln upper - ln lower) / (2 x 1.96)), with the 95 %
 interval of b (t quantile with n - 2 degrees of freedom, the residual scatter taken when it exceeds
-the intervals').
+the intervals'). --csv FILE also writes the table, each row with its wall's fit, as CSV (for
+size_ladder_figure.sh beside this script, which draws it).
 
 Python 3 standard library only.
 """
+import argparse
+import csv
 import importlib.util
 import json
 import math
@@ -97,38 +100,83 @@ def power_law(points):
     return b, b - t * se, b + t * se, math.exp(a), chi2, dof
 
 
-def main(paths):
-    print("%6s %-9s %5s %-8s %22s %10s %10s %7s %24s %8s %9s" % (
-        "N", "wall", "cases", "search", "v50 m/s [95 %]", "CPU s set.", "CPU s all", "N_c", "E50/(N_c E_break) [95 %]",
-        "d_mob d", "d_mob nm"))
-    ladder = {True: [], False: []}
+def ladder_rows(paths):
+    """One row per store (one N) and wall: the search's v50, the cases' CPU, contacts, E50 and d_mob."""
+    rows = []
     for path in paths:
         energies = energy_fits(path)
         for point, state, cases, v50, lower, upper in groups_of(path):
             n, wall = point["primaries"], point["/wall/adhesive"]
             results = results_of(path, wall)
             settled = [r for r in results if r[2]]
-            cpu_settled = sum(r[1] for r in settled)
-            cpu_all = sum(r[1] for r in results)
-            contacts = sum(r[0] for r in settled) / len(settled) if settled else float("nan")
-            energy = energies.get(wall)
-            d_mob = n ** 0.463
-            e_text = "%.2f [%.2f, %.2f]" % energy if energy else "-"
-            v_text = "%.2f [%.2f, %.2f]" % (v50, lower, upper) if v50 else "-"
-            print("%6d %-9s %5d %-8s %22s %10.1f %10.1f %7.1f %24s %8.2f %9.1f" % (
-                n, "adhesive" if wall else "none", cases, state.replace("budget_spent", "budget"), v_text, cpu_settled,
-                cpu_all, contacts, e_text, d_mob, d_mob * PRIMARY_NM))
-            if v50 and lower and upper:
-                ladder[wall].append((n, v50, lower, upper))
-    for wall, points in ladder.items():
+            rows.append({
+                "primaries": n, "adhesive": wall, "cases": cases, "state": state, "v50": (v50, lower, upper),
+                "cpu_settled": sum(r[1] for r in settled), "cpu_all": sum(r[1] for r in results),
+                "contacts": sum(r[0] for r in settled) / len(settled) if settled else float("nan"),
+                "energy": energies.get(wall), "d_mob": n ** 0.463})
+    return rows
+
+
+def ladder_fits(rows):
+    """Per wall with at least 3 sizes: power_law's (b, b lower, b upper, a, chi2, dof) and the sizes."""
+    fits = {}
+    for wall in (True, False):
+        points = sorted((r["primaries"],) + r["v50"] for r in rows if r["adhesive"] == wall and all(r["v50"]))
         if len(points) >= 3:
-            b, b_low, b_high, a, chi2, dof = power_law(sorted(points))
-            print("%-9s v50 = %.1f m/s x N^b, b = %.3f [%.3f, %.3f] (%d sizes, chi2 %.2f on %d degrees of freedom)" %
-                  ("adhesive" if wall else "none", a, b, b_low, b_high, len(points), chi2, dof))
+            fits[wall] = power_law(points) + (len(points),)
+    return fits
+
+
+def wall_name(wall):
+    return "adhesive" if wall else "none"
+
+
+def print_table(rows, fits):
+    print("%6s %-9s %5s %-8s %22s %10s %10s %7s %24s %8s %9s" % (
+        "N", "wall", "cases", "search", "v50 m/s [95 %]", "CPU s set.", "CPU s all", "N_c", "E50/(N_c E_break) [95 %]",
+        "d_mob d", "d_mob nm"))
+    for r in rows:
+        e_text = "%.2f [%.2f, %.2f]" % r["energy"] if r["energy"] else "-"
+        v_text = "%.2f [%.2f, %.2f]" % r["v50"] if r["v50"][0] else "-"
+        print("%6d %-9s %5d %-8s %22s %10.1f %10.1f %7.1f %24s %8.2f %9.1f" % (
+            r["primaries"], wall_name(r["adhesive"]), r["cases"], r["state"].replace("budget_spent", "budget"), v_text,
+            r["cpu_settled"], r["cpu_all"], r["contacts"], e_text, r["d_mob"], r["d_mob"] * PRIMARY_NM))
+    for wall, (b, b_low, b_high, a, chi2, dof, sizes) in fits.items():
+        print("%-9s v50 = %.1f m/s x N^b, b = %.3f [%.3f, %.3f] (%d sizes, chi2 %.2f on %d degrees of freedom)" %
+              (wall_name(wall), a, b, b_low, b_high, sizes, chi2, dof))
+
+
+CSV_COLUMNS = ("primaries", "wall", "cases", "search", "v50_m_s", "v50_lower_m_s", "v50_upper_m_s", "cpu_s_settled",
+               "cpu_s_all", "contacts", "e50_per_contact", "e50_lower", "e50_upper", "d_mob_over_d", "d_mob_nm",
+               "fit_a_m_s", "fit_b", "fit_b_lower", "fit_b_upper", "fit_sizes")
+
+
+def write_csv(path, rows, fits):
+    """The table as CSV, one row per N and wall, each with its wall's fit v50 = a N^b (empty: no value); the
+    search column is the store's state (converged, budget_spent or searching)."""
+    with open(path, "w", newline="") as out:
+        writer = csv.writer(out)
+        writer.writerow(CSV_COLUMNS)
+        for r in rows:
+            fit = fits.get(r["adhesive"])
+            fit_cells = [fit[3], fit[0], fit[1], fit[2], fit[6]] if fit else [None] * 5
+            cells = [r["primaries"], wall_name(r["adhesive"]), r["cases"], r["state"], *r["v50"], r["cpu_settled"],
+                     r["cpu_all"], r["contacts"], *(r["energy"] or (None,) * 3), r["d_mob"], r["d_mob"] * PRIMARY_NM,
+                     *fit_cells]
+            writer.writerow(["" if c is None or c != c else c for c in cells])
+
+
+def main(arguments):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("stores", nargs="+", metavar="STORE", help="a size_ladder_n*.sqlite store (one N)")
+    parser.add_argument("--csv", metavar="FILE", help="also write the table and the fits to FILE as CSV")
+    options = parser.parse_args(arguments)
+    rows = ladder_rows(options.stores)
+    fits = ladder_fits(rows)
+    print_table(rows, fits)
+    if options.csv:
+        write_csv(options.csv, rows, fits)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
-        print(__doc__)
-        sys.exit(2)
     main(sys.argv[1:])
