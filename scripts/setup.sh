@@ -21,6 +21,7 @@ packages=(
   libeigen3-dev
   libboost-dev
   gfortran
+  python3
   clang-format
   openfoam
   chromium
