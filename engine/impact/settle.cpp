@@ -203,7 +203,8 @@ bool SettleMonitor::judge_fates_fixed(const Simulation& simulation) {
   FatesJudgement j = judge_fates(simulation, last_positions_, last_time_);
   last_positions_ = simulation.particles().position;
   last_time_ = simulation.time();
-  if (!j.reason.empty()) return false;
+  last_fates_reason_ = std::move(j.reason);
+  if (!last_fates_reason_.empty()) return false;
   ++judgements_;
   last_reason_.clear();
   judged_ = std::move(j.fragments);
@@ -224,6 +225,7 @@ std::string SettleMonitor::open_reason(const Simulation& simulation) const {
   else
     reason = "the quiet window that began at t = " + number(quiet_.start) + " had not ended";
   if (!last_reason_.empty()) reason += "; at the last judgement " + last_reason_;
+  if (!last_fates_reason_.empty()) reason += "; the fates-fixed rule's last objection: " + last_fates_reason_;
   return reason;
 }
 

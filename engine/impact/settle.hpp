@@ -63,7 +63,8 @@ class SettleMonitor {
   double settled_at() const { return settled_at_; }                // time of the successful judgement
   double quiet_since() const { return since_; }                    // start of its window (else of the last quiet one)
   const std::string& last_reason() const { return last_reason_; }  // why the last judgement failed
-  // Why a run that ends now is not settled: contacts still changing, and the last objection.
+  // Why a run that ends now is not settled: contacts still changing, the last objection of the
+  // quiet rule's judgement, and the fates-fixed rule's objection at the last update.
   std::string open_reason(const Simulation& simulation) const;
   std::uint64_t judgements() const { return judgements_; }
   // The fragments of the last judgement and their centre-of-mass velocities averaged over its
@@ -116,6 +117,7 @@ class SettleMonitor {
   std::vector<Vec3> last_positions_;
   double last_time_ = 0.0;
   std::string last_reason_;
+  std::string last_fates_reason_;  // why the fates-fixed rule's last judgement failed
   FragmentAnalysis judged_;
   std::vector<Vec3> judged_mean_velocity_;
 };

@@ -5,7 +5,12 @@ usage: grid_point_agreement.py BEFORE.sqlite AFTER.sqlite
 
 Both stores hold a run of the same study (e.g. the code before a change and after it). For each
 grid point and outcome class it prints the counts where they differ and whether each run's
-probability lies inside the other's 95 % Wilson interval (both ways); then, case by case (matched
+probability lies inside the other's 95 % Wilson interval (both ways), with Fisher's exact test
+(two-sided) of the two counts; then how many such misses two runs of ONE law would give: with each
+grid point's class probability taken as the two runs' pooled share, the chance that two independent
+binomial samples of those sizes both lie inside each other's interval, summed over grid points and
+classes into the expected number of misses (a probability near 0 or 1 makes a miss likely: 0 of 20
+lies outside the interval of 1 of 20); then, case by case (matched
 by grid point and replicate, so that runs whose case documents differ, e.g. by new defaults, are
 compared too), how many have the same class, retained mass fraction, fragment count and largest
 fragment, and the largest restitution difference. A side-by-side benchmark (docs/PERFORMANCE.md),
@@ -39,8 +44,36 @@ def inside(k, n, other_k, other_n):
     return low <= k / n <= high
 
 
+def binomial_pmf(k, n, p):
+    return math.comb(n, k) * p**k * (1 - p) ** (n - k)
+
+
+def fisher_exact(ka, na, kb, nb):
+    """Two-sided p of Fisher's exact test on the 2x2 table (ka, na - ka; kb, nb - kb): the sum of the
+    hypergeometric probabilities of the tables with the same margins no more likely than the one seen."""
+    column, total = ka + kb, na + nb
+
+    def table_probability(k):
+        return math.comb(na, k) * math.comb(nb, column - k) / math.comb(total, column)
+
+    seen = table_probability(ka)
+    tables = range(max(0, column - nb), min(na, column) + 1)
+    return min(1.0, sum(q for q in map(table_probability, tables) if q <= seen * (1 + 1e-7)))
+
+
+def miss_probability_under_one_law(ka, na, kb, nb):
+    """The chance that two runs drawn from one law, at the pooled share, miss the both-ways check."""
+    p = (ka + kb) / (na + nb)
+    pass_probability = sum(binomial_pmf(i, na, p) * binomial_pmf(j, nb, p)
+                           for i in range(na + 1) for j in range(nb + 1)
+                           if inside(i, na, j, nb) and inside(j, nb, i, na))
+    return 1 - pass_probability
+
+
 def compare_grid_points(a, b):
     agree = total = 0
+    expected_misses = 0.0
+    smallest_fisher = 1.0
     for key in sorted(set(a) | set(b)):
         na, nb = sum(a[key].values()), sum(b[key].values())
         if not na or not nb:
@@ -51,11 +84,16 @@ def compare_grid_points(a, b):
             ok = inside(ka, na, kb, nb) and inside(kb, nb, ka, na)
             total += 1
             agree += ok
+            expected_misses += miss_probability_under_one_law(ka, na, kb, nb)
             if ka * nb != kb * na or not ok:
+                fisher = fisher_exact(ka, na, kb, nb)
+                smallest_fisher = min(smallest_fisher, fisher)
                 verdict = "inside" if ok else "OUTSIDE"
-                print(f"{key} {outcome}: {ka}/{na} against {kb}/{nb}, {verdict} the other's interval")
+                print(f"{key} {outcome}: {ka}/{na} against {kb}/{nb}, {verdict} the other's interval, "
+                      f"Fisher p = {fisher:.3g}")
     print(f"{agree} of {total} probabilities inside the other run's 95 % Wilson interval both ways "
-          f"({len(a)} grid points)")
+          f"({len(a)} grid points); two runs of one law would miss {expected_misses:.1f} of them on "
+          f"average; smallest Fisher p {smallest_fisher:.3g}")
 
 
 def compare_cases(path_a, path_b):

@@ -84,6 +84,16 @@ TEST_CASE("a break-up whose pieces in flight keep changing stops by the outcome-
     CHECK(judged.fragments.size() >= 3);
     for (const Vec3& v : monitor.judged_mean_velocities()) CHECK_THAT(v.z, Catch::Matchers::WithinAbs(0.2, 1e-9));
   }
+  SECTION("stopped before a verdict, the run says what the fates-fixed rule objected to last") {
+    Simulation sim = rattling_break_up();
+    SettleMonitor monitor(window, rest_speed, {}, true);
+    REQUIRE_FALSE(run_until(sim, monitor, window, 0.5 * window));
+    const std::string reason = monitor.open_reason(sim);
+    INFO(reason);
+    CHECK(reason.find("contacts were still made or broken") != std::string::npos);
+    // The pair attracts by van der Waals across its gap, so its pieces do not fly on straight lines.
+    CHECK(reason.find("the fates-fixed rule's last objection: fragments apart feel forces") != std::string::npos);
+  }
 }
 
 TEST_CASE("on real impacts the outcome-fixed rule stops no later than the quiet rule, with the same outcome") {
