@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "orchestrator/search/determined_chance.hpp"
 #include "orchestrator/search/optimal_design.hpp"
 #include "orchestrator/search/response_fit.hpp"
 
@@ -74,12 +75,37 @@ std::vector<double> candidate_doses(const BoundarySearchSpec& spec, const std::v
   return doses;
 }
 
+// `count` of the candidates `inside` spread evenly in their expected determined results: each owns
+// a share q of the line, the gap's ends half a share each, and pick k is the owner of the point
+// (k + 1) / (count + 1) along it (with every q = 1 the even spread). Where a part of the gap times
+// out, its cases go to the rest of it: the gap stays as it is while its cases end undetermined.
+std::vector<std::size_t> spread_by_chance(const std::vector<std::size_t>& inside, const std::vector<double>& chances,
+                                          std::size_t count) {
+  double total = 0.0;
+  for (const auto c : inside) total += chances[c];
+  std::vector<std::size_t> picked;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double point = (static_cast<double>(k) + 1.0) * (total + 1.0) / (static_cast<double>(count) + 1.0);
+    std::size_t owner = 0;
+    double next = 0.5 + chances[inside[0]];  // where the share of the candidate after the owner begins
+    while (owner + 1 < inside.size() && next <= point) next += chances[inside[++owner]];
+    picked.push_back(inside[owner]);
+  }
+  return picked;
+}
+
 // Phase I: `count` candidates spread evenly strictly inside the gap (one: its middle, a
-// bisection); the candidates at its two ends in turn when none lies inside.
-std::vector<std::size_t> gap_doses(const std::vector<double>& doses, double low, double high, std::size_t count) {
+// bisection); the candidates at its two ends in turn when none lies inside. Candidates near
+// undetermined results count by their chance of a determined one (spread_by_chance). The ends
+// are where determined results lie, and only cases there can end the separation when nothing
+// lies between them: they are kept.
+std::vector<std::size_t> gap_doses(const std::vector<double>& doses, const std::vector<double>& chances, double low,
+                                   double high, std::size_t count) {
   std::vector<std::size_t> inside;
   for (std::size_t c = 0; c < doses.size(); ++c)
     if (doses[c] > low && doses[c] < high) inside.push_back(c);
+  if (std::any_of(inside.begin(), inside.end(), [&](const auto c) { return chances[c] < 1.0; }))
+    return spread_by_chance(inside, chances, count);
   std::vector<std::size_t> picked;
   if (inside.empty()) {
     const auto nearest = [&](double dose) {
@@ -104,7 +130,8 @@ std::vector<std::size_t> gap_doses(const std::vector<double>& doses, double low,
 // The round's cases shared out between the phase-I gaps of the responses that need one and the
 // phase-II design of the crossings whose responses overlap, in turn, in target order.
 void place(const BoundarySearchSpec& spec, const std::vector<ResponseFit>& fits,
-           const std::vector<CrossingEstimate>& estimates, std::size_t count, std::uint64_t seed, RoundPlan& plan) {
+           const std::vector<CrossingEstimate>& estimates, const std::vector<SearchObservation>& observations,
+           UndeterminedWeighting weighting, std::size_t count, std::uint64_t seed, RoundPlan& plan) {
   std::vector<const ResponseFit*> gaps;
   std::vector<DesignTarget> design;
   std::size_t e = 0;
@@ -126,12 +153,14 @@ void place(const BoundarySearchSpec& spec, const std::vector<ResponseFit>& fits,
   if (sources == 0) return;
   const auto values = search_candidates(spec);
   const auto doses = candidate_doses(spec, values);
+  const auto chances = weighting == UndeterminedWeighting::by_chance ? determined_chances(spec, observations, values)
+                                                                     : std::vector<double>(values.size(), 1.0);
   for (std::size_t s = 0; s < sources; ++s) {
     const std::size_t share = count / sources + (s < count % sources ? 1 : 0);
     if (share == 0) continue;
     const bool optimal = s == gaps.size();
-    const auto picked = optimal ? optimal_doses(design, doses, share, seed)
-                                : gap_doses(doses, gaps[s]->gap_low, gaps[s]->gap_high, share);
+    const auto picked = optimal ? optimal_doses(design, doses, chances, share, seed)
+                                : gap_doses(doses, chances, gaps[s]->gap_low, gaps[s]->gap_high, share);
     for (const auto c : picked) {
       plan.values.push_back(values[c]);
       plan.reasons.push_back(optimal ? "optimal" : "bracket " + gaps[s]->response);
@@ -156,7 +185,7 @@ std::vector<CrossingEstimate> estimate_crossings(const BoundarySearchSpec& spec,
 }
 
 RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservation> observations,
-                     const RoundContext& context) {
+                     const RoundContext& context, UndeterminedWeighting weighting) {
   RoundPlan plan;
   const auto fits = fit_targets(spec, observations);
   plan.estimates = crossings(spec, fits, context.seed);
@@ -183,7 +212,7 @@ RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservati
     return plan;
   }
   const auto count = static_cast<std::size_t>(std::min(spec.batch, spec.budget - context.cases_placed));
-  place(spec, fits, plan.estimates, count, context.seed, plan);
+  place(spec, fits, plan.estimates, observations, weighting, count, context.seed, plan);
   if (plan.values.empty()) plan.state = unreachable ? GroupState::out_of_range : GroupState::budget_spent;
   return plan;
 }

@@ -57,6 +57,11 @@ struct RoundPlan {
   std::size_t results = 0;           // determined results the fits used
 };
 
+// Whether the design weighs each candidate by the chance that a case there ends determined
+// (determined_chance.hpp; docs/ADAPTIVE.md, "Undetermined outcomes"), or ignores undetermined
+// outcomes (the design before: the benchmark's reference).
+enum class UndeterminedWeighting { by_chance, none };
+
 // Decides round `context.round` of a group that has placed `context.cases_placed` cases (all
 // finished: done or failed) with these results (those of the rounds before it). Phase I, per
 // response whose outcomes do not overlap yet: values evenly inside the gap between the two
@@ -67,8 +72,9 @@ struct RoundPlan {
 // from the fit's normal approximation, seeded by `context.seed`. A crossing is found when it is
 // narrow enough on these results and was on those of the rounds before the last (with the
 // previous seed), and the group has kMinimumSearchResults results (docs/ADAPTIVE.md, "Stopping").
+// Both phases weigh each candidate by the chance that a case there ends determined (`weighting`).
 RoundPlan plan_round(const BoundarySearchSpec& spec, std::vector<SearchObservation> observations,
-                     const RoundContext& context);
+                     const RoundContext& context, UndeterminedWeighting weighting = UndeterminedWeighting::by_chance);
 
 // The crossings of every target from these results, with the stopping rule's verdict (the
 // estimates of plan_round).

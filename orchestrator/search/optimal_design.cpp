@@ -68,24 +68,32 @@ double crossing_variance(const Eigen::Vector2d& b, const Eigen::Matrix2d& m, dou
 
 using DrawsByFit = std::map<const ResponseFit*, std::vector<Draw>>;
 
-// sum over targets of E[Var(theta_t) | one more case at x] / half_width_t^2.
-double crossings_criterion(const std::vector<DesignTarget>& targets, const DrawsByFit& by_fit, double x) {
+// sum over targets of E[Var(theta_t) | one more case at x] / half_width_t^2. The case is
+// determined with chance q and adds its information only then: the variance after it is
+// q Var(M + I_x) + (1 - q) Var(M). q = 1 (no undetermined result near x) is the plain criterion.
+double crossings_criterion(const std::vector<DesignTarget>& targets, const DrawsByFit& by_fit, double x, double q) {
   double value = 0.0;
   for (const auto& target : targets) {
     const auto& draws = by_fit.at(target.fit);
     double sum = 0.0;
-    for (const auto& draw : draws)
-      sum += crossing_variance(draw.b, draw.information + case_information(draw.b, x), target.level);
+    for (const auto& draw : draws) {
+      const double after = crossing_variance(draw.b, draw.information + case_information(draw.b, x), target.level);
+      sum += q < 1.0 ? q * after + (1.0 - q) * crossing_variance(draw.b, draw.information, target.level) : after;
+    }
     value += sum / static_cast<double>(draws.size()) / (target.half_width * target.half_width);
   }
   return value;
 }
 
-// -sum over fits of E[log det M | one more case at x].
-double slope_criterion(const DrawsByFit& by_fit, double x) {
+// -sum over fits of E[log det M | one more case at x], the case determined with chance q:
+// q log det(M + I_x) + (1 - q) log det M.
+double slope_criterion(const DrawsByFit& by_fit, double x, double q) {
   double value = 0.0;
   for (const auto& [fit, draws] : by_fit)
-    for (const auto& draw : draws) value -= std::log((draw.information + case_information(draw.b, x)).determinant());
+    for (const auto& draw : draws) {
+      const double after = std::log((draw.information + case_information(draw.b, x)).determinant());
+      value -= q < 1.0 ? q * after + (1.0 - q) * std::log(draw.information.determinant()) : after;
+    }
   return value;
 }
 
@@ -107,7 +115,9 @@ double expected_crossing_variance(const DesignTarget& target, std::uint64_t seed
 }
 
 std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets, const std::vector<double>& candidates,
-                                       std::size_t count, std::uint64_t seed, int draws) {
+                                       const std::vector<double>& determined, std::size_t count, std::uint64_t seed,
+                                       int draws) {
+  const auto chance = [&](std::size_t c) { return determined.empty() ? 1.0 : determined[c]; };
   NormalDraws normal(seed);
   // Draws per fit (targets of the same response share them).
   DrawsByFit by_fit;
@@ -119,13 +129,15 @@ std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets,
     std::size_t best = 0;
     double best_value = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const double value =
-          pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c]) : slope_criterion(by_fit, candidates[c]);
+      const double value = pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c], chance(c))
+                                         : slope_criterion(by_fit, candidates[c], chance(c));
       if (value < best_value) best_value = value, best = c;
     }
     picked.push_back(best);
+    // The later picks of the round see the expected information of this one, q I_x (exactly I_x
+    // at q = 1): its outcome is not known before the round ends.
     for (auto& [fit, fit_draws] : by_fit)
-      for (auto& draw : fit_draws) draw.information += case_information(draw.b, candidates[best]);
+      for (auto& draw : fit_draws) draw.information += chance(best) * case_information(draw.b, candidates[best]);
   }
   return picked;
 }

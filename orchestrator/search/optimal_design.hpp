@@ -29,8 +29,13 @@ struct DesignTarget {
 // Plann. Inference 21 (1989) 191: Bayesian optimal design for logistic regression, which unlike
 // a plug-in locally optimal design does not stake every case on the current estimate), seeded by
 // `seed`. Every pick adds its information to every fit: one case informs all responses.
+// `determined` (per candidate, or empty: all 1) is the chance q that a case there ends determined
+// (determined_chance.hpp): an undetermined case is left out of the fits, so both criteria are the
+// expectation over the two, q U(M + I_x) + (1 - q) U(M), and a pick adds q I_x to the information
+// the later picks of the round see. Where q = 1 the picks are those of the plain criteria.
 std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets, const std::vector<double>& candidates,
-                                       std::size_t count, std::uint64_t seed, int draws = 100);
+                                       const std::vector<double>& determined, std::size_t count, std::uint64_t seed,
+                                       int draws = 100);
 
 // E[Var(theta)] of a crossing under the results alone, over the same draws: the precision the
 // results give once the uncertainty of the slope is counted, which a lucky narrow profile
