@@ -39,6 +39,23 @@ facts=$(awk -F, 'NR > 1 {
     printf ")\"\nnmin = %s; nmax = %s; vmin = %s; vmax = %s; emax = %s; primary_nm = %.0f; any_searching = %d\n",
       nmin, nmax, vmin, vmax, emax + 0, d, any_searching + 0 }' "$table")
 
+# Gnuplot's plot clauses of one quantity, its estimate and 95 % bounds in CSV columns $1, $2 and $3: per wall,
+# the finished searches (converged or budget spent) filled, those under way open; each clause ends ", \" for the
+# clauses that follow.
+wall_points() {
+  local wall final point colour title
+  while read -r wall final point colour title; do
+    printf '"%s" skip 1 using (shift($1, strcol(2))):(pick($%s, %s, %s)):%s:%s with yerrorbars pt %s ps 1.5 \\\n' \
+      "$table" "$1" "$wall" "$final" "$2" "$3" "$point"
+    printf '  lc rgb %s title %s, \\\n' "$colour" "$title"
+  done <<'SERIES'
+1 1 7 blue "adhesive wall"
+0 1 5 red "wall without adhesion"
+1 0 6 blue (searching_adhesive ? "adhesive, search under way" : "")
+0 0 4 red (searching_none ? "no adhesion, search under way" : "")
+SERIES
+}
+
 gnuplot <<GNUPLOT
 a_adhesive = NaN; b_adhesive = 0; fit_adhesive = ""; searching_adhesive = 0
 a_none = NaN; b_none = 0; fit_none = ""; searching_none = 0
@@ -80,14 +97,7 @@ set logscale y
 set yrange [vmin / 1.3 : vmax * 1.3]
 set ytics (5, 7, 10, 15, 20, 30, 40, 50, 70, 100)
 set ylabel "v_{50} (m/s)"
-plot "$table" skip 1 using (shift(\$1, strcol(2))):(pick(\$5, 1, 1)):6:7 with yerrorbars pt 7 ps 1.6 lc rgb blue \
-       title "adhesive wall", \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$5, 0, 1)):6:7 with yerrorbars pt 5 ps 1.5 lc rgb red \
-       title "wall without adhesion", \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$5, 1, 0)):6:7 with yerrorbars pt 6 ps 1.6 lc rgb blue \
-       title (searching_adhesive ? "adhesive, search under way" : ""), \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$5, 0, 0)):6:7 with yerrorbars pt 4 ps 1.5 lc rgb red \
-       title (searching_none ? "no adhesion, search under way" : ""), \
+plot $(wall_points 5 6 7)
      power(x, a_adhesive, b_adhesive) with lines lc rgb blue dt 1 lw 1 \
        title (fit_adhesive eq "" ? "" : "fit, adhesive: b = ".fit_adhesive.provisional(searching_adhesive)), \
      power(x, a_none, b_none) with lines lc rgb red dt 4 lw 1 \
@@ -99,14 +109,7 @@ unset logscale y
 set yrange [0 : (emax > 11 ? emax * 1.1 : 12)]
 set ytics auto
 set ylabel "E_{50} / (N_c E_{break})"
-plot "$table" skip 1 using (shift(\$1, strcol(2))):(pick(\$11, 1, 1)):12:13 with yerrorbars pt 7 ps 1.6 lc rgb blue \
-       title "adhesive wall", \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$11, 0, 1)):12:13 with yerrorbars pt 5 ps 1.5 lc rgb red \
-       title "wall without adhesion", \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$11, 1, 0)):12:13 with yerrorbars pt 6 ps 1.6 lc rgb blue \
-       title (searching_adhesive ? "adhesive, search under way" : ""), \
-     "" skip 1 using (shift(\$1, strcol(2))):(pick(\$11, 0, 0)):12:13 with yerrorbars pt 4 ps 1.5 lc rgb red \
-       title (searching_none ? "no adhesion, search under way" : ""), \
+plot $(wall_points 11 12 13)
      10 with lines lc rgb grey dt 2 lw 1.5 title 'catastrophic disruption, 10 (Dominik \& Tielens 1997)', \
      3 with lines lc rgb grey dt 3 lw 2 title 'monomer loss, 3 (Dominik \& Tielens 1997)'
 unset multiplot
