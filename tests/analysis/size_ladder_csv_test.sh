@@ -2,12 +2,14 @@
 # size_ladder.py --csv on a ladder of three real stores: the size-ladder study (studies/size_ladder_n32.study.json)
 # at N = 8, 16 and 32, one round of 10 cases per wall each (about 10 s), run by `aerobreak run`; the CSV is checked
 # against the printed table and the fit's normal equations by check_size_ladder_csv.py.
+# Where R is installed, undetermined_sensitivity.sh must give its four fits per N and wall of the same stores.
 #   tests/analysis/size_ladder_csv_test.sh build/aerobreak
 set -euo pipefail
 aerobreak=$(realpath "$1")
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 bash -n "$root/studies/analysis/size_ladder_figure.sh"
+bash -n "$root/studies/analysis/undetermined_sensitivity.sh"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -36,4 +38,12 @@ if command -v gnuplot >/dev/null; then
   echo "size_ladder_figure.sh drew $(stat -c %s "$work/ladder.png") bytes"
 else
   echo "no gnuplot: size_ladder_figure.sh checked by bash -n only"
+fi
+
+if command -v Rscript >/dev/null && command -v sqlite3 >/dev/null; then
+  "$root/studies/analysis/undetermined_sensitivity.sh" "${stores[@]}" | tee "$work/sensitivity.txt"
+  lines=$(grep -c "v50 = *[0-9]" "$work/sensitivity.txt" || true)
+  [[ $lines == 24 ]] || { echo "undetermined_sensitivity.sh: $lines v50 lines, not 4 per N and wall (24)"; exit 1; }
+else
+  echo "no R or sqlite3: undetermined_sensitivity.sh checked by bash -n only"
 fi
