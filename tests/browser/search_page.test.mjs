@@ -16,6 +16,9 @@ import path from 'node:path';
 import { launchBrowser, openPage, Service, smallStudy, withScreenshot } from './support.mjs';
 
 const kBins = 6;
+// The share of cases the synthetic worker ends undetermined: left out of each bin's probability, as
+// out of the fit and the search.
+const kUndeterminedShare = 0.25;
 // Every result's fragments (16 primaries, the study's N): one on the wall, three re-entrained.
 const kFragments = [[10, true], [3, false], [2, false], [1, false]];
 const kResult = {
@@ -51,7 +54,8 @@ test.before(async () => {
   const template = path.join(templateDirectory, 'result.json');
   writeFileSync(template, JSON.stringify(kResult));
   service = await Service.start(['--launcher', 'direct', '--worker-program', worker], {
-    ranks: 1, environment: { AEROBREAK_SYNTHETIC_RANKS: '4', AEROBREAK_SYNTHETIC_RESULT: template } });
+    ranks: 1, environment: { AEROBREAK_SYNTHETIC_RANKS: '4', AEROBREAK_SYNTHETIC_RESULT: template,
+      AEROBREAK_SYNTHETIC_UNDETERMINED: String(kUndeterminedShare) } });
   browser = await launchBrowser();
   searchId = await service.submit(searchStudy());
   gridId = await service.submit(smallStudy('grid page', { speeds: [0.02, 0.05, 0.1], primaries: [16],
@@ -136,17 +140,25 @@ test('a search study: bins of pooled results as points without a line, and the s
       assert.ok(curve.points.length >= 2 && curve.points.length <= kBins, `${curve.points.length} bins`);
       const finished = sum(within(grid, gamma).map((row) => row.finished));
       assert.equal(sum(curve.points.map((point) => point.results)), finished, 'every result in a bin');
+      const undetermined = sum(within(grid, gamma).map((row) => row.outcomes.undetermined.count));
+      assert.ok(undetermined > 0 && undetermined < finished, `${undetermined} of ${finished} undetermined`);
       const intervals = await page.evaluate(async (points) => {
         const { wilsonInterval } = await import('/src/search_bins.js');
-        return points.map((point) => wilsonInterval(point.count, point.results));
+        return points.map((point) => wilsonInterval(point.count, point.trials));
       }, curve.points);
       curve.points.forEach((point, i) => {
         const rows = within(grid, gamma, point.range);
         assert.equal(point.results, sum(rows.map((row) => row.finished)), `results in ${point.range}`);
         const breakUps = sum(rows.map((row) => row.outcomes['break-up'].count));
         assert.equal(point.count, breakUps, `break-ups in ${point.range}`);
-        assert.equal(point.y, point.count / point.results);
-        assert.deepEqual([point.lo, point.hi], intervals[i]);
+        const undetermined = sum(rows.map((row) => row.outcomes.undetermined.count));
+        assert.equal(point.trials, point.results - undetermined, `determined results in ${point.range}`);
+        if (point.trials === 0) {
+          assert.deepEqual([point.y, point.lo, point.hi], [null, null, null], `no probability in ${point.range}`);
+        } else {
+          assert.equal(point.y, point.count / point.trials);
+          assert.deepEqual([point.lo, point.hi], intervals[i]);
+        }
         assert.ok(point.x >= point.range[0] && point.x <= point.range[1], 'a bin sits within its speeds');
         if (i > 0) assert.ok(curve.points[i - 1].range[1] < point.range[0], 'bins do not overlap');
       });

@@ -10,6 +10,8 @@
 //                              there, with its size and SHA-256, as the engine's HDF5 files do
 //   AEROBREAK_SYNTHETIC_RESULT a result document (a file) each result is a copy of, with the drawn
 //                              outcome class: results of a real case's size (the scale benchmark)
+//   AEROBREAK_SYNTHETIC_UNDETERMINED  the share of cases that end undetermined (default 0), drawn
+//                              from the seeds apart from the outcome, as impacts that hit their time limit
 #include <poll.h>
 #include <unistd.h>
 
@@ -60,8 +62,12 @@ void answer(const CaseAssignment& a) {
   const double gamma = d.at("material").value("gamma_over_kn", 0.001);
   const auto cluster_seed = d.at("cluster").at("generator").value("seed", std::uint64_t{0});
   const auto orientation_seed = d.at("impact").value("orientation_seed", std::uint64_t{0});
+  const bool undetermined = testing::uniform_from_seeds(orientation_seed, cluster_seed) <
+                            environment_number("AEROBREAK_SYNTHETIC_UNDETERMINED", 0.0);
   const std::string outcome =
-      testing::SyntheticLaw{}.outcome(speed, gamma, testing::uniform_from_seeds(cluster_seed, orientation_seed));
+      undetermined
+          ? "undetermined"
+          : testing::SyntheticLaw{}.outcome(speed, gamma, testing::uniform_from_seeds(cluster_seed, orientation_seed));
   static const nlohmann::ordered_json kTemplate = result_template();
   nlohmann::ordered_json result = kTemplate;
   result["outcome"]["class"] = outcome;

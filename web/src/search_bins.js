@@ -77,14 +77,23 @@ export function curveBins(curve, along) {
   return equalCountBins(points).map((bin) => ({ ...bin, row: pooledRow(bin, along) }));
 }
 
-// Probability curves pooled into bins: per bin the outcome's count over its results, with the
-// Wilson interval of the pooled counts, at the results-weighted mean x (in log on a log axis).
+// Cases of a bin's grid points that ended with `outcome`.
+const pooledCount = (bin, outcome) =>
+  bin.points.reduce((sum, point) => sum + (point.row.outcomes[outcome]?.count || 0), 0);
+
+// Probability curves pooled into bins: per bin the outcome's count over the bin's determined results
+// (those the fitted curve and the search's estimate are made of: an undetermined case is left out of
+// both, docs/ADAPTIVE.md), or over all its results for `undetermined` itself, with the Wilson
+// interval of the pooled counts, at the results-weighted mean x (in log on a log axis); a bin whose
+// results all ended undetermined has no probability (y null: no point).
 export function pooledProbabilityCurves(curves, { outcome, along, xLog }) {
   return curves.map((curve) => ({ ...curve, style: 'points', points: curveBins(curve, along).map((bin) => {
-    const count = bin.points.reduce((sum, point) => sum + (point.row.outcomes[outcome]?.count || 0), 0);
-    const [lo, hi] = wilsonInterval(count, bin.results);
+    const count = pooledCount(bin, outcome);
+    const trials = outcome === 'undetermined' ? bin.results : bin.results - pooledCount(bin, 'undetermined');
+    const [lo, hi] = trials > 0 ? wilsonInterval(count, trials) : [null, null];
     const x = weightedMean(bin.points.map((point) => point.x), bin.points.map((point) => point.results), xLog);
-    return { x, y: count / bin.results, lo, hi, count, results: bin.results, range: [bin.from, bin.to], row: bin.row };
+    return { x, y: trials > 0 ? count / trials : null, lo, hi, count, trials, results: bin.results,
+      range: [bin.from, bin.to], row: bin.row };
   }) }));
 }
 

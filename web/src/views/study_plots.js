@@ -54,7 +54,9 @@ const kCriticalNote = 'Points: where the measured probability crosses 0.5 (inter
   'interval reaching beyond is cut at the edge (its numbers are in the correlations table).';
 const kSearchedNote = (symbol) => `Along the searched ${symbol} (the adaptive search placed one or a few cases ` +
   `at each value): points, the results pooled into at most ${kSearchBins} bins of about equal numbers of results ` +
-  `per condition, at their results' mean ${symbol}, whiskers the 95 % Wilson interval of the pooled counts (no ` +
+  `per condition, at their results' mean ${symbol}: the share of the bin's determined results (undetermined ` +
+  'cases, which hit their time limit, are left out as the fit and the search leave them out; the outcome ' +
+  '"undetermined" is a share of all results), whiskers the 95 % Wilson interval of the pooled counts (no ' +
   'line). Dashed: ' +
   'the fitted logistic curve of each group with its 95 % band. White rings: the search\'s own estimate ' +
   '(docs/ADAPTIVE.md), bar: its 95 % interval. Red rings: bins with results outside the small-strain range. ' +
