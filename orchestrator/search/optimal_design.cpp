@@ -117,7 +117,6 @@ double expected_crossing_variance(const DesignTarget& target, std::uint64_t seed
 std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets, const std::vector<double>& candidates,
                                        const std::vector<double>& determined, std::size_t count, std::uint64_t seed,
                                        int draws) {
-  const auto chance = [&](std::size_t c) { return determined.empty() ? 1.0 : determined[c]; };
   NormalDraws normal(seed);
   // Draws per fit (targets of the same response share them).
   DrawsByFit by_fit;
@@ -129,15 +128,15 @@ std::vector<std::size_t> optimal_doses(const std::vector<DesignTarget>& targets,
     std::size_t best = 0;
     double best_value = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const double value = pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c], chance(c))
-                                         : slope_criterion(by_fit, candidates[c], chance(c));
+      const double value = pick % 2 == 0 ? crossings_criterion(targets, by_fit, candidates[c], determined[c])
+                                         : slope_criterion(by_fit, candidates[c], determined[c]);
       if (value < best_value) best_value = value, best = c;
     }
     picked.push_back(best);
     // The later picks of the round see the expected information of this one, q I_x (exactly I_x
     // at q = 1): its outcome is not known before the round ends.
     for (auto& [fit, fit_draws] : by_fit)
-      for (auto& draw : fit_draws) draw.information += chance(best) * case_information(draw.b, candidates[best]);
+      for (auto& draw : fit_draws) draw.information += determined[best] * case_information(draw.b, candidates[best]);
   }
   return picked;
 }

@@ -29,7 +29,7 @@ struct DesignTarget {
 // Plann. Inference 21 (1989) 191: Bayesian optimal design for logistic regression, which unlike
 // a plug-in locally optimal design does not stake every case on the current estimate), seeded by
 // `seed`. Every pick adds its information to every fit: one case informs all responses.
-// `determined` (per candidate, or empty: all 1) is the chance q that a case there ends determined
+// `determined` (one per candidate) is the chance q that a case there ends determined
 // (determined_chance.hpp): an undetermined case is left out of the fits, so both criteria are the
 // expectation over the two, q U(M + I_x) + (1 - q) U(M), and a pick adds q I_x to the information
 // the later picks of the round see. Where q = 1 the picks are those of the plain criteria.

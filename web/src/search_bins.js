@@ -97,10 +97,12 @@ export function pooledProbabilityCurves(curves, { outcome, along, xLog }) {
   }) }));
 }
 
+// "5–9.33" of a bin's values [from, to] ("5" where they are one), each written by `format`.
+export const spanText = ([from, to], format) => (from === to ? format(from) : `${format(from)}–${format(to)}`);
+
 // "v₀ 5–9.33 m/s" in the symbols of `names` (axis_names.js AxisNames).
-export function rangeText(names, along, [from, to], format) {
-  const span = from === to ? format(from) : `${format(from)}–${format(to)}`;
-  return `${names.symbol(along)} ${names.valueText(along, span)}`;
+export function rangeText(names, along, range, format) {
+  return `${names.symbol(along)} ${names.valueText(along, spanText(range, format))}`;
 }
 
 // Fragment-size distributions of one condition pooled into its bins (`bins`: curveBins): per bin,

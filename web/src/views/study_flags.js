@@ -3,6 +3,7 @@
 // study and listed per grid point of the plotted slice.
 import { el, formatNumber, replaceChildren, table } from '../dom.js';
 import { inSlice } from '../series.js';
+import { spanText } from '../search_bins.js';
 
 const kMaxRows = 50;
 export const kFlags = [
@@ -11,10 +12,9 @@ export const kFlags = [
   ['small_strain_unchecked', 'small strain not checked'],
 ];
 
-// An axis value, or a bin's range of them.
-const valueText = (value) => (Array.isArray(value)
-  ? (value[0] === value[1] ? formatNumber(value[0], 4) : `${formatNumber(value[0], 4)}–${formatNumber(value[1], 4)}`)
-  : formatNumber(value, 4));
+// An axis value, or a bin's range of them, in 4 digits (the fragment plot's bin labels too).
+export const fourDigits = (value) => formatNumber(value, 4);
+const valueText = (value) => (Array.isArray(value) ? spanText(value, fourDigits) : fourDigits(value));
 
 const total = (rows, field) => rows.reduce((sum, row) => sum + (row[field] || 0), 0);
 

@@ -4,7 +4,7 @@
 // Each chart is drawn in a task of its own, so that the page keeps answering while a large study
 // draws; a newer draw stops an older one at its next chart.
 import { getJson } from '../api.js';
-import { el, formatNumber, replaceChildren, select } from '../dom.js';
+import { el, replaceChildren, select } from '../dom.js';
 import { colourGroups, plotCurves } from '../charts.js';
 import {
   alongAxis, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
@@ -15,7 +15,7 @@ import { kDerivedX } from '../axis_names.js';
 import { doseOf, levelName } from '../correlations.js';
 import { curveBins, kSearchBins, pooledFragmentCurves, pooledProbabilityCurves } from '../search_bins.js';
 import { loadSearch, searchCrossings } from '../search_estimates.js';
-import { createFlags } from './study_flags.js';
+import { createFlags, fourDigits } from './study_flags.js';
 import { createCorrelationsPanel } from './study_correlations.js';
 
 const kBounded = [0, 1];
@@ -135,10 +135,9 @@ function createFragmentsPlot(state, fragments) {
     const along = alongAxis(view.xAxis, view.names);
     const searched = view.names.searched(along);
     const curve = curves.find((each) => each.groupValues === group);
-    // Ranges written as the flagged-results table writes them (4 digits).
-    const format = (value) => formatNumber(value, 4);
+    // Ranges written as the flagged-results table writes them.
     const series = searched && curve
-      ? pooledFragmentCurves(response, curveBins(curve, along), { along, names: view.names, format })
+      ? pooledFragmentCurves(response, curveBins(curve, along), { along, names: view.names, format: fourDigits })
       : fragmentCurves(response, view.xAxis, view.names);
     fragments.noteNode.textContent = searched ? kSearchedFragmentsNote : kFragmentsNote;
     plotCurves(fragments.chart, series, {
