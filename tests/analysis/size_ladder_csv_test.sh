@@ -42,7 +42,7 @@ fi
 
 if command -v Rscript >/dev/null && command -v sqlite3 >/dev/null; then
   "$root/studies/analysis/undetermined_sensitivity.sh" "${stores[@]}" | tee "$work/sensitivity.txt"
-  lines=$(grep -c "v50 = *[0-9]" "$work/sensitivity.txt" || true)
+  lines=$(grep -c "v50 = " "$work/sensitivity.txt" || true)
   [[ $lines == 24 ]] || { echo "undetermined_sensitivity.sh: $lines v50 lines, not 4 per N and wall (24)"; exit 1; }
 else
   echo "no R or sqlite3: undetermined_sensitivity.sh checked by bash -n only"
