@@ -17,8 +17,9 @@
 #                        json_extract(c.document, '$.impact.speed') BETWEEN 20 AND 44"
 #
 # Runs `aerobreak impact CASE -q -o RESULT` ($AEROBREAK, default build/aerobreak under the repository)
-# and prints per case its id, wall, speed, outcome, simulated time (s), CPU seconds and, while still
-# undetermined, /run/unsettled_reason. undetermined_sensitivity.sh --reruns OUTDIR refits v50 with
+# and prints per case its id and rerun_summary.py's line: wall, speed, outcome, simulated time (s),
+# CPU seconds and, while still undetermined, when its approaching pieces pass closest and
+# /run/unsettled_reason. undetermined_sensitivity.sh --reruns OUTDIR refits v50 with
 # these outcomes in place of the stored ones. Needs sqlite3 and python3.
 set -euo pipefail
 [ $# -ge 3 ] && [ $# -le 4 ] || { sed -n 2,23p "$0"; exit 2; }
@@ -40,16 +41,7 @@ cases=$(sqlite3 -batch -separator $'\t' "file:$store?mode=ro" "
 [ -n "$cases" ] || { echo "rerun_undetermined.sh: no undetermined case in physical units matches" >&2; exit 1; }
 echo "$(grep -c . <<<"$cases") undetermined cases, time limit $limit s, results in $outdir"
 
-summary() {  # id, wall, speed, outcome, simulated s, CPU s, unsettled reason of a result file
-  python3 - "$1" <<'PY'
-import json, sys
-r = json.load(open(sys.argv[1]))
-run, case = r["run"], r["case"]
-wall = "adhesive wall" if case["wall"]["adhesive"] else "without adhesion"
-print(f'{wall:16}  {case["impact"]["speed"]:7.3f} m/s  {r["outcome"]["class"]:12}  t = {run["simulated_time_s"]:.3g} s'
-      f'  {run["cpu_seconds"]:7.1f} CPU s' + (f'  ({run["unsettled_reason"]})' if run["unsettled_reason"] else ''))
-PY
-}
+summary() { python3 "$root/studies/analysis/rerun_summary.py" "$1"; }
 
 # aerobreak writes its result under the name only once complete, so a result file is a finished
 # run; a stopped script stops its running case too.

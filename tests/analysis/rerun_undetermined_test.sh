@@ -5,6 +5,7 @@
 #  - a case rerun with its old limit reproduces its stored result (the same trajectory: every number but the
 #    timings and the code's commit),
 #  - rerun at 3e-8 s, each undetermined case gets a result (most settle), and a second call skips them all,
+#  - rerun_summary.py's closest approach of two pieces equals the hand-worked one,
 #  - the refit prints six ways per wall, its Firth fit with the undetermined left out equals the search's own
 #    v50 and interval in the store, and a rerun whose case is not the store's is refused.
 #   tests/analysis/rerun_undetermined_test.sh build/aerobreak
@@ -17,6 +18,20 @@ if ! command -v Rscript >/dev/null || ! command -v sqlite3 >/dev/null; then
   echo "no R or sqlite3: rerun_undetermined.sh checked by bash -n only"
   exit 0
 fi
+# rerun_summary.py's straight-line closest approach against the hand-worked one: b 10 d from a along x, closing
+# at (-1, 1, 0) 1e-3 d/tau: closest after 10 * 1e-3 / 2e-6 = 5000 tau, 50^0.5 = 7.07 d apart (< 5 + 3: may meet).
+PYTHONPATH=$analysis python3 - <<'PY'
+import math
+from rerun_summary import closest_approach
+a = {"centre_of_mass": [0, 0, 0], "velocity": [0, 0, 0], "bounding_radius": 5}
+b = {"centre_of_mass": [10, 0, 0], "velocity": [-1e-3, 1e-3, 0], "bounding_radius": 3}
+t, closest = closest_approach(a, b)
+assert abs(t - 5000) < 1e-9 and abs(closest - math.sqrt(50)) < 1e-12, (t, closest)
+assert closest_approach(b, a) == (t, closest)
+assert closest_approach(a, dict(b, bounding_radius=2)) is None  # passes 7.07 d apart, beyond 5 + 2
+assert closest_approach(a, dict(b, velocity=[1e-3, 0, 0])) is None  # receding
+print("closest approach: 5000 tau, 7.07 d, as worked by hand")
+PY
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 store=$work/n16.sqlite
