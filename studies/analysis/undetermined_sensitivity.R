@@ -86,8 +86,9 @@ report_group <- function(s, n, wall) {
   label <- if (wall == 1) "adhesive wall" else "without adhesion"
   if (!is.null(s$rerun_outcome)) {
     rerun <- !is.na(s$rerun_outcome)
-    cat(sprintf("N = %4d  %-17s reruns %2d: %s\n", n, label, sum(rerun),
-                paste(names(table(s$rerun_outcome[rerun])), table(s$rerun_outcome[rerun]), collapse = ", ")))
+    counts <- table(s$rerun_outcome[rerun])
+    cat(sprintf("N = %4d  %-17s reruns %2d%s\n", n, label, sum(rerun),
+                if (sum(rerun) > 0) paste0(": ", paste(names(counts), counts, collapse = ", ")) else ""))
   }
   for (way in names(ways)) {
     keep <- rep(ways[[way]][[1]], length.out = nrow(s))
