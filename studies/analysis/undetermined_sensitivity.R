@@ -22,20 +22,29 @@ separated <- function(x, y) {
   max(x[y]) < min(x[!y]) || max(x[!y]) < min(x[y])
 }
 
+# The maximum of each likelihood: coefficients (par) and the negated log-likelihood there (value).
+# Firth's by Nelder-Mead, then polished by BFGS, both to a relative 1e-15: BFGS alone from the
+# glm's estimate stopped short on small separated samples.
+maximum_likelihood_fit <- function(x, y) {
+  fit <- glm(y ~ x, family = binomial)
+  list(par = unname(coef(fit)), value = -as.numeric(logLik(fit)))
+}
+firth_fit <- function(x, y) {
+  objective <- function(b) -log_likelihood(b, x, y, TRUE)
+  control <- list(reltol = 1e-15, maxit = 10000)
+  best <- optim(c(0, 1), objective, method = "Nelder-Mead", control = control)
+  optim(best$par, objective, method = "BFGS", control = control)
+}
+
 # v50 = exp(theta), theta = -b0 / b1, and its 95 % profile interval: the thetas whose profile
 # (log-)likelihood, maximised over b1 with b0 = -b1 theta, is within qchisq(0.95, 1) / 2 of the
 # maximum, searched over the speeds' span widened by the span on each side (NA: open there).
-# The doses are centred on the middle of their span (as the search centres them on its range's)
-# and the maximum found by Nelder-Mead, then polished by BFGS, both to a relative 1e-15: BFGS alone
-# from the glm's estimate stopped short on small separated samples.
+# The doses are centred on the middle of their span (as the search centres them on its range's).
 v50_fit <- function(x, y, penalised) {
   if (!penalised && separated(x, y)) return(c(NA, NA, NA))
   centre <- mean(range(x))
   x <- x - centre
-  objective <- function(b) -log_likelihood(b, x, y, penalised)
-  control <- list(reltol = 1e-15, maxit = 10000)
-  best <- optim(c(0, 1), objective, method = "Nelder-Mead", control = control)
-  best <- optim(best$par, objective, method = "BFGS", control = control)
+  best <- if (penalised) firth_fit(x, y) else maximum_likelihood_fit(x, y)
   theta <- -best$par[1] / best$par[2]
   slope_bound <- 20 * abs(best$par[2]) + 10
   profile <- function(t) {
