@@ -222,3 +222,35 @@ test('a grid study keeps one point per grid point joined by lines', async () => 
   });
   await page.context().close();
 });
+
+// The lookup-table panel's chosen kind, its links' kind and the first metadata record of the CSV it offers.
+async function offeredTable(page) {
+  await page.locator('#tables-panel a[data-format="csv"]').waitFor();
+  const link = page.locator('#tables-panel a[data-format="csv"]');
+  const text = await (await fetch(`${service.origin}${await link.getAttribute('href')}`)).text();
+  return {
+    chosen: await page.locator('#choose-table-kind').inputValue(),
+    kinds: await page.locator('#table-links a').evaluateAll((links) => links.map((a) => a.dataset.kind)),
+    gridLabel: await page.locator('#choose-table-kind option[value="grid"]').textContent(),
+    tableRecord: text.split('\r\n')[1],
+  };
+}
+
+test('a search study offers the fit table first, a grid study its grid', async () => {
+  const page = await openPage(browser, service);
+  await openStudy(page, searchId);
+  const search = await offeredTable(page);
+  assert.equal(search.chosen, 'fit');
+  assert.ok(search.kinds.length === 5 && search.kinds.every((kind) => kind === 'fit'), search.kinds.join());
+  assert.match(search.tableRecord, /^#table,fit,/, 'the CSV offered is the fit table');
+  assert.match(search.gridLabel, /per searched speed/);
+  assert.match(await page.locator('#tables-panel .note').textContent(), /the fit table, from the fitted curves/);
+  await openStudy(page, gridId);
+  const grid = await offeredTable(page);
+  assert.equal(grid.chosen, 'grid');
+  assert.ok(grid.kinds.every((kind) => kind === 'grid'));
+  assert.match(grid.tableRecord, /^#table,grid,/);
+  assert.equal(grid.gridLabel, 'grid: per grid point');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
