@@ -155,6 +155,16 @@ void add_extra_axes(LookupTable& table, const StudyExportData& data) {
   add_axis_labels(table.metadata, data.extra_axes);
 }
 
+// A grid table of an adaptive search (docs/ADAPTIVE.md) says what its rows are and which table to
+// read instead (docs/EXPORT.md, "An adaptive search's tables"): the header of every format shows it.
+void add_search_note(LookupTable& table, const nlohmann::ordered_json& study) {
+  if (!study.is_object() || !study.contains("search")) return;
+  const auto& search = study.at("search");
+  table.metadata["search"] = {
+      {"axis", search.is_object() ? search.value("axis", std::string("impact_speed")) : std::string("impact_speed")},
+      {"note", kSearchedGridNote}};
+}
+
 template <typename Map>
 const typename Map::mapped_type* find_in(const Map& map, const std::string& key) {
   const auto found = map.find(key);
@@ -177,6 +187,7 @@ LookupTable grid_table(const StudyExportData& data) {
       column.values.push_back(specs[c].value(row));
     }
   }
+  add_search_note(table, data.study.document);
   // An input that no grid point has (e.g. the target fractal dimension of a ballistic generator)
   // does not apply: no column.
   std::erase_if(table.columns, [](const TableColumn& column) {

@@ -103,6 +103,37 @@ TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments fro
   CHECK_FALSE(table.find("fractal_dimension"));  // the ballistic generator has no target D_f: no column
 }
 
+TEST_CASE("The grid table of an adaptive search says what its rows are and which table to read", "[export][search]") {
+  ScratchDirectory directory{"lookup_tables_search"};
+  Store store{directory.path() / "store.sqlite"};
+  auto grid_study = export_submission();
+  auto search_study = export_submission();
+  search_study.hash = std::string(64, 's');
+  search_study.name = "search";
+  search_study.document = {{"name", "search"},
+                           {"search", {{"axis", "impact_speed"}, {"range", {{"from", 0.01}, {"to", 0.05}}}}}};
+  const auto searched = fill_study(store, search_study, [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return fragments_of(label.size, label.speed_index, label.replicate);
+  });
+  const auto gridded = fill_study(store, grid_study, [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return fragments_of(label.size, label.speed_index, label.replicate);
+  });
+  const auto table = study_lookup_table(store, searched, {});
+  REQUIRE(table.metadata.contains("search"));
+  CHECK(table.metadata["search"]["axis"] == "impact_speed");
+  CHECK(table.metadata["search"]["note"] == kSearchedGridNote);
+  CHECK(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
+  CHECK_FALSE(study_lookup_table(store, gridded, {}).metadata.contains("search"));
+  // The .dat header of the searched study's grid table carries it, within its 80 columns.
+  ExportRequest dat;
+  dat.format = TableFormat::dat;
+  const auto text = render_table(study_lookup_table(store, searched, dat), dat, searched).content;
+  CHECK(text.find("\n# search.axis: impact_speed\n") != std::string::npos);
+  CHECK(text.find("\n# search.note: an adaptive search") != std::string::npos);
+}
+
 TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {
   ExportFixture fixture;
   for (const double ratio : {2.0, 3.0, 1.5}) {
