@@ -29,7 +29,8 @@ std::size_t results(const GridRow& row) { return row.statistics ? row.statistics
 std::function<double(const GridRow&)> probability(const std::string& outcome, int bound) {
   return [outcome, bound](const GridRow& row) {
     if (!row.statistics) return kMissing;
-    const auto estimate = wilson_interval(row.statistics->outcomes.outcomes.at(outcome), results(row));
+    const GridPointOutcomes& counts = row.statistics->outcomes;
+    const auto estimate = wilson_interval(counts.outcomes.at(outcome), counts.trials_for(outcome));
     if (!estimate) return kMissing;
     return bound < 0 ? estimate->lower : bound > 0 ? estimate->upper : estimate->probability;
   };
@@ -104,7 +105,7 @@ std::vector<ColumnSpec> output_columns() {
        moment_mean(&GridPointStatistics::energy_per_contact, false)},
       {"results", "1", "results n (cases finished with a result)", ColumnRole::output,
        [](const GridRow& r) { return static_cast<double>(results(r)); }},
-      {"p_stick", "1", "P(stick) = k/n", ColumnRole::output, probability("stick", 0)},
+      {"p_stick", "1", "P(stick) = k/n_d, of the determined results", ColumnRole::output, probability("stick", 0)},
       {"p_stick_lo", "1", "P(stick), Wilson 95 % lower bound", ColumnRole::output, probability("stick", -1)},
       {"p_stick_hi", "1", "P(stick), Wilson 95 % upper bound", ColumnRole::output, probability("stick", 1)},
       {"p_bounce", "1", "P(bounce)", ColumnRole::output, probability("bounce", 0)},

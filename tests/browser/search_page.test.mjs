@@ -124,12 +124,19 @@ test('a search study: bins of pooled results as points without a line, and the s
     assert.ok(view.probability.filter((curve) => curve.style === 'fitted').length > 0, 'fitted curves drawn');
     const wilson = await page.evaluate(async (rows) => {
       const { wilsonInterval } = await import('/src/search_bins.js');
-      return rows.map((row) => Object.values(row.outcomes).map((each) => wilsonInterval(each.count, row.finished)));
+      // Stick, bounce and break-up among the determined results, undetermined among all.
+      const trials = (row, outcome) => (outcome === 'undetermined' ? row.finished
+        : row.finished - row.outcomes.undetermined.count);
+      // None where every result is undetermined (the service's ci95 is then null).
+      return rows.map((row) => Object.entries(row.outcomes).map(([outcome, each]) => (trials(row, outcome) > 0
+        ? wilsonInterval(each.count, trials(row, outcome)) : null)));
     }, grid.grid_points);
     // The page's Wilson interval is the service's at every grid point and outcome.
     grid.grid_points.forEach((row, i) => Object.values(row.outcomes).forEach((each, j) => {
-      assert.ok(Math.abs(wilson[i][j][0] - each.ci95[0]) < 1e-12 && Math.abs(wilson[i][j][1] - each.ci95[1]) < 1e-12,
-        `Wilson interval of ${each.count} of ${row.finished}`);
+      const same = (a, b) => (a === null ? b === null : Math.abs(a - b) < 1e-12);
+      const [lo, hi] = wilson[i][j] || [null, null];
+      const [serviceLo, serviceHi] = each.ci95 || [null, null];
+      assert.ok(same(lo, serviceLo) && same(hi, serviceHi), `Wilson interval of ${each.count} at ${i}`);
     }));
     for (const [index, gamma] of [0.001, 0.004].entries()) {
       const curve = measured[index];
