@@ -66,7 +66,8 @@ const kSearchedNote = (symbol) => `Along the searched ${symbol} (the adaptive se
 const kFragmentsNote = 'Fragments of each size per result, one series per grid value.';
 const kSearchedFragmentsNote = 'Fragments of each size per result, one series per bin of the searched axis (the ' +
   'bins of the probability plot).';
-const kStudent = 'Mean of the results, whiskers: 95 % Student interval';
+const kStudent = 'Mean of the determined results (an undetermined one, whose state is not final, is left out), ' +
+  'whiskers: 95 % Student interval';
 const kNoBounces = 'Nothing to plot: no case here bounced (the restitution is that of the bounces).';
 
 function createPanels() {
