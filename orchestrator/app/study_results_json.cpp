@@ -41,7 +41,7 @@ nlohmann::ordered_json grid_point_outcomes_json(const GridPointStatistics& stati
   const std::size_t finished = cell.finished();
   nlohmann::ordered_json outcomes = nlohmann::ordered_json::object();
   for (const auto& [outcome, count] : cell.outcomes)
-    outcomes[outcome] = proportion_json(count, wilson_interval(count, finished));
+    outcomes[outcome] = proportion_json(count, wilson_interval(count, cell.trials_for(outcome)));
   return {{"grid_point", cell.grid_point},
           {"cases", cell.cases},
           {"finished", finished},

@@ -11,9 +11,10 @@ namespace aerobreak {
 // does from the API.
 
 // One grid point: its axis values, cases, finished and failed counts, per outcome the count and
-// the probability among the finished cases with the 95 % Wilson interval (fitting/proportion.hpp),
-// the means of the retained mass fraction, the damage ratio and the energy per contact over the
-// results that have them, with their Student intervals (fitting/mean_estimate.hpp), and the flags.
+// the probability with the 95 % Wilson interval (fitting/proportion.hpp), of stick, bounce and
+// break-up among the determined results, of undetermined among all (GridPointOutcomes::trials_for),
+// the means of the retained mass fraction and the damage ratio over the determined results and of
+// the energy per contact over all, with their Student intervals (fitting/mean_estimate.hpp), and the flags.
 nlohmann::ordered_json grid_point_outcomes_json(const GridPointStatistics& statistics);
 // Each grid point's row as above.
 nlohmann::ordered_json outcome_table_json(const std::vector<GridPointStatistics>& cells);

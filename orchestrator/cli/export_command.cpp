@@ -85,6 +85,8 @@ int run_export(const ExportOptions& options) {
     const auto record = store.study(study);
     if (!record) throw ExportError(404, "study", "no study " + std::to_string(study) + " in " + options.store);
     const auto rendered = export_file(store, fits, *record, request);
+    if (request.kind == TableKind::grid && record->document.contains("search"))
+      std::cerr << "aerobreak export: note: " << kSearchedGridNote << "\n";
     if (options.output == "-") {
       std::cout << rendered.content;
       return 0;

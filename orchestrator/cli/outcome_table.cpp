@@ -92,9 +92,10 @@ std::string legend(const std::string& rows_by, const std::string& system) {
                                     : (rows_by.empty() ? "" : rows_by + (unit.empty() ? "" : ": in " + unit) + ". ");
   return axis_line +
          "n: the cases with a result.\n"
-         "stick, bounce, break-up: the share of the n results with that outcome, in %, and its 95 % Wilson\n"
-         "  interval; the outcome is decided by what leaves the wall (docs/IMPACT.md, section 5).\n"
-         "retained: the mean mass fraction of the cluster left on the wall (1: all of it).\n"
+         "stick, bounce, break-up: the share of the determined results (n less the undetermined) with that\n"
+         "  outcome, in %, and its 95 % Wilson interval; the outcome is decided by what leaves the wall\n"
+         "  (docs/IMPACT.md, section 5).\n"
+         "retained: the mean mass fraction of the cluster left on the wall (1: all of it), of the determined.\n"
          "fractured on wall: the results whose deposit on the wall is in more than one piece, any outcome.\n"
          "large strain: the results in which a contact left the contact laws' small-strain range (contact\n"
          "  radius or overlap above half the primary radius, docs/MODEL.md 3.7): the laws extrapolate there.\n"

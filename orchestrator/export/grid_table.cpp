@@ -29,7 +29,8 @@ std::size_t results(const GridRow& row) { return row.statistics ? row.statistics
 std::function<double(const GridRow&)> probability(const std::string& outcome, int bound) {
   return [outcome, bound](const GridRow& row) {
     if (!row.statistics) return kMissing;
-    const auto estimate = wilson_interval(row.statistics->outcomes.outcomes.at(outcome), results(row));
+    const GridPointOutcomes& counts = row.statistics->outcomes;
+    const auto estimate = wilson_interval(counts.outcomes.at(outcome), counts.trials_for(outcome));
     if (!estimate) return kMissing;
     return bound < 0 ? estimate->lower : bound > 0 ? estimate->upper : estimate->probability;
   };
@@ -104,7 +105,7 @@ std::vector<ColumnSpec> output_columns() {
        moment_mean(&GridPointStatistics::energy_per_contact, false)},
       {"results", "1", "results n (cases finished with a result)", ColumnRole::output,
        [](const GridRow& r) { return static_cast<double>(results(r)); }},
-      {"p_stick", "1", "P(stick) = k/n", ColumnRole::output, probability("stick", 0)},
+      {"p_stick", "1", "P(stick) = k/n_d, of the determined results", ColumnRole::output, probability("stick", 0)},
       {"p_stick_lo", "1", "P(stick), Wilson 95 % lower bound", ColumnRole::output, probability("stick", -1)},
       {"p_stick_hi", "1", "P(stick), Wilson 95 % upper bound", ColumnRole::output, probability("stick", 1)},
       {"p_bounce", "1", "P(bounce)", ColumnRole::output, probability("bounce", 0)},
@@ -155,6 +156,16 @@ void add_extra_axes(LookupTable& table, const StudyExportData& data) {
   add_axis_labels(table.metadata, data.extra_axes);
 }
 
+// A grid table of an adaptive search (docs/ADAPTIVE.md) says what its rows are and which table to
+// read instead (docs/EXPORT.md, "An adaptive search's tables"): the header of every format shows it.
+void add_search_note(LookupTable& table, const nlohmann::ordered_json& study) {
+  if (!study.is_object() || !study.contains("search")) return;
+  const auto& search = study.at("search");
+  table.metadata["search"] = {
+      {"axis", search.is_object() ? search.value("axis", std::string("impact_speed")) : std::string("impact_speed")},
+      {"note", kSearchedGridNote}};
+}
+
 template <typename Map>
 const typename Map::mapped_type* find_in(const Map& map, const std::string& key) {
   const auto found = map.find(key);
@@ -177,6 +188,7 @@ LookupTable grid_table(const StudyExportData& data) {
       column.values.push_back(specs[c].value(row));
     }
   }
+  add_search_note(table, data.study.document);
   // An input that no grid point has (e.g. the target fractal dimension of a ballistic generator)
   // does not apply: no column.
   std::erase_if(table.columns, [](const TableColumn& column) {

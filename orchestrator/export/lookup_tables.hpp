@@ -13,8 +13,14 @@ namespace aerobreak {
 // not included here, so that this header can follow cpp-httplib's, whose <resolv.h> defines _res).
 struct CorrelationSet;
 
-// Table (a): one row per grid point of the study, inputs and outcome statistics (reduced units).
+// Table (a): one row per grid point of the study, inputs and outcome statistics (reduced units);
+// of an adaptive search, with metadata search.axis and search.note (kSearchedGridNote).
 LookupTable grid_table(const StudyExportData& data);
+
+// What a grid table of an adaptive search holds, and the table to read instead.
+inline constexpr const char* kSearchedGridNote =
+    "an adaptive search placed one or a few cases at each value of its axis: a row per value it ran, each "
+    "probability of few results; the fit table (kind=fit) gives the fitted curves for a system code";
 
 // Table (c): the sectional fragment matrix for geometric sections of mass ratio `section_ratio`
 // (reduced units): one row per impact condition and source section, the mass fractions that end

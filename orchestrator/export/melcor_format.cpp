@@ -18,13 +18,15 @@ struct TabulatedQuantity {
   std::string tag;
 };
 
-// Every outcome's probability with its 95 % interval, the restitution, the retained mass, and for
+// Every outcome's probability with its 95 % interval, the share of undetermined results (of the grid
+// table: the probabilities are of the determined ones), the restitution, the retained mass, and for
 // the sectional matrix the wall's share and each section's.
 std::vector<TabulatedQuantity> tabulated(const LookupTable& table) {
   std::vector<TabulatedQuantity> quantities;
   for (const auto& [column, tag] : {std::pair{"p_stick", "PSTK"}, {"p_bounce", "PBNC"}, {"p_break_up", "PBRK"}})
     for (const auto& [suffix, bound] : {std::pair{"", "_"}, {"_lo", "L"}, {"_hi", "U"}})
       quantities.push_back({std::string(column) + suffix, std::string(tag) + bound});
+  quantities.push_back({"p_undetermined", "PUND_"});
   quantities.push_back({"restitution", "REST_"});
   quantities.push_back({"retained_mass_fraction", "RETN_"});
   quantities.push_back({"to_wall", "WALL_"});
@@ -96,7 +98,8 @@ std::string tabular_function(const LookupTable& table, const TableColumn& quanti
 std::string legend(const LookupTable& table, const std::vector<ConditionRows>& conditions) {
   std::string text =
       "! names S<study id><table: G grid, F fit at sizes, M/V/A fit at mobility/volume/aerodynamic diameters, "
-      "S sections>\n!   <quantity: PSTK P(stick), PBNC P(bounce), PBRK P(break-up),\n!   REST restitution of the "
+      "S sections>\n!   <quantity: PSTK P(stick), PBNC P(bounce), PBRK P(break-up) (of the determined results),\n"
+      "!   PUND share of results undetermined, REST restitution of the "
       "bounces, RETN retained mass fraction, WALL mass to the wall, TSkk "
       "mass to section kk>\n!   <_ value, L 95 % lower end, U 95 % upper end><condition number, below>\n";
   text +=

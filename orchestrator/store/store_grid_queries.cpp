@@ -13,19 +13,23 @@
 namespace aerobreak {
 namespace {
 
-// Each result quantity with moments: its column (an SQL expression) and where it goes. The
-// restitution is the bounces' only (docs/CORRELATIONS.md): that of a stick or a break-up (the
-// largest fragment's, often negative on the wall) is not a coefficient of restitution of the cluster.
+// Each result quantity with moments: its column (an SQL expression) and where it goes. What the
+// outcome fixes is averaged over the determined results (an undetermined one's state is not final,
+// as in the fits: docs/CORRELATIONS.md); the restitution over the bounces only: that of a stick or
+// a break-up (the largest fragment's, often negative on the wall) is not a coefficient of
+// restitution of the cluster. The energy per contact, set by the impact, over every result.
 struct MomentColumn {
   std::string_view column;
   Moments GridPointStatistics::*moments;
 };
 constexpr std::array<MomentColumn, 6> kMomentColumns{{
-    {"r.retained_mass_fraction", &GridPointStatistics::retained_mass_fraction},
+    {"(CASE WHEN r.outcome != 'undetermined' THEN r.retained_mass_fraction END)",
+     &GridPointStatistics::retained_mass_fraction},
     {"(CASE WHEN r.outcome = 'bounce' THEN r.restitution END)", &GridPointStatistics::restitution},
-    {"r.fragment_count", &GridPointStatistics::fragment_count},
-    {"r.largest_fragment_share", &GridPointStatistics::largest_fragment_share},
-    {"r.damage_ratio", &GridPointStatistics::damage_ratio},
+    {"(CASE WHEN r.outcome != 'undetermined' THEN r.fragment_count END)", &GridPointStatistics::fragment_count},
+    {"(CASE WHEN r.outcome != 'undetermined' THEN r.largest_fragment_share END)",
+     &GridPointStatistics::largest_fragment_share},
+    {"(CASE WHEN r.outcome != 'undetermined' THEN r.damage_ratio END)", &GridPointStatistics::damage_ratio},
     {"r.energy_per_contact", &GridPointStatistics::energy_per_contact},
 }};
 

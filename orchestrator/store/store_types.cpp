@@ -52,6 +52,12 @@ std::size_t GridPointOutcomes::finished() const {
   return total;
 }
 
+std::size_t GridPointOutcomes::trials_for(const std::string& outcome) const {
+  const auto undetermined = outcomes.find("undetermined");
+  const std::size_t unsettled = undetermined == outcomes.end() ? 0 : undetermined->second;
+  return outcome == "undetermined" ? finished() : finished() - unsettled;
+}
+
 std::optional<MeanEstimate> mean_estimate(const Moments& moments) {
   return streamed_mean_estimate(moments.count, moments.sum, moments.squared_deviations);
 }

@@ -263,7 +263,10 @@ struct GridPointOutcomes {
   std::size_t cases = 0;                        // all replicates, whatever their status
   std::map<std::string, std::size_t> outcomes;  // stick, bounce, break-up, undetermined (zero included)
   std::size_t failed = 0;
-  std::size_t finished() const;            // cases with a result
+  std::size_t finished() const;  // cases with a result
+  // The results an outcome's share is taken of: the determined ones (those the fits and the search
+  // count) for stick, bounce and break-up, every result for undetermined itself.
+  std::size_t trials_for(const std::string& outcome) const;
   std::size_t fractured_on_wall = 0;       // results whose deposit is in pieces
   std::size_t small_strain_exceeded = 0;   // results flagged outside the small-strain range
   std::size_t small_strain_unchecked = 0;  // results without the check (migrated from an older store)

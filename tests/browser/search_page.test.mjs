@@ -124,12 +124,19 @@ test('a search study: bins of pooled results as points without a line, and the s
     assert.ok(view.probability.filter((curve) => curve.style === 'fitted').length > 0, 'fitted curves drawn');
     const wilson = await page.evaluate(async (rows) => {
       const { wilsonInterval } = await import('/src/search_bins.js');
-      return rows.map((row) => Object.values(row.outcomes).map((each) => wilsonInterval(each.count, row.finished)));
+      // Stick, bounce and break-up among the determined results, undetermined among all.
+      const trials = (row, outcome) => (outcome === 'undetermined' ? row.finished
+        : row.finished - row.outcomes.undetermined.count);
+      // None where every result is undetermined (the service's ci95 is then null).
+      return rows.map((row) => Object.entries(row.outcomes).map(([outcome, each]) => (trials(row, outcome) > 0
+        ? wilsonInterval(each.count, trials(row, outcome)) : null)));
     }, grid.grid_points);
     // The page's Wilson interval is the service's at every grid point and outcome.
     grid.grid_points.forEach((row, i) => Object.values(row.outcomes).forEach((each, j) => {
-      assert.ok(Math.abs(wilson[i][j][0] - each.ci95[0]) < 1e-12 && Math.abs(wilson[i][j][1] - each.ci95[1]) < 1e-12,
-        `Wilson interval of ${each.count} of ${row.finished}`);
+      const same = (a, b) => (a === null ? b === null : Math.abs(a - b) < 1e-12);
+      const [lo, hi] = wilson[i][j] || [null, null];
+      const [serviceLo, serviceHi] = each.ci95 || [null, null];
+      assert.ok(same(lo, serviceLo) && same(hi, serviceHi), `Wilson interval of ${each.count} at ${i}`);
     }));
     for (const [index, gamma] of [0.001, 0.004].entries()) {
       const curve = measured[index];
@@ -220,5 +227,37 @@ test('a grid study keeps one point per grid point joined by lines', async () => 
     assert.equal(view.flags.rows, 6, 'one flagged row per grid point');
     assert.deepEqual(page.problems, []);
   });
+  await page.context().close();
+});
+
+// The lookup-table panel's chosen kind, its links' kind and the first metadata record of the CSV it offers.
+async function offeredTable(page) {
+  await page.locator('#tables-panel a[data-format="csv"]').waitFor();
+  const link = page.locator('#tables-panel a[data-format="csv"]');
+  const text = await (await fetch(`${service.origin}${await link.getAttribute('href')}`)).text();
+  return {
+    chosen: await page.locator('#choose-table-kind').inputValue(),
+    kinds: await page.locator('#table-links a').evaluateAll((links) => links.map((a) => a.dataset.kind)),
+    gridLabel: await page.locator('#choose-table-kind option[value="grid"]').textContent(),
+    tableRecord: text.split('\r\n')[1],
+  };
+}
+
+test('a search study offers the fit table first, a grid study its grid', async () => {
+  const page = await openPage(browser, service);
+  await openStudy(page, searchId);
+  const search = await offeredTable(page);
+  assert.equal(search.chosen, 'fit');
+  assert.ok(search.kinds.length === 5 && search.kinds.every((kind) => kind === 'fit'), search.kinds.join());
+  assert.match(search.tableRecord, /^#table,fit,/, 'the CSV offered is the fit table');
+  assert.match(search.gridLabel, /per searched speed/);
+  assert.match(await page.locator('#tables-panel .note').textContent(), /the fit table, from the fitted curves/);
+  await openStudy(page, gridId);
+  const grid = await offeredTable(page);
+  assert.equal(grid.chosen, 'grid');
+  assert.ok(grid.kinds.every((kind) => kind === 'grid'));
+  assert.match(grid.tableRecord, /^#table,grid,/);
+  assert.equal(grid.gridLabel, 'grid: per grid point');
+  assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "orchestrator/app/study_results_json.hpp"
 #include "orchestrator/export/lookup_tables.hpp"
 #include "orchestrator/fitting/proportion.hpp"
 #include "orchestrator/study/field_units.hpp"
@@ -101,6 +102,87 @@ TEST_CASE("Grid table: outcome counts, Wilson intervals and fragment moments fro
   CHECK(std::isnan(at(table, "restitution", row)));
   CHECK(at(table, "restitution_bounces", row) == 0.0);
   CHECK_FALSE(table.find("fractal_dimension"));  // the ballistic generator has no target D_f: no column
+}
+
+TEST_CASE("Undetermined results: counted in n and p_undetermined, left out of the probabilities and the means",
+          "[export][undetermined]") {
+  // Speed 0.05, N = 8, gamma/k_n 0.001: replicates 0-2 break up (a dimer and two monomers leave,
+  // retained 4/8), replicate 3 bounces; here replicate 3 ends undetermined instead, its last state
+  // retaining 0.75 of the mass.
+  ScratchDirectory directory{"lookup_tables_undetermined"};
+  Store store{directory.path() / "store.sqlite"};
+  const auto receipt = store.submit_study(export_submission());
+  const auto job = store.start_job("export test", 1);
+  const auto is_marked = [](const CaseLabel& label, const nlohmann::ordered_json& document) {
+    return label.size == 8 && label.speed_index == 2 && label.replicate == 3 &&
+           document.at("material").at("gamma_over_kn") == 0.001;
+  };
+  while (const auto claimed = store.claim_next_case(job)) {
+    const auto label = case_label(claimed->document);
+    auto result = result_of(fragments_of(label.size, label.speed_index, label.replicate), label.size);
+    if (is_marked(label, claimed->document)) {
+      result["outcome"]["class"] = "undetermined";
+      result["outcome"]["retained_mass_fraction"] = 0.75;
+      result["outcome"]["damage_ratio"] = 0.75;
+    }
+    REQUIRE(store.commit_result(claimed->case_id, claimed->attempt, result, "", 0.1));
+  }
+  const auto table = study_lookup_table(store, receipt.study_id, {});
+  const auto row = row_of(table, {{"impact_speed", 0.05}, {"gamma_over_kn", 0.001}, {"primaries", 8}});
+  CHECK(at(table, "results", row) == 4);
+  CHECK(at(table, "p_undetermined", row) == 0.25);
+  CHECK(at(table, "p_break_up", row) == 1.0);  // 3 of the 3 determined, not 3 of 4
+  CHECK(at(table, "p_bounce", row) == 0.0);
+  const auto wilson = *wilson_interval(3, 3);
+  CHECK(at(table, "p_break_up_lo", row) == Approx(wilson.lower).epsilon(1e-12));
+  CHECK(at(table, "retained_mass_fraction", row) == Approx(0.5).epsilon(1e-12));  // 4/8 thrice; 0.75 left out
+  CHECK(at(table, "damage_ratio", row) == Approx(0.5).epsilon(1e-12));
+  CHECK(at(table, "energy_per_contact", row) == Approx(1.0));  // every result's
+  // The service's grid points (GET /api/studies/ID/grid and /outcomes) count the same way.
+  const auto cells = store.grid_statistics(receipt.study_id);
+  const auto found = std::find_if(cells.begin(), cells.end(), [](const GridPointStatistics& cell) {
+    return cell.outcomes.grid_point.at("impact_speed") == 0.05 && cell.outcomes.grid_point.at("primaries") == 8 &&
+           cell.outcomes.grid_point.at("gamma_over_kn") == 0.001;
+  });
+  REQUIRE(found != cells.end());
+  const auto json = grid_point_outcomes_json(*found);
+  CHECK(json["finished"] == 4);
+  CHECK(json["outcomes"]["break-up"]["probability"] == 1.0);
+  CHECK(json["outcomes"]["undetermined"]["probability"] == 0.25);
+  CHECK(json["retained_mass_fraction"]["n"] == 3);
+  CHECK(json["retained_mass_fraction"]["mean"].get<double>() == Approx(0.5).epsilon(1e-12));
+  CHECK(json["energy_per_contact"]["n"] == 4);
+}
+
+TEST_CASE("The grid table of an adaptive search says what its rows are and which table to read", "[export][search]") {
+  ScratchDirectory directory{"lookup_tables_search"};
+  Store store{directory.path() / "store.sqlite"};
+  auto grid_study = export_submission();
+  auto search_study = export_submission();
+  search_study.hash = std::string(64, 's');
+  search_study.name = "search";
+  search_study.document = {{"name", "search"},
+                           {"search", {{"axis", "impact_speed"}, {"range", {{"from", 0.01}, {"to", 0.05}}}}}};
+  const auto searched = fill_study(store, search_study, [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return fragments_of(label.size, label.speed_index, label.replicate);
+  });
+  const auto gridded = fill_study(store, grid_study, [](const nlohmann::ordered_json& document) {
+    const auto label = case_label(document);
+    return fragments_of(label.size, label.speed_index, label.replicate);
+  });
+  const auto table = study_lookup_table(store, searched, {});
+  REQUIRE(table.metadata.contains("search"));
+  CHECK(table.metadata["search"]["axis"] == "impact_speed");
+  CHECK(table.metadata["search"]["note"] == kSearchedGridNote);
+  CHECK(table.rows() == kSpeeds.size() * kGammas.size() * kSizes.size());
+  CHECK_FALSE(study_lookup_table(store, gridded, {}).metadata.contains("search"));
+  // The .dat header of the searched study's grid table carries it, within its 80 columns.
+  ExportRequest dat;
+  dat.format = TableFormat::dat;
+  const auto text = render_table(study_lookup_table(store, searched, dat), dat, searched).content;
+  CHECK(text.find("\n# search.axis: impact_speed\n") != std::string::npos);
+  CHECK(text.find("\n# search.note: an adaptive search") != std::string::npos);
 }
 
 TEST_CASE("Sections table: each column of the matrix sums to 1 and equals the hand computation", "[export]") {

@@ -1,7 +1,7 @@
 // MELCOR tabular functions (docs/EXPORT.md, "MELCOR") read back by the grammar of the TF input:
 // TF_INPUT, then per function TF_ID 'name' scale and TF_TAB n with n records "i x y", x ascending,
-// no missing value. Every outcome's probability and its interval ends, the restitution and the
-// retained mass are tabulated; the names are unique across quantities, conditions, table kinds and
+// no missing value. Every outcome's probability and its interval ends, the share undetermined, the
+// restitution and the retained mass are tabulated; the names are unique across quantities, conditions, table kinds and
 // studies and follow the documented scheme; the speed ranges are in the unit of x.
 #include <catch2/catch.hpp>
 
@@ -72,7 +72,7 @@ MelcorDeck parse(const std::string& text) {
 }
 
 // S<study><G|F|S><four-letter quantity><_|L|U><three-digit condition>.
-const std::regex kName(R"(S(\d+)([GFMVAS])(PSTK|PBNC|PBRK|REST|RETN|WALL|TS\d\d)([_LU])(\d{3}))");
+const std::regex kName(R"(S(\d+)([GFMVAS])(PSTK|PBNC|PBRK|PUND|REST|RETN|WALL|TS\d\d)([_LU])(\d{3}))");
 
 struct Stores {
   ScratchDirectory directory{"melcor_format"};
@@ -114,7 +114,7 @@ TEST_CASE("MELCOR: every outcome with its interval, the restitution and the reta
   // Every probability and its interval ends, per condition; the retained mass; the restitution where
   // something bounced: not N = 8 on the adhesive wall (7 of 8 primaries leaving is below the 0.9 share).
   for (const char* quantity :
-       {"PSTK_", "PSTKL", "PSTKU", "PBNC_", "PBNCL", "PBNCU", "PBRK_", "PBRKL", "PBRKU", "RETN_"}) {
+       {"PSTK_", "PSTKL", "PSTKU", "PBNC_", "PBNCL", "PBNCU", "PBRK_", "PBRKL", "PBRKU", "PUND_", "RETN_"}) {
     INFO(quantity);
     CHECK(per_quantity[quantity] == 4);
   }

@@ -79,6 +79,11 @@ export const probabilityOf = (outcome) => (row) => {
   return { y: estimate.probability, lo: estimate.ci95[0], hi: estimate.ci95[1] };
 };
 
+// A grid point's results (y: their number), whatever their outcomes: the points that bins and
+// per-grid-point tables pool, including those whose results all ended undetermined (which have no
+// probability of stick, bounce or break-up).
+export const resultsIn = (row) => (row.finished > 0 ? { y: row.finished } : null);
+
 // A mean with its 95 % Student interval (the server's numbers).
 export const meanOf = (quantity) => (row) => {
   const estimate = row[quantity];

@@ -117,7 +117,8 @@ const kCorrelationsRefreshMs = 30000;
 function createResultParts(id, { plots, tablesHolder, redraw, stopped }) {
   let asked = null;
   function ask(study) {
-    if (!asked) replaceChildren(tablesHolder, tablesPanel(id));
+    const searched = study.axes.some((axis) => axis.role === 'search');
+    if (!asked) replaceChildren(tablesHolder, tablesPanel(id, { searched }));
     asked = { done: study.progress.counts.done, complete: study.progress.complete, at: Date.now() };
     loadCorrelationSummary(id).then((summary) => {
       if (stopped()) return;

@@ -8,7 +8,7 @@ import { el, replaceChildren, select } from '../dom.js';
 import { colourGroups, plotCurves } from '../charts.js';
 import {
   alongAxis, conditionKey, curvesAlong, defaultXAxis, flaggedPoints, fragmentCurves,
-  meanOf, probabilityOf, sliceAxes, valueKey,
+  meanOf, probabilityOf, resultsIn, sliceAxes, valueKey,
 } from '../series.js';
 import { withUnit } from '../units.js';
 import { kDerivedX } from '../axis_names.js';
@@ -44,7 +44,9 @@ function axisQuery(values) {
   return search.toString();
 }
 
-const kProbabilityNote = 'Points: the measured probability of each grid point, whiskers its 95 % Wilson interval. ' +
+const kProbabilityNote = 'Points: the measured probability of each grid point, the share of its determined results ' +
+  '(undetermined cases, which hit their time limit, are left out, as the fits leave them out; the outcome ' +
+  '"undetermined" is a share of all results), whiskers its 95 % Wilson interval. ' +
   'Dashed, where the correlations service has fits: the fitted logistic curve of each group with its 95 % band. ' +
   'Red rings: grid points with results outside the small-strain range. Along the energy per contact, each point ' +
   'is a grid point at its mean E_kin / (N_c E_break). Click a legend entry to hide or show its series.';
@@ -64,7 +66,8 @@ const kSearchedNote = (symbol) => `Along the searched ${symbol} (the adaptive se
 const kFragmentsNote = 'Fragments of each size per result, one series per grid value.';
 const kSearchedFragmentsNote = 'Fragments of each size per result, one series per bin of the searched axis (the ' +
   'bins of the probability plot).';
-const kStudent = 'Mean of the results, whiskers: 95 % Student interval';
+const kStudent = 'Mean of the determined results (an undetermined one, whose state is not final, is left out), ' +
+  'whiskers: 95 % Student interval';
 const kNoBounces = 'Nothing to plot: no case here bounced (the restitution is that of the bounces).';
 
 function createPanels() {
@@ -150,9 +153,11 @@ function createFragmentsPlot(state, fragments) {
 // axis the results pooled into bins (search_bins.js), points without a line.
 function probabilityCurves(grid, view, searched) {
   const along = { axes: grid.axes, xAxis: view.xAxis, slice: view.slice, names: view.names };
-  const curves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
-  if (!searched) return measuredGroups(curves, 'measured, whiskers: 95 % interval', view.names);
-  const pooled = pooledProbabilityCurves(curves,
+  if (!searched) {
+    const curves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
+    return measuredGroups(curves, 'measured, whiskers: 95 % interval', view.names);
+  }
+  const pooled = pooledProbabilityCurves(curvesAlong(grid.grid_points, { ...along, yOf: resultsIn }),
     { outcome: view.outcome, along: alongAxis(view.xAxis, view.names), xLog: view.xLog });
   return measuredGroups(pooled, 'results pooled in bins, whiskers: 95 % interval', view.names);
 }
@@ -242,7 +247,7 @@ export function createPlots({ state }) {
     if (mine !== drawing) return;
     const shownAxes = grid.axes.filter((axis) => axis.values.length > 1 && !(axis.name in view.slice))
       .map((axis) => axis.name);
-    const seriesCurves = curvesAlong(grid.grid_points, { ...along, yOf: probabilityOf(view.outcome) });
+    const seriesCurves = curvesAlong(grid.grid_points, { ...along, yOf: resultsIn });
     const pooled = view.names.searched(searchedAxis)
       ? seriesCurves.flatMap((curve) => curveBins(curve, searchedAxis).map((bin) => bin.row)) : null;
     flags.draw(grid, { slice: view.slice, shownAxes, names: view.names, pooled });
