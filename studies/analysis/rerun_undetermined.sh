@@ -31,9 +31,9 @@ python3 -c 'import sys; x = float(sys.argv[1]); assert 0 < x < 1' "$limit" 2>/de
   { echo "rerun_undetermined.sh: LIMIT_S must be a time in seconds, 0 < LIMIT_S < 1 (got $limit)" >&2; exit 2; }
 mkdir -p "$outdir"
 
-# One line per case: id, then its document with the new limit. Read-only: the store is opened
-# with ?mode=ro so that no journal or lock of a running study is disturbed.
-cases=$(sqlite3 -batch -separator $'\t' "file:$store?mode=ro" "
+# One line per case: id, then its document with the new limit (the store is only read; opened
+# read-only, SQLite would leave the -wal and -shm files of a WAL store behind).
+cases=$(sqlite3 -batch -separator $'\t' "$store" "
   SELECT c.id, json_remove(json_set(c.document, '\$.run.time_limit_s', $limit), '\$.run.time_limit')
   FROM cases c JOIN results r ON r.case_id = c.id
   WHERE r.outcome = 'undetermined' AND json_extract(c.document, '\$.units') = 'physical' AND ($where)

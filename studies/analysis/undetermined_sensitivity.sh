@@ -28,7 +28,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for store in "$@"; do
-  sqlite3 -csv "file:$store?mode=ro" "SELECT c.id, c.primaries, json_extract(c.document, '\$.wall.adhesive'),
+  sqlite3 -csv "$store" "SELECT c.id, c.primaries, json_extract(c.document, '\$.wall.adhesive'),
       json_extract(c.document, '\$.impact.speed'), r.outcome, r.largest_fragment_share,
       r.retained_mass_fraction FROM results r JOIN cases c ON c.id = r.case_id" > "$work/cases.csv"
   if [ -z "$reruns" ]; then
@@ -41,7 +41,7 @@ for store in "$@"; do
 # one in anything but the time limit is refused.
 import csv, glob, json, os, re, sqlite3, sys
 store, folder = sys.argv[1], sys.argv[2]
-db = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
+db = sqlite3.connect(store)
 out = csv.writer(sys.stdout)
 for path in sorted(glob.glob(os.path.join(folder, "case*.result.json"))):
     case_id = int(re.fullmatch(r"case(\d+)\.result\.json", os.path.basename(path)).group(1))
