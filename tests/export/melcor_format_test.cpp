@@ -1,8 +1,9 @@
 // MELCOR tabular functions (docs/EXPORT.md, "MELCOR") read back by the grammar of the TF input:
 // TF_INPUT, then per function TF_ID 'name' scale and TF_TAB n with n records "i x y", x ascending,
 // no missing value. Every outcome's probability and its interval ends, the share undetermined, the
-// restitution and the retained mass are tabulated; the names are unique across quantities, conditions, table kinds and
-// studies and follow the documented scheme; the speed ranges are in the unit of x.
+// restitution and the retained mass are tabulated; the names are unique across quantities,
+// conditions, table kinds and studies and follow the documented scheme; the speed ranges are in
+// the unit of x.
 #include <catch2/catch.hpp>
 
 #include <cmath>

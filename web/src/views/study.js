@@ -114,10 +114,9 @@ function controls(state, grid, names, onChange) {
 // and once more when it ends.
 const kCorrelationsRefreshMs = 30000;
 
-function createResultParts(id, { plots, tablesHolder, redraw, stopped }) {
+function createResultParts(id, { plots, tablesHolder, searched, redraw, stopped }) {
   let asked = null;
   function ask(study) {
-    const searched = study.axes.some((axis) => axis.role === 'search');
     if (!asked) replaceChildren(tablesHolder, tablesPanel(id, { searched }));
     asked = { done: study.progress.counts.done, complete: study.progress.complete, at: Date.now() };
     loadCorrelationSummary(id).then((summary) => {
@@ -180,7 +179,8 @@ export async function showStudy(view, parameters, { showNotice }) {
     el('h2', {}, 'Cases'), caseTable.node);
   drawControls();
   await Promise.all([plots.draw(grid, names), caseTable.load(grid.axes, names, firstCases)]);
-  const askResultParts = createResultParts(id, { plots, tablesHolder,
+  const searched = study.axes.some((axis) => names.searched(axis.name));
+  const askResultParts = createResultParts(id, { plots, tablesHolder, searched,
     redraw: () => plots.drawOutcome(current.grid, names), stopped: () => stopped });
   askResultParts(study);
 
